@@ -1,0 +1,1 @@
+//! Design tool: sensitivity.

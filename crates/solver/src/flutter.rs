@@ -1,0 +1,1 @@
+//! Flutter: a torsional mode whose effective damping falls with wind speed.

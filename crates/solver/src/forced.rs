@@ -1,0 +1,1 @@
+//! Forced responses: step, impulse and harmonic forcing, transient plus steady state.

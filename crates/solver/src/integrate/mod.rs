@@ -1,0 +1,1 @@
+//! Numerical integrators for first-order systems `y' = f(t, y)` of any dimension.

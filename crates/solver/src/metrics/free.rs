@@ -1,0 +1,1 @@
+//! Free-response metrics relative to the initial displacement: settling, rebound, decrement.

@@ -1,0 +1,1 @@
+//! Nonlinear quarter car: Duffing spring, asymmetric damper, Coulomb friction, bump stops.

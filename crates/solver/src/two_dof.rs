@@ -1,0 +1,1 @@
+//! Two-degree-of-freedom quarter car: sprung and unsprung mass on a tyre spring.
