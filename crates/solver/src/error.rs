@@ -54,7 +54,9 @@ impl fmt::Display for ModelError {
             ModelError::Negative { name, unit, value } => {
                 write!(f, "{name} must not be negative, got {value} {unit}")
             }
-            ModelError::OutOfRange { name, reason } => write!(f, "{name} is out of range: {reason}"),
+            ModelError::OutOfRange { name, reason } => {
+                write!(f, "{name} is out of range: {reason}")
+            }
         }
     }
 }
@@ -62,7 +64,11 @@ impl fmt::Display for ModelError {
 impl std::error::Error for ModelError {}
 
 /// Checks that `value` is finite; returns it.
-pub(crate) fn finite(name: &'static str, unit: &'static str, value: f64) -> Result<f64, ModelError> {
+pub(crate) fn finite(
+    name: &'static str,
+    unit: &'static str,
+    value: f64,
+) -> Result<f64, ModelError> {
     if value.is_finite() {
         Ok(value)
     } else {
@@ -80,7 +86,11 @@ pub(crate) fn positive(
     if v > 0.0 {
         Ok(v)
     } else {
-        Err(ModelError::NotPositive { name, unit, value: v })
+        Err(ModelError::NotPositive {
+            name,
+            unit,
+            value: v,
+        })
     }
 }
 
@@ -94,6 +104,10 @@ pub(crate) fn non_negative(
     if v >= 0.0 {
         Ok(v)
     } else {
-        Err(ModelError::Negative { name, unit, value: v })
+        Err(ModelError::Negative {
+            name,
+            unit,
+            value: v,
+        })
     }
 }

@@ -79,7 +79,13 @@ impl FreeResponse {
         } else {
             alpha * alpha - wn2
         };
-        Self { alpha, wn2, d, x0, v0 }
+        Self {
+            alpha,
+            wn2,
+            d,
+            x0,
+            v0,
+        }
     }
 
     /// Displacement `x(t)`.
@@ -142,13 +148,18 @@ mod tests {
         let sys = SecondOrder::new(a, b, c).unwrap();
         let r = FreeResponse::new(sys, x0, v0);
         let (x, v, acc) = (r.displacement(t), r.velocity(t), r.acceleration(t));
-        let scale = (a * acc.abs()).max(b.abs() * v.abs()).max(c.abs() * x.abs()).max(1e-300);
+        let scale = (a * acc.abs())
+            .max(b.abs() * v.abs())
+            .max(c.abs() * x.abs())
+            .max(1e-300);
         (a * acc + b * v + c * x).abs() / scale
     }
 
     #[test]
     fn satisfies_the_ode_in_every_regime() {
-        for &zeta in &[-0.5, -0.01, 0.0, 1e-12, 0.05, 0.3, 0.7, 0.999_999, 1.0, 1.000_001, 1.5, 3.0] {
+        for &zeta in &[
+            -0.5, -0.01, 0.0, 1e-12, 0.05, 0.3, 0.7, 0.999_999, 1.0, 1.000_001, 1.5, 3.0,
+        ] {
             let wn = 8.944_271_909_999_16;
             for &t in &[0.0, 1e-6, 0.01, 0.1, 0.37, 1.0, 2.5] {
                 let res = residual(1.0, 2.0 * zeta * wn, wn * wn, 0.06, -0.3, t);
@@ -172,13 +183,21 @@ mod tests {
     #[test]
     fn continuous_across_critical_damping() {
         let x = |z: f64, t: f64| {
-            FreeResponse::new(SecondOrder::from_natural(8.944_271_909_999_16, z).unwrap(), 0.06, 0.0)
-                .displacement(t)
+            FreeResponse::new(
+                SecondOrder::from_natural(8.944_271_909_999_16, z).unwrap(),
+                0.06,
+                0.0,
+            )
+            .displacement(t)
         };
         for &t in &[0.01, 0.1, 0.3, 1.0, 3.0] {
             let x1 = x(1.0, t);
             for &z in &[1.0 - 1e-9, 1.0 + 1e-9, 1.0 - 1e-6, 1.0 + 1e-6] {
-                let tol = if (z - 1.0f64).abs() < 1e-8 { 1e-7 } else { 1e-5 };
+                let tol = if (z - 1.0f64).abs() < 1e-8 {
+                    1e-7
+                } else {
+                    1e-5
+                };
                 assert!((x(z, t) - x1).abs() <= tol * 0.06, "ζ={z} t={t}");
             }
         }

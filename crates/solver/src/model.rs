@@ -165,9 +165,21 @@ impl SecondOrder {
             // Avoid cancellation: compute the larger-magnitude root first, the other from
             // the product of roots s1·s2 = c/a.
             let mu = disc.sqrt();
-            let big = if alpha >= 0.0 { -alpha - mu } else { -alpha + mu };
-            let small = if big != 0.0 { self.omega_n_squared() / big } else { 0.0 };
-            let (hi, lo) = if small >= big { (small, big) } else { (big, small) };
+            let big = if alpha >= 0.0 {
+                -alpha - mu
+            } else {
+                -alpha + mu
+            };
+            let small = if big != 0.0 {
+                self.omega_n_squared() / big
+            } else {
+                0.0
+            };
+            let (hi, lo) = if small >= big {
+                (small, big)
+            } else {
+                (big, small)
+            };
             [Complex::real(hi), Complex::real(lo)]
         }
     }
@@ -198,10 +210,18 @@ mod tests {
     fn quarter_car_reference_values() {
         // m = 300 kg, k = 24 000 N/m: ω_n = √80 = 8.944272 rad/s, f_n = 1.4235 Hz.
         let s = SecondOrder::mechanical(300.0, 0.0, 24_000.0).unwrap();
-        assert!(close(s.natural_frequency().unwrap(), 8.944_271_909_999_16, 1e-14));
+        assert!(close(
+            s.natural_frequency().unwrap(),
+            8.944_271_909_999_16,
+            1e-14
+        ));
         assert!(close(s.natural_frequency_hz().unwrap(), 1.423_525, 1e-6));
         assert_eq!(s.regime(), Regime::Undamped);
-        assert!(close(s.critical_damping().unwrap(), 2.0 * (300.0f64 * 24_000.0).sqrt(), 1e-15));
+        assert!(close(
+            s.critical_damping().unwrap(),
+            2.0 * (300.0f64 * 24_000.0).sqrt(),
+            1e-15
+        ));
     }
 
     #[test]
@@ -239,8 +259,14 @@ mod tests {
             let s = SecondOrder::new(a, b, c).unwrap();
             for p in s.poles() {
                 let res = p * p * a + p * b + Complex::real(c);
-                let scale = (a * p.abs() * p.abs()).max(b.abs() * p.abs()).max(c.abs()).max(1e-300);
-                assert!(res.abs() / scale < 1e-12, "{a} {b} {c}: {p:?} residual {res:?}");
+                let scale = (a * p.abs() * p.abs())
+                    .max(b.abs() * p.abs())
+                    .max(c.abs())
+                    .max(1e-300);
+                assert!(
+                    res.abs() / scale < 1e-12,
+                    "{a} {b} {c}: {p:?} residual {res:?}"
+                );
             }
         }
     }
@@ -264,7 +290,9 @@ mod tests {
             Err(ModelError::OutOfRange { .. })
         ));
         assert!(matches!(SecondOrder::from_natural(-1.0, 0.5), Err(_)));
-        let msg = SecondOrder::mechanical(-3.0, 1.0, 1.0).unwrap_err().to_string();
+        let msg = SecondOrder::mechanical(-3.0, 1.0, 1.0)
+            .unwrap_err()
+            .to_string();
         assert_eq!(msg, "mass m must be positive, got -3 kg");
     }
 }

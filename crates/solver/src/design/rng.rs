@@ -38,7 +38,10 @@ impl Rng {
             splitmix64(&mut sm),
             splitmix64(&mut sm),
         ];
-        Self { s, spare_normal: None }
+        Self {
+            s,
+            spare_normal: None,
+        }
     }
 
     /// The next 64 random bits.

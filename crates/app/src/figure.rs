@@ -1,0 +1,210 @@
+//! Plain-data figures: what to draw, apart from how to draw it.
+//!
+//! A demo builds [`Figure`]s; [`crate::render`] draws them on any plotters backend (the
+//! canvas in the browser, an SVG string in native tests and exports).
+
+/// Axis mapping.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AxisScale {
+    /// Linear axis.
+    Linear,
+    /// Logarithmic axis; the range must be positive.
+    Log,
+}
+
+/// One axis: quantity, unit and range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    /// Quantity with symbol, e.g. `"time t"`.
+    pub label: String,
+    /// SI unit, e.g. `"s"`; empty for dimensionless.
+    pub unit: &'static str,
+    /// Shown range `(low, high)`, `low < high`.
+    pub range: (f64, f64),
+    /// Mapping.
+    pub scale: AxisScale,
+}
+
+impl Axis {
+    /// A linear axis.
+    pub fn linear(label: impl Into<String>, unit: &'static str, range: (f64, f64)) -> Self {
+        Self {
+            label: label.into(),
+            unit,
+            range: sane_range(range, AxisScale::Linear),
+            scale: AxisScale::Linear,
+        }
+    }
+
+    /// The axis title with its unit in brackets.
+    pub fn title(&self) -> String {
+        if self.unit.is_empty() {
+            self.label.clone()
+        } else {
+            format!("{} [{}]", self.label, self.unit)
+        }
+    }
+}
+
+/// Makes a drawable range: finite, ordered, non-empty (and positive for log axes).
+pub fn sane_range(r: (f64, f64), scale: AxisScale) -> (f64, f64) {
+    let (mut lo, mut hi) = r;
+    if !lo.is_finite() || !hi.is_finite() {
+        lo = if lo.is_finite() { lo } else { -1.0 };
+        hi = if hi.is_finite() { hi } else { lo + 2.0 };
+    }
+    if lo > hi {
+        std::mem::swap(&mut lo, &mut hi);
+    }
+    if scale == AxisScale::Log {
+        lo = lo.max(1e-300);
+        hi = hi.max(lo * 10.0);
+    }
+    if hi - lo <= f64::EPSILON * (lo.abs() + hi.abs()).max(1e-300) {
+        let pad = (lo.abs() * 0.1).max(1e-9);
+        lo -= pad;
+        hi += pad;
+    }
+    (lo, hi)
+}
+
+/// Line dash pattern, so no information is carried by colour alone.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Dash {
+    /// Continuous line.
+    Solid,
+    /// Long dashes.
+    Dashed,
+    /// Short dashes.
+    Dotted,
+}
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LineStyle {
+    /// Index into the theme's colour-blind-safe palette.
+    pub color: usize,
+    /// Dash pattern.
+    pub dash: Dash,
+    /// Stroke width in CSS pixels.
+    pub width: f64,
+}
+
+impl LineStyle {
+    /// A solid line of palette colour `color`.
+    pub const fn solid(color: usize, width: f64) -> Self {
+        Self {
+            color,
+            dash: Dash::Solid,
+            width,
+        }
+    }
+}
+
+/// A polyline with a legend entry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend text; empty for no legend entry.
+    pub label: String,
+    /// Points `(x, y)`; non-finite points break the line.
+    pub points: Vec<(f64, f64)>,
+    /// Stroke.
+    pub style: LineStyle,
+}
+
+/// Marker shapes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MarkerShape {
+    /// `×`, e.g. a pole.
+    Cross,
+    /// A filled circle, e.g. a design point.
+    Dot,
+}
+
+/// A labelled point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Marker {
+    /// Text beside the point; may be empty.
+    pub label: String,
+    /// Position in data coordinates.
+    pub at: (f64, f64),
+    /// Shape.
+    pub shape: MarkerShape,
+    /// Palette colour index.
+    pub color: usize,
+}
+
+/// One plot.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Figure {
+    /// Title drawn above the plot.
+    pub title: String,
+    /// Horizontal axis.
+    pub x: Axis,
+    /// Vertical axis.
+    pub y: Axis,
+    /// Lines.
+    pub series: Vec<Series>,
+    /// Points.
+    pub markers: Vec<Marker>,
+    /// Horizontal and vertical reference lines through the origin.
+    pub origin_lines: bool,
+}
+
+impl Figure {
+    /// Whether any series or marker point is finite and inside the axes.
+    pub fn has_visible_data(&self) -> bool {
+        let inside = |&(x, y): &(f64, f64)| {
+            x.is_finite()
+                && y.is_finite()
+                && (self.x.range.0..=self.x.range.1).contains(&x)
+                && (self.y.range.0..=self.y.range.1).contains(&y)
+        };
+        self.series.iter().any(|s| s.points.iter().any(inside))
+            || self.markers.iter().any(|m| inside(&m.at))
+    }
+}
+
+/// `(min, max)` of the finite values, or `None` if there are none.
+pub fn finite_extent(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+    values
+        .into_iter()
+        .filter(|v| v.is_finite())
+        .fold(None, |acc, v| match acc {
+            None => Some((v, v)),
+            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
+        })
+}
+
+/// Pads `(lo, hi)` by `frac` of its span on each side.
+pub fn padded((lo, hi): (f64, f64), frac: f64) -> (f64, f64) {
+    let span = (hi - lo)
+        .abs()
+        .max(1e-12 * (lo.abs() + hi.abs()).max(1e-300));
+    (lo - frac * span, hi + frac * span)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_are_made_drawable() {
+        assert_eq!(sane_range((1.0, 0.0), AxisScale::Linear), (0.0, 1.0));
+        let (lo, hi) = sane_range((2.0, 2.0), AxisScale::Linear);
+        assert!(lo < 2.0 && hi > 2.0);
+        let (lo, hi) = sane_range((f64::NAN, f64::INFINITY), AxisScale::Linear);
+        assert!(lo.is_finite() && hi.is_finite() && lo < hi);
+        let (lo, hi) = sane_range((-1.0, 0.0), AxisScale::Log);
+        assert!(lo > 0.0 && hi > lo);
+    }
+
+    #[test]
+    fn extent_skips_non_finite() {
+        assert_eq!(
+            finite_extent([1.0, f64::NAN, -2.0, f64::INFINITY]),
+            Some((-2.0, 1.0))
+        );
+        assert_eq!(finite_extent([f64::NAN]), None);
+    }
+}

@@ -1,0 +1,80 @@
+//! Formatting numbers for readouts: significant digits and engineering prefixes.
+
+/// Formats `v` with `sig` significant digits and an SI prefix for `unit`
+/// (`0.0012 s` → `1.20 ms`). Dimensionless values and percentages get no prefix.
+pub fn si(v: f64, unit: &str, sig: usize) -> String {
+    if !v.is_finite() {
+        return "—".to_string();
+    }
+    let prefixable =
+        !unit.is_empty() && !unit.starts_with('1') && !matches!(unit, "%" | "rad" | "°");
+    let (scaled, prefix) = if prefixable { engineering(v) } else { (v, "") };
+    let num = significant(scaled, sig);
+    match (prefix, unit) {
+        (_, "") => num,
+        (p, "%") => format!("{num}{p} %"),
+        (p, u) => format!("{num} {p}{u}"),
+    }
+}
+
+fn engineering(v: f64) -> (f64, &'static str) {
+    const PREFIXES: [(f64, &str); 9] = [
+        (1e9, "G"),
+        (1e6, "M"),
+        (1e3, "k"),
+        (1.0, ""),
+        (1e-3, "m"),
+        (1e-6, "µ"),
+        (1e-9, "n"),
+        (1e-12, "p"),
+        (1e-15, "f"),
+    ];
+    let a = v.abs();
+    if a == 0.0 || !(1e-15..1e12).contains(&a) {
+        return (v, "");
+    }
+    for (scale, p) in PREFIXES {
+        if a >= scale * 0.999_999_5 {
+            return (v / scale, p);
+        }
+    }
+    (v, "")
+}
+
+/// `v` rounded to `sig` significant digits, in plain or (for extreme magnitudes)
+/// scientific notation.
+pub fn significant(v: f64, sig: usize) -> String {
+    if v == 0.0 {
+        return "0".to_string();
+    }
+    let sig = sig.clamp(1, 15);
+    let mag = v.abs().log10().floor() as i32;
+    if !(-4..=9).contains(&mag) {
+        return format!("{:.*e}", sig - 1, v);
+    }
+    let decimals = (sig as i32 - 1 - mag).max(0) as usize;
+    let s = format!("{v:.decimals$}");
+    if s.starts_with("-0") && s.trim_start_matches(['-', '0', '.']).is_empty() {
+        s.trim_start_matches('-').to_string()
+    } else {
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn prefixes_and_digits() {
+        assert_eq!(si(8.944_271_9, "rad/s", 4), "8.944 rad/s");
+        assert_eq!(si(0.0012, "s", 3), "1.20 ms");
+        assert_eq!(si(24_000.0, "N/m", 3), "24.0 kN/m");
+        assert_eq!(si(-4.472, "1/s", 4), "-4.472 1/s");
+        assert_eq!(si(4.598, "%", 4), "4.598 %");
+        assert_eq!(si(0.3, "", 3), "0.300");
+        assert_eq!(si(f64::NAN, "s", 3), "—");
+        assert_eq!(si(0.0, "s", 3), "0 s");
+        assert_eq!(significant(1.0e-7, 3), "1.00e-7");
+    }
+}

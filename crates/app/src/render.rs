@@ -1,0 +1,341 @@
+//! Draws a [`Figure`] on any plotters backend: the canvas in the browser, SVG natively.
+//!
+//! Sizes are given in CSS pixels and multiplied by `scale` (the screen's
+//! `devicePixelRatio`) so text and lines look the same on every screen, and crisp.
+
+use crate::figure::{AxisScale, Dash, Figure, LineStyle, MarkerShape, Series};
+use crate::theme::Theme;
+use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+/// Why a figure could not be drawn (a backend failure; figures themselves are always drawable).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RenderError(pub String);
+
+impl std::fmt::Display for RenderError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "could not draw the plot: {}", self.0)
+    }
+}
+
+impl std::error::Error for RenderError {}
+
+fn err<E: std::fmt::Debug>(e: E) -> RenderError {
+    RenderError(format!("{e:?}"))
+}
+
+/// Draws `fig` onto `root`, filling it with the theme's background first.
+pub fn render<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+) -> Result<(), RenderError> {
+    root.fill(&theme.background).map_err(err)?;
+    let (x0, x1) = fig.x.range;
+    let (y0, y1) = fig.y.range;
+    match (fig.x.scale, fig.y.scale) {
+        (AxisScale::Linear, AxisScale::Linear) => draw(root, fig, theme, scale, x0..x1, y0..y1),
+        (AxisScale::Log, AxisScale::Linear) => {
+            draw(root, fig, theme, scale, (x0..x1).log_scale(), y0..y1)
+        }
+        (AxisScale::Linear, AxisScale::Log) => {
+            draw(root, fig, theme, scale, x0..x1, (y0..y1).log_scale())
+        }
+        (AxisScale::Log, AxisScale::Log) => draw(
+            root,
+            fig,
+            theme,
+            scale,
+            (x0..x1).log_scale(),
+            (y0..y1).log_scale(),
+        ),
+    }?;
+    root.present().map_err(err)
+}
+
+fn px(v: f64, scale: f64) -> u32 {
+    (v * scale).round().max(1.0) as u32
+}
+
+/// Splits a series at non-finite points and clamps the rest into the (slightly widened)
+/// plot area, so a diverging curve is drawn to the edge instead of off the canvas.
+fn segments(s: &Series, fig: &Figure) -> Vec<Vec<(f64, f64)>> {
+    let widen = |(lo, hi): (f64, f64), log: bool| {
+        if log {
+            (lo / 1.05, hi * 1.05)
+        } else {
+            let pad = 0.02 * (hi - lo);
+            (lo - pad, hi + pad)
+        }
+    };
+    let (xl, xh) = widen(fig.x.range, fig.x.scale == AxisScale::Log);
+    let (yl, yh) = widen(fig.y.range, fig.y.scale == AxisScale::Log);
+    let mut out: Vec<Vec<(f64, f64)>> = Vec::new();
+    let mut cur: Vec<(f64, f64)> = Vec::new();
+    for &(x, y) in &s.points {
+        if x.is_finite() && y.is_finite() {
+            cur.push((x.clamp(xl, xh), y.clamp(yl, yh)));
+        } else if !cur.is_empty() {
+            out.push(std::mem::take(&mut cur));
+        }
+    }
+    if !cur.is_empty() {
+        out.push(cur);
+    }
+    out
+}
+
+fn draw<DB, X, Y>(
+    root: &DrawingArea<DB, Shift>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+    xr: X,
+    yr: Y,
+) -> Result<(), RenderError>
+where
+    DB: DrawingBackend,
+    X: AsRangedCoord<Value = f64>,
+    Y: AsRangedCoord<Value = f64>,
+    X::CoordDescType: ValueFormatter<f64>,
+    Y::CoordDescType: ValueFormatter<f64>,
+{
+    let fg = theme.foreground;
+    let font = |size: f64| ("sans-serif", size * scale).into_font().color(&fg);
+    let mut chart = ChartBuilder::on(root)
+        .caption(&fig.title, font(15.0))
+        .margin(px(10.0, scale))
+        .x_label_area_size(px(42.0, scale))
+        .y_label_area_size(px(64.0, scale))
+        .build_cartesian_2d(xr, yr)
+        .map_err(err)?;
+
+    chart
+        .configure_mesh()
+        .x_desc(fig.x.title())
+        .y_desc(fig.y.title())
+        .axis_desc_style(font(13.0))
+        .label_style(font(12.0))
+        .bold_line_style(theme.grid.stroke_width(px(1.0, scale)))
+        .light_line_style(theme.grid_minor.stroke_width(px(1.0, scale)))
+        .axis_style(fg.stroke_width(px(1.0, scale)))
+        .x_labels(6)
+        .y_labels(6)
+        .draw()
+        .map_err(err)?;
+
+    if fig.origin_lines {
+        let (x0, x1) = fig.x.range;
+        let (y0, y1) = fig.y.range;
+        let style = fg.mix(0.6).stroke_width(px(1.0, scale));
+        if x0 < 0.0 && x1 > 0.0 {
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    vec![(0.0, y0), (0.0, y1)],
+                    style,
+                )))
+                .map_err(err)?;
+        }
+        if y0 < 0.0 && y1 > 0.0 {
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    vec![(x0, 0.0), (x1, 0.0)],
+                    style,
+                )))
+                .map_err(err)?;
+        }
+    }
+
+    let mut legend: Vec<(&str, LineStyle)> = Vec::new();
+    for s in &fig.series {
+        let color = theme.color(s.style.color);
+        let style = color.stroke_width(px(s.style.width, scale));
+        for seg in segments(s, fig) {
+            match s.style.dash {
+                Dash::Solid => chart
+                    .draw_series(LineSeries::new(seg, style))
+                    .map_err(err)?,
+                Dash::Dashed => chart
+                    .draw_series(DashedLineSeries::new(
+                        seg,
+                        px(8.0, scale),
+                        px(5.0, scale),
+                        style,
+                    ))
+                    .map_err(err)?,
+                Dash::Dotted => chart
+                    .draw_series(DashedLineSeries::new(
+                        seg,
+                        px(2.0, scale),
+                        px(4.0, scale),
+                        style,
+                    ))
+                    .map_err(err)?,
+            };
+        }
+        if !s.label.is_empty() {
+            legend.push((&s.label, s.style));
+        }
+    }
+
+    for m in &fig.markers {
+        let color = theme.color(m.color);
+        let (x, y) = m.at;
+        if !(x.is_finite() && y.is_finite()) {
+            continue;
+        }
+        let size = px(7.0, scale) as i32;
+        let stroke = color.stroke_width(px(2.5, scale));
+        match m.shape {
+            MarkerShape::Cross => {
+                chart
+                    .draw_series(std::iter::once(Cross::new((x, y), size, stroke)))
+                    .map_err(err)?;
+            }
+            MarkerShape::Dot => {
+                chart
+                    .draw_series(std::iter::once(Circle::new(
+                        (x, y),
+                        size / 2 + 1,
+                        color.filled(),
+                    )))
+                    .map_err(err)?;
+            }
+        }
+        if !m.label.is_empty() {
+            let off = (px(8.0, scale) as i32, -(px(16.0, scale) as i32));
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at((x, y)) + Text::new(m.label.clone(), off, font(12.0)),
+                ))
+                .map_err(err)?;
+        }
+    }
+
+    if !legend.is_empty() {
+        draw_legend(
+            &chart.plotting_area().strip_coord_spec(),
+            &legend,
+            theme,
+            scale,
+        )?;
+    }
+    Ok(())
+}
+
+/// Draws the legend box in the upper-right corner of the plotting area.
+///
+/// Drawn here rather than with plotters' series labels because those measure text through
+/// a styled DOM element on the web, which a strict Content-Security-Policy blocks; this
+/// measures through the backend (the canvas's own `measureText`).
+fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    entries: &[(&str, LineStyle)],
+    theme: &Theme,
+    scale: f64,
+) -> Result<(), RenderError> {
+    let font = ("sans-serif", 12.0 * scale)
+        .into_font()
+        .color(&theme.foreground)
+        .pos(Pos::new(HPos::Left, VPos::Center));
+    let pad = px(6.0, scale) as i32;
+    let swatch = px(24.0, scale) as i32;
+    let gap = px(6.0, scale) as i32;
+    let line_h = px(17.0, scale) as i32;
+    let mut text_w = 0;
+    for (label, _) in entries {
+        let (w, _) = area.estimate_text_size(label, &font).map_err(err)?;
+        text_w = text_w.max(w as i32);
+    }
+    let (w, _) = area.dim_in_pixel();
+    let box_w = pad + swatch + gap + text_w + pad;
+    let box_h = pad * 2 + line_h * entries.len() as i32;
+    let x0 = (w as i32 - box_w - pad).max(0);
+    let y0 = pad;
+    area.draw(&Rectangle::new(
+        [(x0, y0), (x0 + box_w, y0 + box_h)],
+        theme.background.mix(0.88).filled(),
+    ))
+    .map_err(err)?;
+    area.draw(&Rectangle::new(
+        [(x0, y0), (x0 + box_w, y0 + box_h)],
+        theme.grid.stroke_width(1),
+    ))
+    .map_err(err)?;
+    for (i, (label, style)) in entries.iter().enumerate() {
+        let y = y0 + pad + line_h * i as i32 + line_h / 2;
+        let x = x0 + pad;
+        let stroke = theme
+            .color(style.color)
+            .stroke_width(px(style.width, scale));
+        let pieces: &[(i32, i32)] = match style.dash {
+            Dash::Solid => &[(0, 24)],
+            Dash::Dashed => &[(0, 8), (13, 21)],
+            Dash::Dotted => &[(0, 2), (6, 8), (12, 14), (18, 20)],
+        };
+        for &(a, b) in pieces {
+            let (a, b) = (x + (a as f64 * scale) as i32, x + (b as f64 * scale) as i32);
+            area.draw(&PathElement::new(vec![(a, y), (b.max(a + 1), y)], stroke))
+                .map_err(err)?;
+        }
+        area.draw(&Text::new(
+            label.to_string(),
+            (x + swatch + gap, y),
+            font.clone(),
+        ))
+        .map_err(err)?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::figure::{Axis, Marker};
+
+    fn sample() -> Figure {
+        Figure {
+            title: "test".into(),
+            x: Axis::linear("time t", "s", (0.0, 1.0)),
+            y: Axis::linear("x", "m", (-1.0, 1.0)),
+            series: vec![Series {
+                label: "x(t)".into(),
+                points: vec![(0.0, 0.0), (0.5, f64::NAN), (0.6, 1e300), (1.0, -0.5)],
+                style: LineStyle::solid(0, 2.0),
+            }],
+            markers: vec![Marker {
+                label: "p".into(),
+                at: (0.5, 0.5),
+                shape: MarkerShape::Cross,
+                color: 1,
+            }],
+            origin_lines: true,
+        }
+    }
+
+    #[test]
+    fn draws_to_svg_with_axes_legend_and_markers() {
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+            render(&root, &sample(), &Theme::LIGHT, 1.0).unwrap();
+        }
+        assert!(svg.contains("time t [s]"));
+        assert!(svg.contains("x(t)"));
+        assert!(
+            svg.matches("<polyline").count() >= 2,
+            "line split at the NaN"
+        );
+    }
+
+    #[test]
+    fn non_finite_points_split_lines_and_huge_ones_are_clamped() {
+        let fig = sample();
+        let segs = segments(&fig.series[0], &fig);
+        assert_eq!(segs.len(), 2);
+        assert!(segs[1][0].1 <= 1.05);
+    }
+}

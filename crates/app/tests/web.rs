@@ -1,0 +1,99 @@
+//! Browser tests of the wasm boundary (run by `wasm-pack test --headless --chrome crates/app`):
+//! every demo draws real pixels onto a canvas, and hostile input is answered with notices.
+#![cfg(target_arch = "wasm32")]
+
+use wasm_bindgen::JsCast;
+use wasm_bindgen_test::*;
+use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
+use zeta_app::demos;
+use zeta_app::theme::Theme;
+use zeta_app::web::Session;
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+fn canvas(w: u32, h: u32) -> HtmlCanvasElement {
+    let doc = web_sys::window().unwrap().document().unwrap();
+    let c: HtmlCanvasElement = doc.create_element("canvas").unwrap().dyn_into().unwrap();
+    c.set_width(w);
+    c.set_height(h);
+    doc.body().unwrap().append_child(&c).unwrap();
+    c
+}
+
+/// Counts pixels close to `rgb` (within 40 per channel).
+fn count_colour(c: &HtmlCanvasElement, rgb: (u8, u8, u8)) -> usize {
+    let ctx: CanvasRenderingContext2d = c.get_context("2d").unwrap().unwrap().dyn_into().unwrap();
+    let data = ctx
+        .get_image_data(0.0, 0.0, c.width() as f64, c.height() as f64)
+        .unwrap()
+        .data();
+    data.chunks(4)
+        .filter(|p| {
+            (p[0] as i32 - rgb.0 as i32).abs() < 40
+                && (p[1] as i32 - rgb.1 as i32).abs() < 40
+                && (p[2] as i32 - rgb.2 as i32).abs() < 40
+        })
+        .count()
+}
+
+#[wasm_bindgen_test]
+fn regimes_draws_its_curve_and_poles_onto_canvases() {
+    let response = canvas(760, 400);
+    let poles = canvas(400, 320);
+    let mut s = Session::new("regimes").unwrap();
+    assert!(s.attach("response", response.clone()));
+    assert!(s.attach("poles", poles.clone()));
+    assert!(!s.attach("no-such-plot", canvas(10, 10)));
+    s.update(1.0, false).unwrap();
+    let blue = Theme::LIGHT.palette[0];
+    let vermillion = Theme::LIGHT.palette[1];
+    // The response curve is drawn in the first palette colour, the pole crosses in the second.
+    assert!(
+        count_colour(&response, (blue.0, blue.1, blue.2)) > 500,
+        "response curve drawn"
+    );
+    assert!(
+        count_colour(&poles, (vermillion.0, vermillion.1, vermillion.2)) > 20,
+        "poles drawn"
+    );
+    // Dark theme repaints the background.
+    s.update(1.0, true).unwrap();
+    let bg = Theme::DARK.background;
+    assert!(count_colour(&response, (bg.0, bg.1, bg.2)) > 760 * 400 / 2);
+}
+
+#[wasm_bindgen_test]
+fn every_demo_draws_every_plot() {
+    for id in demos::IDS {
+        let mut s = Session::new(id).unwrap();
+        let spec = demos::create(id).unwrap().spec();
+        let canvases: Vec<_> = spec
+            .plots
+            .iter()
+            .map(|p| (p.key, canvas(480, 300)))
+            .collect();
+        for (k, c) in &canvases {
+            assert!(s.attach(k, c.clone()));
+        }
+        s.update(2.0, false).unwrap();
+        for (k, c) in &canvases {
+            let white = count_colour(c, (255, 255, 255));
+            assert!(
+                white < 480 * 300 - 2000,
+                "{id}/{k}: something besides background was drawn"
+            );
+        }
+    }
+}
+
+#[wasm_bindgen_test]
+fn hostile_queries_become_notices_not_errors() {
+    let mut s = Session::new("regimes").unwrap();
+    let notices = s
+        .apply_query("?demo=regimes&zeta=%3Cscript%3Ealert(1)%3C/script%3E&wn=1e308&x0=NaN")
+        .unwrap();
+    let arr: js_sys::Array = notices.dyn_into().unwrap();
+    assert_eq!(arr.length(), 3);
+    assert!(Session::new("no-such-demo").is_err());
+    s.update(1.0, false).unwrap();
+}

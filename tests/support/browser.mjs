@@ -1,0 +1,91 @@
+// Headless Debian Chromium through playwright-core, with every console error and page
+// error collected so a test can assert the console stayed clean.
+import { chromium } from 'playwright-core';
+import { mkdir } from 'node:fs/promises';
+import { fileURLToPath } from 'node:url';
+
+const EXECUTABLE = process.env.CHROMIUM || '/usr/bin/chromium';
+export const SHOTS = fileURLToPath(new URL('../../target/screenshots/', import.meta.url));
+
+export async function launch() {
+  await mkdir(SHOTS, { recursive: true });
+  return chromium.launch({
+    executablePath: EXECUTABLE,
+    args: [
+      '--no-sandbox',
+      '--disable-gpu',
+      '--disable-quic',
+      '--no-first-run',
+      '--disable-background-networking',
+      '--disable-component-update',
+      '--disable-sync',
+      '--disable-dev-shm-usage',
+    ],
+  });
+}
+
+/** Opens `url` in a fresh context; returns {page, errors, context}. */
+export async function open(browser, url, options = {}) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, ...options });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('console', (msg) => {
+    if (msg.type() === 'error') errors.push(msg.text());
+  });
+  page.on('pageerror', (err) => errors.push(String(err)));
+  page.on('dialog', async (d) => {
+    errors.push(`unexpected dialog: ${d.message()}`);
+    await d.dismiss();
+  });
+  await page.goto(url);
+  await page.waitForSelector('html[data-ready="true"]', { timeout: 15000 });
+  await waitForReadouts(page);
+  return { page, errors, context };
+}
+
+/** Waits until every readout has been filled in once. */
+export async function waitForReadouts(page) {
+  await page.waitForFunction(() => {
+    const items = [...document.querySelectorAll('[data-readout]')];
+    return items.length > 0 && items.every((r) => r.querySelector('dd').textContent !== '—' || r.dataset.value === '');
+  });
+}
+
+/** A readout's data-value. */
+export function readout(page, key) {
+  return page.getAttribute(`[data-readout="${key}"]`, 'data-value');
+}
+
+/** A cheap fingerprint of a canvas's pixels: [non-background pixel count, checksum]. */
+export function canvasFingerprint(page, plot) {
+  return page.evaluate((key) => {
+    const c = document.querySelector(`canvas[data-plot="${key}"]`);
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let ink = 0;
+    let sum = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (d[i] !== d[0] || d[i + 1] !== d[1] || d[i + 2] !== d[2]) ink++;
+      sum = (sum * 31 + d[i] + 7 * d[i + 1] + 13 * d[i + 2]) % 1000000007;
+    }
+    return [ink, sum];
+  }, plot);
+}
+
+/** Waits until the URL's query has `key` = `value`. */
+export async function waitForUrlParam(page, key, value) {
+  await page.waitForFunction(
+    ([k, v]) => new URLSearchParams(location.search).get(k) === v,
+    [key, value],
+  );
+}
+
+/** Waits until a numeric readout is within 1e-9 (relative) of `value`. */
+export async function waitForReadout(page, key, value) {
+  await page.waitForFunction(
+    ([k, v]) => {
+      const el = document.querySelector(`[data-readout="${k}"]`);
+      return el && el.dataset.value !== '' && Math.abs(Number(el.dataset.value) - v) <= 1e-9 * Math.max(1, Math.abs(v));
+    },
+    [key, value],
+  );
+}
