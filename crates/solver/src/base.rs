@@ -2,7 +2,7 @@
 //!
 //! `m·x'' + c·(x' − u') + k·(x − u) = 0` for road input `u(t)`.
 
-/// Displacement transmissibility `|X/U| = √((1 + (2ζr)²) / ((1 − r²)² + (2ζr)²))` [-] at
+/// Displacement transmissibility `|X/U| = √((1 + (2ζr)²) / ((1 − r²)² + (2ζr)²))` \[-\] at
 /// frequency ratio `r = ω/ω_n` and damping ratio `ζ`. Equals 1 at `r = 0` and at
 /// `r = √2` for every ζ.
 pub fn transmissibility(r: f64, zeta: f64) -> f64 {

@@ -217,8 +217,8 @@ mod tests {
     #[test]
     fn underdamped_matches_textbook_form() {
         // x(t) = e^{−ζω_n t}[x0 cos ω_d t + (v0 + ζω_n x0)/ω_d sin ω_d t].
-        let (wn, z, x0, v0) = (8.944_271_909_999_16, 0.3, 0.06, 0.0);
-        let wd = wn * (1.0 - z * z as f64).sqrt();
+        let (wn, z, x0, v0) = (8.944_271_909_999_16, 0.3_f64, 0.06, 0.0);
+        let wd = wn * (1.0 - z * z).sqrt();
         let r = FreeResponse::new(SecondOrder::from_natural(wn, z).unwrap(), x0, v0);
         for &t in &[0.1, 0.5, 1.3] {
             let e = (-z * wn * t).exp();

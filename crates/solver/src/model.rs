@@ -47,16 +47,16 @@ impl SecondOrder {
         Ok(Self { a, b, c })
     }
 
-    /// Normalised form `x'' + 2ζω_n·x' + ω_n²·x = f(t)`: `a = 1`, `b = 2ζω_n` [1/s],
-    /// `c = ω_n²` [1/s²]. `ω_n > 0` in rad/s; `ζ` any finite real (negative is negative damping).
+    /// Normalised form `x'' + 2ζω_n·x' + ω_n²·x = f(t)`: `a = 1`, `b = 2ζω_n` \[1/s\],
+    /// `c = ω_n²` \[1/s²\]. `ω_n > 0` in rad/s; `ζ` any finite real (negative is negative damping).
     pub fn from_natural(wn: f64, zeta: f64) -> Result<Self, ModelError> {
         let wn = positive("natural frequency ω_n", "rad/s", wn)?;
         let zeta = finite("damping ratio ζ", "", zeta)?;
         Self::new(1.0, 2.0 * zeta * wn, wn * wn)
     }
 
-    /// Quarter-car corner: sprung mass `m` [kg] > 0, damper rate `c` [N·s/m] ≥ 0 (negative
-    /// values model an energy source), spring rate `k` [N/m].
+    /// Quarter-car corner: sprung mass `m` \[kg\] > 0, damper rate `c` \[N·s/m\] ≥ 0 (negative
+    /// values model an energy source), spring rate `k` \[N/m\].
     pub fn mechanical(m: f64, c: f64, k: f64) -> Result<Self, ModelError> {
         let m = positive("mass m", "kg", m)?;
         let c = finite("damping c", "N·s/m", c)?;
@@ -65,7 +65,7 @@ impl SecondOrder {
     }
 
     /// Series RLC loop, in the charge `q`: `L·q'' + R·q' + q/C = E(t)`, with inductance
-    /// `l` [H] > 0, resistance `r` [Ω] ≥ 0 and capacitance `cap` [F] > 0.
+    /// `l` \[H\] > 0, resistance `r` \[Ω\] ≥ 0 and capacitance `cap` \[F\] > 0.
     pub fn electrical(l: f64, r: f64, cap: f64) -> Result<Self, ModelError> {
         let l = positive("inductance L", "H", l)?;
         let r = non_negative("resistance R", "Ω", r)?;
@@ -73,17 +73,17 @@ impl SecondOrder {
         Self::new(l, r, 1.0 / cap)
     }
 
-    /// Inertia coefficient `a` (mass [kg] or inductance [H]).
+    /// Inertia coefficient `a` (mass \[kg\] or inductance \[H\]).
     pub fn a(&self) -> f64 {
         self.a
     }
 
-    /// Damping coefficient `b` (damper rate [N·s/m] or resistance [Ω]).
+    /// Damping coefficient `b` (damper rate \[N·s/m\] or resistance \[Ω\]).
     pub fn b(&self) -> f64 {
         self.b
     }
 
-    /// Stiffness coefficient `c` (spring rate [N/m] or elastance 1/C [1/F]).
+    /// Stiffness coefficient `c` (spring rate \[N/m\] or elastance 1/C \[1/F\]).
     pub fn c(&self) -> f64 {
         self.c
     }
@@ -99,44 +99,44 @@ impl SecondOrder {
         (self.c > 0.0).then(|| (self.a, self.b, 1.0 / self.c))
     }
 
-    /// Decay rate `α = b / (2a)` [1/s]; negative for negative damping.
+    /// Decay rate `α = b / (2a)` \[1/s\]; negative for negative damping.
     pub fn alpha(&self) -> f64 {
         self.b / (2.0 * self.a)
     }
 
-    /// `ω_n² = c / a` [1/s²], defined (and possibly ≤ 0) for every system.
+    /// `ω_n² = c / a` \[1/s²\], defined (and possibly ≤ 0) for every system.
     pub fn omega_n_squared(&self) -> f64 {
         self.c / self.a
     }
 
-    /// Undamped natural frequency `ω_n = √(c/a)` [rad/s]; `None` when `c ≤ 0`.
+    /// Undamped natural frequency `ω_n = √(c/a)` \[rad/s\]; `None` when `c ≤ 0`.
     pub fn natural_frequency(&self) -> Option<f64> {
         (self.c > 0.0).then(|| (self.c / self.a).sqrt())
     }
 
-    /// Natural frequency in hertz, `f_n = ω_n / 2π` [Hz]; `None` when `c ≤ 0`.
+    /// Natural frequency in hertz, `f_n = ω_n / 2π` \[Hz\]; `None` when `c ≤ 0`.
     pub fn natural_frequency_hz(&self) -> Option<f64> {
         self.natural_frequency().map(|w| w / std::f64::consts::TAU)
     }
 
-    /// Damping ratio `ζ = b / (2√(a·c))` [-]; `None` when `c ≤ 0`.
+    /// Damping ratio `ζ = b / (2√(a·c))` \[-\]; `None` when `c ≤ 0`.
     pub fn damping_ratio(&self) -> Option<f64> {
         (self.c > 0.0).then(|| self.b / (2.0 * (self.a * self.c).sqrt()))
     }
 
-    /// Damped natural frequency `ω_d = √(ω_n² − α²) = ω_n√(1 − ζ²)` [rad/s], for systems that
+    /// Damped natural frequency `ω_d = √(ω_n² − α²) = ω_n√(1 − ζ²)` \[rad/s\], for systems that
     /// oscillate (`ω_n² > α²`, any sign of damping); `None` otherwise.
     pub fn damped_frequency(&self) -> Option<f64> {
         let d = self.omega_n_squared() - self.alpha() * self.alpha();
         (d > 0.0 && self.regime() != Regime::CriticallyDamped).then(|| d.sqrt())
     }
 
-    /// Quality factor `Q = 1/(2ζ) = √(a·c)/b` [-]; `None` unless `c > 0` and `b > 0`.
+    /// Quality factor `Q = 1/(2ζ) = √(a·c)/b` \[-\]; `None` unless `c > 0` and `b > 0`.
     pub fn quality_factor(&self) -> Option<f64> {
         (self.c > 0.0 && self.b > 0.0).then(|| (self.a * self.c).sqrt() / self.b)
     }
 
-    /// Half-power bandwidth `Δω = b/a = 2ζω_n = ω_n/Q` [rad/s] of the velocity (current)
+    /// Half-power bandwidth `Δω = b/a = 2ζω_n = ω_n/Q` \[rad/s\] of the velocity (current)
     /// resonance — exact for every ζ > 0: `|V(ω)|²` falls to half its peak at two
     /// frequencies whose difference is `b/a`. `None` unless `c > 0` and `b > 0`.
     pub fn half_power_bandwidth(&self) -> Option<f64> {
@@ -150,7 +150,7 @@ impl SecondOrder {
         (self.c > 0.0).then(|| 2.0 * (self.a * self.c).sqrt())
     }
 
-    /// The two poles (roots of `a·s² + b·s + c = 0`) [1/s]: a conjugate pair with the
+    /// The two poles (roots of `a·s² + b·s + c = 0`) \[1/s\]: a conjugate pair with the
     /// positive imaginary part first, or two reals with the larger (slower) first.
     pub fn poles(&self) -> [Complex; 2] {
         let alpha = self.alpha();
@@ -184,7 +184,7 @@ impl SecondOrder {
         }
     }
 
-    /// Time constants `τ = −1/Re(s)` [s] of the two poles, slowest first; `None` for a pole
+    /// Time constants `τ = −1/Re(s)` \[s\] of the two poles, slowest first; `None` for a pole
     /// that does not decay (`Re(s) ≥ 0`).
     pub fn time_constants(&self) -> [Option<f64>; 2] {
         let p = self.poles();
@@ -289,7 +289,7 @@ mod tests {
             SecondOrder::new(1e-200, 1.0, 1e200),
             Err(ModelError::OutOfRange { .. })
         ));
-        assert!(matches!(SecondOrder::from_natural(-1.0, 0.5), Err(_)));
+        assert!(SecondOrder::from_natural(-1.0, 0.5).is_err());
         let msg = SecondOrder::mechanical(-3.0, 1.0, 1.0)
             .unwrap_err()
             .to_string();
