@@ -266,12 +266,14 @@ mod tests {
 
     #[test]
     fn readouts_come_from_the_solver() {
-        let f = run("wn=8.944_271_909_999_16&zeta=0.2");
+        const WN: f64 = 8.944_271_909_999_16; // √80 rad/s: m = 300 kg, k = 24 000 N/m
+        let f = run(&format!("wn={WN}&zeta=0.2"));
+        assert_eq!(value(&f, "wn").parse::<f64>().unwrap(), WN);
         assert_eq!(value(&f, "regime"), "underdamped");
         let wd: f64 = value(&f, "wd").parse().unwrap();
-        assert!((wd - 8.944_271_909_999_16 * (1.0f64 - 0.04).sqrt()).abs() < 1e-12);
+        assert!((wd - WN * (1.0f64 - 0.04).sqrt()).abs() < 1e-12);
         let re: f64 = value(&f, "pole_re").parse().unwrap();
-        assert!((re + 0.2 * 8.944_271_909_999_16).abs() < 1e-12);
+        assert!((re + 0.2 * WN).abs() < 1e-12);
     }
 
     #[test]
