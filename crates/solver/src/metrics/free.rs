@@ -88,6 +88,18 @@ enum Extrema {
     },
 }
 
+/// Result of [`FreeShape::settle`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Settling {
+    /// Settling time \[s\].
+    pub(crate) time: f64,
+    /// Zero crossings before it.
+    pub(crate) zero_crossings: u64,
+    /// Number of extrema at `t > 0` outside the band. The settling time is a smooth
+    /// function of the parameters while this stays the same, and jumps when it changes.
+    pub(crate) piece: u64,
+}
+
 /// A stable free response from `x0 ≠ 0` with its extrema located.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct FreeShape {
@@ -175,15 +187,20 @@ impl FreeShape {
         None
     }
 
-    /// `(settling time, zero crossings before it)` for the band `h = band·|x0|`.
-    pub(crate) fn settle(&self, band: SettlingBand) -> Option<(f64, u64)> {
+    /// Settling time, zero crossings before it, and the smooth piece it lies on, for the
+    /// band `h = band·|x0|`.
+    pub(crate) fn settle(&self, band: SettlingBand) -> Option<Settling> {
         let h = band.fraction() * self.x0.abs();
         match self.extrema {
             Extrema::Periodic { t1, half, m, decay } => {
                 if m <= h {
                     // |x0| > h and the first extremum is inside: the crossing precedes it
                     // (and precedes any zero, so no crossings are counted). Here t1 > 0.
-                    return Some((self.crossing(h, 0.0, t1), 0));
+                    return Some(Settling {
+                        time: self.crossing(h, 0.0, t1),
+                        zero_crossings: 0,
+                        piece: 0,
+                    });
                 }
                 // Last k with m·e^{−k·decay} > h, from logarithms, then nudged so the
                 // rounding of the log cannot pick a neighbour.
@@ -202,22 +219,47 @@ impl FreeShape {
                 let first = u64::from(t1 > 0.0 && x1 * self.x0 < 0.0);
                 // `as` saturates; k is a non-negative whole number here.
                 let zeros = (k as u64).saturating_add(first);
-                Some((self.crossing(h, a, a + half), zeros))
+                // Extrema at t > 0 outside the band: k + 1, less the one at t = 0 if t1 = 0.
+                let piece = (k as u64).saturating_add(u64::from(t1 > 0.0));
+                let time = self.crossing(h, a, a + half);
+                Some(Settling {
+                    time,
+                    zero_crossings: zeros,
+                    piece,
+                })
             }
             Extrema::Single { ext, tau } => match ext {
                 Some(te) if self.resp.displacement(te).abs() > h => {
                     let crossed = self.resp.displacement(te) * self.x0 < 0.0;
-                    let ts = self.crossing_unbounded(h, te, tau)?;
-                    Some((ts, u64::from(crossed)))
+                    let time = self.crossing_unbounded(h, te, tau)?;
+                    Some(Settling {
+                        time,
+                        zero_crossings: u64::from(crossed),
+                        piece: 1,
+                    })
                 }
-                Some(te) => Some((self.crossing(h, 0.0, te), 0)),
-                None => Some((self.crossing_unbounded(h, 0.0, tau)?, 0)),
+                Some(te) => {
+                    let time = self.crossing(h, 0.0, te);
+                    Some(Settling {
+                        time,
+                        zero_crossings: 0,
+                        piece: 0,
+                    })
+                }
+                None => {
+                    let time = self.crossing_unbounded(h, 0.0, tau)?;
+                    Some(Settling {
+                        time,
+                        zero_crossings: 0,
+                        piece: 0,
+                    })
+                }
             },
         }
     }
 
     /// `(rebound fraction, its time)`: the largest excursion of sign opposite to `x0`.
-    fn rebound(&self) -> (f64, Option<f64>) {
+    pub(crate) fn rebound(&self) -> (f64, Option<f64>) {
         let ax0 = self.x0.abs();
         match self.extrema {
             Extrema::Periodic { t1, half, m, decay } => {
@@ -256,7 +298,7 @@ impl FreeShape {
 /// `None` when the system does not settle (undamped, negatively damped, neutral,
 /// divergent) or `x0` is zero or not finite. The fast path the design tools call.
 pub fn settling_time(sys: &SecondOrder, x0: f64, v0: f64, band: SettlingBand) -> Option<f64> {
-    FreeShape::new(sys, x0, v0)?.settle(band).map(|(t, _)| t)
+    FreeShape::new(sys, x0, v0)?.settle(band).map(|s| s.time)
 }
 
 impl FreeMetrics {
@@ -266,13 +308,13 @@ impl FreeMetrics {
     /// `settling_time` is `Some`.
     pub fn exact(sys: &SecondOrder, x0: f64, v0: f64, band: SettlingBand) -> Option<Self> {
         let shape = FreeShape::new(sys, x0, v0)?;
-        let (ts, zeros) = shape.settle(band)?;
+        let settled = shape.settle(band)?;
         let (peak_rebound, rebound_time) = shape.rebound();
         Some(Self {
-            settling_time: Some(ts),
+            settling_time: Some(settled.time),
             peak_rebound,
             rebound_time,
-            zero_crossings: zeros,
+            zero_crossings: settled.zero_crossings,
             log_decrement: shape.log_decrement(),
         })
     }

@@ -128,7 +128,7 @@ impl StepInfo {
         }
         let y_ss = force / sys.c();
         let shape = FreeShape::new(sys, 1.0, 0.0)?;
-        let (settling, _) = shape.settle(config.settling_band)?;
+        let settling = shape.settle(config.settling_band)?.time;
         let z = FreeResponse::new(*sys, 1.0, 0.0);
 
         // Interval on which z falls monotonically from 1: up to its first minimum at π/ω_d
