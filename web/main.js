@@ -1,12 +1,17 @@
 // Zeta Lab front end: loads the wasm module, builds the chosen demo from its Rust
-// declaration and redraws at most once per animation frame while sliders move.
+// declaration, and redraws at most once per animation frame while controls move.
+// No physics here: every number comes from the Session (Rust).
 import init, { Session, demoList, takePanicMessage } from '../zeta-app.js';
-import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue } from './ui.js';
+import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
 import { currentQuery, demoFromUrl, writeState } from './url.js';
+import { download } from './download.js';
 
 const DEFAULT_DEMO = 'regimes';
+const ANNOUNCE_DELAY_MS = 1200;
 const darkQuery = window.matchMedia('(prefers-color-scheme: dark)');
+const reducedMotion = window.matchMedia('(prefers-reduced-motion: reduce)');
 
+/** The one app object: all mutable state of the page. */
 const app = {
   demoId: null,
   session: null,
@@ -16,6 +21,11 @@ const app = {
   lastSize: new Map(),
   notices: null,
   root: null,
+  timeSpan: null,
+  time: 0,
+  playing: false,
+  lastTick: null,
+  announceTimer: null,
 };
 
 function isDark() {
@@ -34,14 +44,6 @@ function reportFailure(err) {
   app.needsRecovery = true;
 }
 
-function recover() {
-  const values = app.session ? safeValues() : [];
-  app.session = new Session(app.demoId);
-  for (const [k, v] of values) app.session.set(k, String(v));
-  attachCanvases();
-  app.needsRecovery = false;
-}
-
 function safeValues() {
   try {
     return app.session.values();
@@ -50,24 +52,47 @@ function safeValues() {
   }
 }
 
+function recover() {
+  const values = app.session ? safeValues() : [];
+  app.session = new Session(app.demoId);
+  for (const [k, v] of values) app.session.set(k, String(v));
+  attachCanvases();
+  app.needsRecovery = false;
+}
+
 function attachCanvases() {
   app.lastSize.clear();
   for (const [key, canvas] of app.view.canvases) app.session.attach(key, canvas);
+  if (app.view.animation) app.session.attach('schematic', app.view.animation.canvas);
+}
+
+function fit(canvas, key, dpr) {
+  const w = Math.max(1, Math.round(canvas.clientWidth * dpr));
+  const h = Math.max(1, Math.round(canvas.clientHeight * dpr));
+  const last = app.lastSize.get(key);
+  if (!last || last[0] !== w || last[1] !== h) {
+    canvas.width = w;
+    canvas.height = h;
+    app.lastSize.set(key, [w, h]);
+  }
 }
 
 function sizeCanvases() {
   const dpr = window.devicePixelRatio || 1;
   for (const [key, canvas] of app.view.canvases) {
-    const w = Math.max(1, Math.round(canvas.clientWidth * dpr));
-    const h = Math.max(1, Math.round(canvas.clientHeight * dpr));
-    const last = app.lastSize.get(key);
-    if (!last || last[0] !== w || last[1] !== h) {
-      canvas.width = w;
-      canvas.height = h;
-      app.lastSize.set(key, [w, h]);
-    }
+    fit(canvas, key, dpr);
+    const { overlay } = app.view.overlays.get(key);
+    fit(overlay, `${key}:overlay`, dpr);
   }
+  if (app.view.animation) fit(app.view.animation.canvas, 'schematic', dpr);
   return dpr;
+}
+
+function announce(text) {
+  clearTimeout(app.announceTimer);
+  app.announceTimer = setTimeout(() => {
+    app.view.live.textContent = text;
+  }, ANNOUNCE_DELAY_MS);
 }
 
 function drawFrame() {
@@ -75,10 +100,44 @@ function drawFrame() {
   try {
     if (app.needsRecovery) recover();
     const dpr = sizeCanvases();
-    const readouts = app.session.update(dpr, isDark());
-    showReadouts(app.view.readouts, readouts);
+    const out = app.session.update(dpr, isDark());
+    showReadouts(app.view.readouts, out.readouts);
+    highlightRow(app.view.table, out.readouts);
+    for (const d of out.descriptions) {
+      const cap = app.view.captions.get(d.key);
+      if (cap) cap.textContent = d.text;
+    }
+    if (out.descriptions.length) announce(out.descriptions[0].text);
+    app.timeSpan = out.time_span;
+    if (app.timeSpan) app.time = Math.min(Math.max(app.time, app.timeSpan[0]), app.timeSpan[1]);
+    drawTime(dpr);
   } catch (err) {
     reportFailure(err);
+  }
+}
+
+/** Draws the schematic at the current time and the time cursor on every time plot. */
+function drawTime(dpr = window.devicePixelRatio || 1) {
+  const anim = app.view.animation;
+  if (!anim || !app.timeSpan) return;
+  const text = app.session.drawSchematic(app.time, dpr, isDark());
+  anim.caption.textContent = text;
+  const [t0, t1] = app.timeSpan;
+  anim.scrub.value = String(Math.round(((app.time - t0) / (t1 - t0)) * 1000));
+  anim.time.textContent = `t = ${app.time.toFixed(2)} s`;
+  anim.scrub.setAttribute('aria-valuetext', `time ${app.time.toFixed(2)} seconds`);
+  for (const [key, { overlay }] of app.view.overlays) {
+    const ctx = overlay.getContext('2d');
+    ctx.clearRect(0, 0, overlay.width, overlay.height);
+    const x = app.session.timeToPixel(key, app.time);
+    if (x === undefined || (app.time === t0 && !app.playing)) continue;
+    ctx.strokeStyle = isDark() ? 'rgba(230,233,237,0.8)' : 'rgba(33,37,41,0.7)';
+    ctx.lineWidth = Math.max(1, dpr);
+    ctx.setLineDash([4 * dpr, 3 * dpr]);
+    ctx.beginPath();
+    ctx.moveTo(x, 0);
+    ctx.lineTo(x, overlay.height);
+    ctx.stroke();
   }
 }
 
@@ -97,17 +156,13 @@ function syncUrl() {
   }
 }
 
-function setParam(control, raw, fromNumberBox) {
+function setParam(control, raw) {
   try {
     if (app.needsRecovery) recover();
     const res = app.session.set(control.param.key, raw);
     if (!res) return;
     if (res.notice) notify(app.notices, res.notice.message, 'warn');
-    if (fromNumberBox || res.notice) showValue(control, res.value);
-    else {
-      control.number.value = formatValue(control.param, res.value);
-      showValue(control, res.value);
-    }
+    showValue(control, res.value);
   } catch (err) {
     reportFailure(err);
   }
@@ -117,10 +172,155 @@ function setParam(control, raw, fromNumberBox) {
 
 function wireControls() {
   for (const control of app.view.controls.values()) {
-    control.range.addEventListener('input', () => {
-      setParam(control, String(fromSlider(control.param, control.range.value)), false);
+    const kind = control.param.kind;
+    if (kind === 'toggle') {
+      control.input.addEventListener('change', () => setParam(control, control.input.checked ? '1' : '0'));
+    } else if (kind === 'choice') {
+      control.input.addEventListener('change', () => setParam(control, control.input.value));
+    } else {
+      control.range.addEventListener('input', () => {
+        const value = fromSlider(control.param, control.range.value);
+        control.number.value = formatValue(control.param, value);
+        setParam(control, String(value));
+      });
+      control.number.addEventListener('change', () => setParam(control, control.number.value));
+    }
+  }
+  for (const { preset, button } of app.view.presets) {
+    button.addEventListener('click', () => {
+      for (const [key, value] of preset.values) {
+        const control = app.view.controls.get(key);
+        if (control) setParam(control, String(value));
+      }
     });
-    control.number.addEventListener('change', () => setParam(control, control.number.value, true));
+  }
+}
+
+function wireAnimation() {
+  const anim = app.view.animation;
+  if (!anim) return;
+  anim.play.addEventListener('click', () => setPlaying(!app.playing));
+  anim.scrub.addEventListener('input', () => {
+    if (!app.timeSpan) return;
+    const [t0, t1] = app.timeSpan;
+    app.time = t0 + (Number(anim.scrub.value) / 1000) * (t1 - t0);
+    drawTime();
+  });
+}
+
+function setPlaying(on) {
+  const anim = app.view && app.view.animation;
+  if (!anim) return;
+  app.playing = on;
+  anim.play.textContent = on ? 'Pause' : 'Play';
+  anim.play.setAttribute('aria-pressed', String(on));
+  if (on) {
+    if (app.timeSpan && app.time >= app.timeSpan[1]) app.time = app.timeSpan[0];
+    app.lastTick = null;
+    requestAnimationFrame(tick);
+  }
+}
+
+function tick(now) {
+  if (!app.playing || !app.timeSpan) return;
+  if (app.lastTick !== null) {
+    const dt = Math.min(0.1, (now - app.lastTick) / 1000);
+    app.time += dt;
+    if (app.time >= app.timeSpan[1]) {
+      app.time = app.timeSpan[1];
+      setPlaying(false);
+    }
+  }
+  app.lastTick = now;
+  try {
+    drawTime();
+  } catch (err) {
+    reportFailure(err);
+    setPlaying(false);
+    return;
+  }
+  if (app.playing) requestAnimationFrame(tick);
+}
+
+function wireProbes() {
+  for (const [key, canvas] of app.view.canvases) {
+    const { overlay, tip, stage } = app.view.overlays.get(key);
+    const show = (ev) => {
+      const dpr = window.devicePixelRatio || 1;
+      const rect = canvas.getBoundingClientRect();
+      const px = (ev.clientX - rect.left) * dpr;
+      const py = (ev.clientY - rect.top) * dpr;
+      let probe;
+      try {
+        probe = app.session.probe(key, px, py);
+      } catch (err) {
+        reportFailure(err);
+        return;
+      }
+      drawTime();
+      if (!probe) {
+        tip.hidden = true;
+        return;
+      }
+      const ctx = overlay.getContext('2d');
+      ctx.save();
+      ctx.strokeStyle = isDark() ? 'rgba(230,233,237,0.6)' : 'rgba(33,37,41,0.5)';
+      ctx.lineWidth = Math.max(1, dpr);
+      ctx.beginPath();
+      ctx.moveTo(px, 0);
+      ctx.lineTo(px, overlay.height);
+      ctx.moveTo(0, py);
+      ctx.lineTo(overlay.width, py);
+      ctx.stroke();
+      for (const p of probe.points) {
+        ctx.beginPath();
+        ctx.arc(p.px, p.py, 4 * dpr, 0, Math.PI * 2);
+        ctx.stroke();
+      }
+      ctx.restore();
+      tip.replaceChildren();
+      for (const line of [probe.x_text, ...probe.points.map((p) => p.text)]) {
+        const div = document.createElement('div');
+        div.textContent = line;
+        tip.append(div);
+      }
+      tip.hidden = false;
+      const x = ev.clientX - rect.left;
+      const y = ev.clientY - rect.top;
+      tip.style.left = `${Math.min(x + 12, stage.clientWidth - tip.offsetWidth - 4)}px`;
+      tip.style.top = `${Math.max(4, y - tip.offsetHeight - 12)}px`;
+    };
+    canvas.addEventListener('pointermove', show);
+    canvas.addEventListener('pointerdown', show);
+    canvas.addEventListener('pointerleave', () => {
+      tip.hidden = true;
+      drawTime();
+    });
+  }
+}
+
+function wireExports() {
+  for (const { key, format, button } of app.view.exports) {
+    button.addEventListener('click', () => {
+      const canvas = app.view.canvases.get(key);
+      const name = `zeta-${app.demoId}-${key}`;
+      try {
+        if (format === 'csv') {
+          download(new Blob([app.session.csv(key)], { type: 'text/csv' }), `${name}.csv`);
+        } else if (format === 'svg') {
+          const svg = app.session.svg(key, canvas.clientWidth, canvas.clientHeight, isDark());
+          download(new Blob([svg], { type: 'image/svg+xml' }), `${name}.svg`);
+        } else {
+          const big = document.createElement('canvas');
+          big.width = canvas.clientWidth * 2;
+          big.height = canvas.clientHeight * 2;
+          app.session.renderTo(key, big, 2, isDark());
+          big.toBlob((blob) => blob && download(blob, `${name}.png`), 'image/png');
+        }
+      } catch (err) {
+        reportFailure(err);
+      }
+    });
   }
 }
 
@@ -132,19 +332,26 @@ function showAllValues() {
 }
 
 function openDemo(id, query) {
+  setPlaying(false);
   app.demoId = id;
   app.session = new Session(id);
   const notices = query ? app.session.applyQuery(query) : [];
   const spec = app.session.spec();
   app.view = buildDemo(app.root, spec);
+  app.time = 0;
   document.title = `${spec.title} — Zeta Lab`;
   attachCanvases();
   wireControls();
+  wireAnimation();
+  wireProbes();
+  wireExports();
   showAllValues();
   for (const n of notices) notify(app.notices, n.message, 'warn');
   const select = document.getElementById('demo-select');
   if (select) select.value = id;
   requestDraw();
+  const autoplay = new URLSearchParams(window.location.search).get('autoplay') === '1';
+  if (autoplay && !reducedMotion.matches) requestAnimationFrame(() => setPlaying(true));
 }
 
 function buildMenu(list) {
@@ -164,6 +371,16 @@ function buildMenu(list) {
 function applyForcedTheme() {
   const forced = new URLSearchParams(window.location.search).get('theme');
   if (forced === 'dark' || forced === 'light') document.documentElement.dataset.theme = forced;
+}
+
+/** Space plays or pauses the animation unless a control that uses Space has focus. */
+function onKey(ev) {
+  if (ev.key !== ' ' || !app.view || !app.view.animation) return;
+  const t = ev.target;
+  const tag = t && t.tagName;
+  if (tag === 'INPUT' || tag === 'SELECT' || tag === 'TEXTAREA' || tag === 'BUTTON' || (t && t.isContentEditable)) return;
+  ev.preventDefault();
+  setPlaying(!app.playing);
 }
 
 async function main() {
@@ -190,6 +407,7 @@ async function main() {
   openDemo(known ? wanted : DEFAULT_DEMO, known ? currentQuery() : null);
   new ResizeObserver(() => requestDraw()).observe(app.root);
   darkQuery.addEventListener('change', () => requestDraw());
+  document.addEventListener('keydown', onKey);
   document.documentElement.dataset.ready = 'true';
 }
 

@@ -36,6 +36,24 @@ export function formatValue(param, value) {
   return String(Number(value.toFixed(Math.min(decimals, 12))));
 }
 
+function toggleControl(param) {
+  const wrap = el('div', { class: 'param param-toggle', 'data-param': param.key });
+  const id = `p-${param.key}`;
+  const box = el('input', { type: 'checkbox', id, 'data-key': param.key });
+  const label = el('label', { for: id }, param.label);
+  wrap.append(box, label);
+  return { wrap, input: box };
+}
+
+function choiceControl(param) {
+  const wrap = el('div', { class: 'param', 'data-param': param.key });
+  const id = `p-${param.key}`;
+  const select = el('select', { id, 'data-key': param.key });
+  param.options.forEach((o, i) => select.append(el('option', { value: String(i) }, o.label)));
+  wrap.append(el('label', { for: id }, param.label), select);
+  return { wrap, input: select };
+}
+
 function paramControl(param) {
   const wrap = el('div', { class: 'param', 'data-param': param.key });
   const id = `p-${param.key}`;
@@ -81,9 +99,26 @@ export function buildDemo(root, spec) {
   form.addEventListener('submit', (e) => e.preventDefault());
   const controls = new Map();
   for (const p of spec.params) {
-    const c = paramControl(p);
-    form.append(c.wrap);
-    controls.set(p.key, { param: p, range: c.range, number: c.number });
+    if (p.kind === 'toggle' || p.kind === 'choice') {
+      const c = p.kind === 'toggle' ? toggleControl(p) : choiceControl(p);
+      form.append(c.wrap);
+      controls.set(p.key, { param: p, input: c.input });
+    } else {
+      const c = paramControl(p);
+      form.append(c.wrap);
+      controls.set(p.key, { param: p, range: c.range, number: c.number });
+    }
+  }
+  const presets = [];
+  if (spec.presets.length) {
+    const box = el('div', { class: 'presets', role: 'group', 'aria-label': 'Presets' });
+    box.append(el('span', { class: 'presets-label' }, 'Presets'));
+    for (const preset of spec.presets) {
+      const b = el('button', { type: 'button', class: 'preset' }, preset.label);
+      box.append(b);
+      presets.push({ preset, button: b });
+    }
+    form.append(box);
   }
 
   const readoutBox = el('dl', { class: 'readouts', 'aria-label': 'Readouts' });
@@ -94,24 +129,105 @@ export function buildDemo(root, spec) {
     readoutBox.append(item);
     readouts.set(r.key, item);
   }
-  panel.append(form, readoutBox);
+  const side = el('div', { class: 'side' });
+  side.append(readoutBox);
+  let animation = null;
+  if (spec.schematic) animation = buildAnimation(side);
+  panel.append(form, side);
 
   const plots = el('div', { class: 'plots' });
   const canvases = new Map();
+  const overlays = new Map();
+  const captions = new Map();
+  const exports = [];
   for (const p of spec.plots) {
     const fig = el('figure', { class: 'plot', 'data-plot-wrap': p.key });
-    const canvas = el('canvas', { 'data-plot': p.key, role: 'img', 'aria-label': p.title });
+    const stage = el('div', { class: 'plot-stage' });
+    const canvas = el('canvas', { 'data-plot': p.key, role: 'img', 'aria-label': p.title, tabindex: '0' });
     canvas.style.aspectRatio = String(p.aspect);
-    fig.append(canvas);
+    const overlay = el('canvas', { class: 'overlay', 'aria-hidden': 'true' });
+    const tip = el('div', { class: 'probe', hidden: '' });
+    stage.append(canvas, overlay, tip);
+    const caption = el('figcaption', { id: `desc-${p.key}` });
+    canvas.setAttribute('aria-describedby', caption.id);
+    const tools = el('div', { class: 'plot-tools', role: 'group', 'aria-label': `Export ${p.title}` });
+    for (const [format, text] of [['png', 'PNG'], ['svg', 'SVG'], ['csv', 'CSV']]) {
+      const b = el('button', { type: 'button', 'data-export': format, 'aria-label': `Download ${p.title} as ${text}` }, text);
+      tools.append(b);
+      exports.push({ key: p.key, format, button: b });
+    }
+    fig.append(stage, caption, tools);
     plots.append(fig);
     canvases.set(p.key, canvas);
+    overlays.set(p.key, { overlay, tip, stage });
+    captions.set(p.key, caption);
   }
   root.append(head, panel, plots);
-  return { controls, readouts, canvases };
+  let table = null;
+  if (spec.table) table = buildTable(root, spec.table);
+  const live = el('div', { class: 'visually-hidden', 'aria-live': 'polite', id: 'plot-announcer' });
+  root.append(live);
+  return { controls, readouts, canvases, overlays, captions, exports, presets, animation, table, live };
 }
 
-/** Shows a value on a slider and its number box. */
+function buildAnimation(parent) {
+  const fig = el('figure', { class: 'schematic' });
+  const canvas = el('canvas', { 'data-plot': 'schematic', role: 'img', 'aria-label': 'Animated schematic' });
+  const bar = el('div', { class: 'anim-bar' });
+  const play = el('button', { type: 'button', class: 'play', 'aria-pressed': 'false' }, 'Play');
+  const scrub = el('input', { type: 'range', min: '0', max: '1000', step: '1', value: '0', 'aria-label': 'Animation time' });
+  const time = el('output', { class: 'anim-time' }, 't = 0 s');
+  bar.append(play, scrub, time);
+  const caption = el('figcaption', { class: 'visually-hidden' });
+  fig.append(canvas, bar, caption);
+  parent.append(fig);
+  return { canvas, play, scrub, time, caption };
+}
+
+function buildTable(root, table) {
+  const wrap = el('div', { class: 'table-wrap' });
+  const t = el('table', { class: 'ref-table' });
+  t.append(el('caption', {}, table.caption));
+  const head = el('tr');
+  for (const c of table.columns) head.append(el('th', { scope: 'col' }, c));
+  t.append(el('thead'));
+  t.tHead.append(head);
+  const body = el('tbody');
+  const rows = new Map();
+  for (const [key, cells] of table.rows) {
+    const tr = el('tr', { 'data-row': key });
+    cells.forEach((c, i) => tr.append(el(i === 0 ? 'th' : 'td', i === 0 ? { scope: 'row' } : {}, c)));
+    body.append(tr);
+    rows.set(key, tr);
+  }
+  t.append(body);
+  wrap.append(t);
+  root.append(wrap);
+  return { rows, readout: table.highlight_readout };
+}
+
+/** Highlights the table row whose key is the readout's current value. */
+export function highlightRow(table, readouts) {
+  if (!table) return;
+  const r = readouts.find((x) => x.key === table.readout);
+  for (const [key, tr] of table.rows) {
+    const on = r && r.data_value === key;
+    tr.classList.toggle('current', on);
+    if (on) tr.setAttribute('aria-current', 'true');
+    else tr.removeAttribute('aria-current');
+  }
+}
+
+/** Shows a value on a control (slider and number box, checkbox, or list). */
 export function showValue(control, value) {
+  if (control.param.kind === 'toggle') {
+    control.input.checked = value === 1;
+    return;
+  }
+  if (control.param.kind === 'choice') {
+    control.input.value = String(value);
+    return;
+  }
   control.range.value = String(toSlider(control.param, value));
   control.number.value = formatValue(control.param, value);
   const unit = control.param.unit ? ` ${control.param.unit}` : '';

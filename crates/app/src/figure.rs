@@ -119,6 +119,8 @@ pub enum MarkerShape {
     Cross,
     /// A filled circle, e.g. a design point.
     Dot,
+    /// No mark: the label alone, e.g. a name on a schematic.
+    Label,
 }
 
 /// A labelled point.
@@ -134,11 +136,24 @@ pub struct Marker {
     pub color: usize,
 }
 
+/// How a figure is framed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FigureKind {
+    /// A chart with axes, grid and legend.
+    Plot,
+    /// A drawing (a schematic): no axes or grid, equal scales on both axes.
+    Schematic,
+}
+
 /// One plot.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
     /// Title drawn above the plot.
     pub title: String,
+    /// Chart or drawing.
+    pub kind: FigureKind,
+    /// Text alternative: the figure described in words, kept current with the data.
+    pub description: String,
     /// Horizontal axis.
     pub x: Axis,
     /// Vertical axis.
@@ -152,6 +167,20 @@ pub struct Figure {
 }
 
 impl Figure {
+    /// An empty chart with these axes; push series and markers onto it.
+    pub fn plot(title: impl Into<String>, x: Axis, y: Axis) -> Self {
+        Self {
+            title: title.into(),
+            kind: FigureKind::Plot,
+            description: String::new(),
+            x,
+            y,
+            series: Vec::new(),
+            markers: Vec::new(),
+            origin_lines: false,
+        }
+    }
+
     /// Whether any series or marker point is finite and inside the axes.
     pub fn has_visible_data(&self) -> bool {
         let inside = |&(x, y): &(f64, f64)| {

@@ -8,10 +8,12 @@
 //! figures are then drawn into SVG strings instead of canvases.
 
 pub mod demos;
+pub mod export;
 pub mod figure;
 pub mod format;
 pub mod params;
 pub mod render;
+pub mod schematic;
 pub mod spec;
 pub mod theme;
 

@@ -4,7 +4,7 @@
 //! and clamps them into the declared range. Anything else is replaced by the default, and a
 //! [`Notice`] says what happened, so the page can tell the user without blocking.
 
-use crate::spec::{DemoSpec, ParamSpec};
+use crate::spec::{DemoSpec, Kind, ParamSpec};
 use serde::Serialize;
 
 /// A non-blocking message about an input that was corrected.
@@ -65,9 +65,34 @@ impl Params {
     }
 }
 
-/// Parses `raw` as a finite decimal number and clamps it into `p`'s range.
+/// Parses `raw` for parameter `p`: a finite decimal clamped into range for sliders,
+/// `1`/`0`/`true`/`false`/`on`/`off` for toggles, an option key or index for choices.
 pub fn resolve_value(p: &ParamSpec, raw: &str) -> (f64, Option<Notice>) {
     let shown: String = raw.chars().take(40).filter(|c| !c.is_control()).collect();
+    match p.kind {
+        Kind::Toggle => {
+            return match raw.trim().to_ascii_lowercase().as_str() {
+                "1" | "true" | "on" | "yes" => (1.0, None),
+                "0" | "false" | "off" | "no" => (0.0, None),
+                _ => (p.default, Some(invalid(p, &shown, "is not on or off"))),
+            };
+        }
+        Kind::Choice => {
+            let t = raw.trim();
+            if let Some(i) = p.options.iter().position(|o| o.key == t) {
+                return (i as f64, None);
+            }
+            return match t.parse::<usize>() {
+                Ok(i) if i < p.options.len() => (i as f64, None),
+                _ => {
+                    let keys: Vec<&str> = p.options.iter().map(|o| o.key).collect();
+                    let why = format!("is not one of {}", keys.join(", "));
+                    (p.default, Some(invalid(p, &shown, &why)))
+                }
+            };
+        }
+        Kind::Slider => {}
+    }
     match parse_number(raw) {
         None => (
             p.default,
@@ -99,6 +124,16 @@ pub fn resolve_value(p: &ParamSpec, raw: &str) -> (f64, Option<Notice>) {
             )
         }
         Some(v) => (v, None),
+    }
+}
+
+fn invalid(p: &ParamSpec, shown: &str, why: &str) -> Notice {
+    Notice {
+        key: p.key.to_string(),
+        message: format!(
+            "{} ({}): \u{201c}{}\u{201d} {}; using the default.",
+            p.label, p.key, shown, why
+        ),
     }
 }
 
@@ -223,6 +258,25 @@ mod tests {
             n[0].message.contains("<script>alert(1)</script>"),
             "shown as text, escaped by the DOM"
         );
+    }
+
+    #[test]
+    fn toggles_and_choices_parse_keys_and_reject_the_rest() {
+        let t = ParamSpec::toggle("rk4", "RK4", true);
+        assert_eq!(resolve_value(&t, "off"), (0.0, None));
+        assert_eq!(resolve_value(&t, "1"), (1.0, None));
+        assert!(resolve_value(&t, "maybe").1.is_some());
+        let c = ParamSpec::choice(
+            "metric",
+            "metric",
+            &[("settling", "settling time"), ("rms", "RMS")],
+            0,
+        );
+        assert_eq!(resolve_value(&c, "rms"), (1.0, None));
+        assert_eq!(resolve_value(&c, "0"), (0.0, None));
+        let (v, n) = resolve_value(&c, "7");
+        assert_eq!(v, 0.0);
+        assert!(n.unwrap().message.contains("settling, rms"));
     }
 
     #[test]

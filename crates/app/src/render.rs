@@ -3,9 +3,9 @@
 //! Sizes are given in CSS pixels and multiplied by `scale` (the screen's
 //! `devicePixelRatio`) so text and lines look the same on every screen, and crisp.
 
-use crate::figure::{AxisScale, Dash, Figure, LineStyle, MarkerShape, Series};
+use crate::figure::{AxisScale, Dash, Figure, FigureKind, LineStyle, MarkerShape, Series};
 use crate::theme::Theme;
-use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::coord::ranged1d::{AsRangedCoord, Ranged, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -26,17 +26,78 @@ fn err<E: std::fmt::Debug>(e: E) -> RenderError {
     RenderError(format!("{e:?}"))
 }
 
-/// Draws `fig` onto `root`, filling it with the theme's background first.
+/// Where the data went on the backend: the plotting area in backend pixels and the
+/// ranges mapped onto it, so the page can turn a pointer position back into data values.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlotGeometry {
+    /// Left, top, right, bottom edges of the plotting area, in backend pixels.
+    pub area: (f64, f64, f64, f64),
+    /// x range shown.
+    pub x: (f64, f64),
+    /// y range shown.
+    pub y: (f64, f64),
+    /// Whether x is logarithmic.
+    pub x_log: bool,
+    /// Whether y is logarithmic.
+    pub y_log: bool,
+}
+
+impl PlotGeometry {
+    fn frac(v: f64, (lo, hi): (f64, f64), log: bool) -> f64 {
+        if log {
+            (v.ln() - lo.ln()) / (hi.ln() - lo.ln())
+        } else {
+            (v - lo) / (hi - lo)
+        }
+    }
+
+    fn unfrac(f: f64, (lo, hi): (f64, f64), log: bool) -> f64 {
+        if log {
+            (lo.ln() + f * (hi.ln() - lo.ln())).exp()
+        } else {
+            lo + f * (hi - lo)
+        }
+    }
+
+    /// Backend pixel of data point `(x, y)`.
+    pub fn to_pixel(&self, x: f64, y: f64) -> (f64, f64) {
+        let (l, t, r, b) = self.area;
+        (
+            l + Self::frac(x, self.x, self.x_log) * (r - l),
+            b - Self::frac(y, self.y, self.y_log) * (b - t),
+        )
+    }
+
+    /// Data point at backend pixel `(px, py)`, or `None` outside the plotting area.
+    pub fn to_data(&self, px: f64, py: f64) -> Option<(f64, f64)> {
+        let (l, t, r, b) = self.area;
+        if !(l..=r).contains(&px) || !(t..=b).contains(&py) || r <= l || b <= t {
+            return None;
+        }
+        Some((
+            Self::unfrac((px - l) / (r - l), self.x, self.x_log),
+            Self::unfrac((b - py) / (b - t), self.y, self.y_log),
+        ))
+    }
+}
+
+/// Draws `fig` onto `root`, filling it with the theme's background first; returns where
+/// the plotting area went.
 pub fn render<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     fig: &Figure,
     theme: &Theme,
     scale: f64,
-) -> Result<(), RenderError> {
+) -> Result<PlotGeometry, RenderError> {
     root.fill(&theme.background).map_err(err)?;
+    if fig.kind == FigureKind::Schematic {
+        let g = draw_schematic(root, fig, theme, scale)?;
+        root.present().map_err(err)?;
+        return Ok(g);
+    }
     let (x0, x1) = fig.x.range;
     let (y0, y1) = fig.y.range;
-    match (fig.x.scale, fig.y.scale) {
+    let area = match (fig.x.scale, fig.y.scale) {
         (AxisScale::Linear, AxisScale::Linear) => draw(root, fig, theme, scale, x0..x1, y0..y1),
         (AxisScale::Log, AxisScale::Linear) => {
             draw(root, fig, theme, scale, (x0..x1).log_scale(), y0..y1)
@@ -53,7 +114,56 @@ pub fn render<DB: DrawingBackend>(
             (y0..y1).log_scale(),
         ),
     }?;
-    root.present().map_err(err)
+    root.present().map_err(err)?;
+    Ok(PlotGeometry {
+        area,
+        x: fig.x.range,
+        y: fig.y.range,
+        x_log: fig.x.scale == AxisScale::Log,
+        y_log: fig.y.scale == AxisScale::Log,
+    })
+}
+
+/// A schematic: no axes, equal scales, the ranges widened to the canvas's shape.
+fn draw_schematic<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+) -> Result<PlotGeometry, RenderError> {
+    let (w, h) = root.dim_in_pixel();
+    let (w, h) = (f64::from(w.max(1)), f64::from(h.max(1)));
+    let (mut x, mut y) = (fig.x.range, fig.y.range);
+    let (sx, sy) = ((x.1 - x.0) / w, (y.1 - y.0) / h);
+    if sx > sy {
+        let pad = (sx * h - (y.1 - y.0)) / 2.0;
+        y = (y.0 - pad, y.1 + pad);
+    } else {
+        let pad = (sy * w - (x.1 - x.0)) / 2.0;
+        x = (x.0 - pad, x.1 + pad);
+    }
+    let mut chart = ChartBuilder::on(root)
+        .build_cartesian_2d(x.0..x.1, y.0..y.1)
+        .map_err(err)?;
+    let fitted = Figure {
+        x: crate::figure::Axis {
+            range: x,
+            ..fig.x.clone()
+        },
+        y: crate::figure::Axis {
+            range: y,
+            ..fig.y.clone()
+        },
+        ..fig.clone()
+    };
+    draw_lines_and_markers(&mut chart, &fitted, theme, scale)?;
+    Ok(PlotGeometry {
+        area: (0.0, 0.0, w, h),
+        x,
+        y,
+        x_log: false,
+        y_log: false,
+    })
 }
 
 fn px(v: f64, scale: f64) -> u32 {
@@ -95,7 +205,7 @@ fn draw<DB, X, Y>(
     scale: f64,
     xr: X,
     yr: Y,
-) -> Result<(), RenderError>
+) -> Result<(f64, f64, f64, f64), RenderError>
 where
     DB: DrawingBackend,
     X: AsRangedCoord<Value = f64>,
@@ -149,6 +259,38 @@ where
         }
     }
 
+    let legend = draw_lines_and_markers(&mut chart, fig, theme, scale)?;
+    if !legend.is_empty() {
+        draw_legend(
+            &chart.plotting_area().strip_coord_spec(),
+            &legend,
+            theme,
+            scale,
+        )?;
+    }
+    let (xs, ys) = chart.plotting_area().get_pixel_range();
+    Ok((
+        f64::from(xs.start),
+        f64::from(ys.start),
+        f64::from(xs.end),
+        f64::from(ys.end),
+    ))
+}
+
+/// Draws the series and markers of `fig`; returns the legend entries.
+fn draw_lines_and_markers<'f, DB, X, Y>(
+    chart: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
+    fig: &'f Figure,
+    theme: &Theme,
+    scale: f64,
+) -> Result<Vec<(&'f str, LineStyle)>, RenderError>
+where
+    DB: DrawingBackend,
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let fg = theme.foreground;
+    let font = |size: f64| ("sans-serif", size * scale).into_font().color(&fg);
     let mut legend: Vec<(&str, LineStyle)> = Vec::new();
     for s in &fig.series {
         let color = theme.color(s.style.color);
@@ -204,6 +346,14 @@ where
                     )))
                     .map_err(err)?;
             }
+            MarkerShape::Label => {
+                chart
+                    .draw_series(std::iter::once(
+                        EmptyElement::at((x, y)) + Text::new(m.label.clone(), (0, 0), font(14.0)),
+                    ))
+                    .map_err(err)?;
+                continue;
+            }
         }
         if !m.label.is_empty() {
             let off = (px(8.0, scale) as i32, -(px(16.0, scale) as i32));
@@ -215,15 +365,7 @@ where
         }
     }
 
-    if !legend.is_empty() {
-        draw_legend(
-            &chart.plotting_area().strip_coord_spec(),
-            &legend,
-            theme,
-            scale,
-        )?;
-    }
-    Ok(())
+    Ok(legend)
 }
 
 /// Draws the legend box in the upper-right corner of the plotting area.
@@ -298,9 +440,6 @@ mod tests {
 
     fn sample() -> Figure {
         Figure {
-            title: "test".into(),
-            x: Axis::linear("time t", "s", (0.0, 1.0)),
-            y: Axis::linear("x", "m", (-1.0, 1.0)),
             series: vec![Series {
                 label: "x(t)".into(),
                 points: vec![(0.0, 0.0), (0.5, f64::NAN), (0.6, 1e300), (1.0, -0.5)],
@@ -313,6 +452,11 @@ mod tests {
                 color: 1,
             }],
             origin_lines: true,
+            ..Figure::plot(
+                "test",
+                Axis::linear("time t", "s", (0.0, 1.0)),
+                Axis::linear("x", "m", (-1.0, 1.0)),
+            )
         }
     }
 
@@ -329,6 +473,21 @@ mod tests {
             svg.matches("<polyline").count() >= 2,
             "line split at the NaN"
         );
+    }
+
+    #[test]
+    fn geometry_round_trips_pixels_and_data() {
+        let mut svg = String::new();
+        let g = {
+            let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+            render(&root, &sample(), &Theme::LIGHT, 1.0).unwrap()
+        };
+        let (l, t, r, b) = g.area;
+        assert!(l > 20.0 && r < 640.0 && t > 10.0 && b < 360.0 && l < r && t < b);
+        let (px, py) = g.to_pixel(0.25, 0.5);
+        let (x, y) = g.to_data(px, py).unwrap();
+        assert!((x - 0.25).abs() < 1e-12 && (y - 0.5).abs() < 1e-12);
+        assert!(g.to_data(0.0, 0.0).is_none());
     }
 
     #[test]

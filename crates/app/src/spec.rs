@@ -16,7 +16,29 @@ pub enum Scale {
     Log,
 }
 
-/// One numeric parameter, shown as a slider with a paired number box.
+/// What control a parameter gets.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Kind {
+    /// A range slider with a paired number box.
+    Slider,
+    /// A checkbox; the value is 0 or 1 (URL: `1`/`0`, `true`/`false`, `on`/`off`).
+    Toggle,
+    /// A drop-down list; the value is the option's index (URL: the option's key or index).
+    Choice,
+}
+
+/// One option of a [`Kind::Choice`] parameter.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ChoiceOption {
+    /// URL value, e.g. `"settling_time"`.
+    pub key: &'static str,
+    /// Human label.
+    pub label: &'static str,
+}
+
+/// One parameter: a slider with a paired number box, a checkbox or a drop-down list.
+/// Values are always numbers (0/1 for toggles, the option index for choices).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ParamSpec {
     /// URL key, e.g. `"zeta"`.
@@ -37,11 +59,15 @@ pub struct ParamSpec {
     pub default: f64,
     /// Slider mapping.
     pub scale: Scale,
+    /// Which control.
+    pub kind: Kind,
+    /// Options of a choice (empty otherwise).
+    pub options: Vec<ChoiceOption>,
 }
 
 impl ParamSpec {
     /// A linear slider.
-    pub const fn linear(
+    pub fn linear(
         key: &'static str,
         label: &'static str,
         symbol: &'static str,
@@ -59,11 +85,13 @@ impl ParamSpec {
             step: range.2,
             default,
             scale: Scale::Linear,
+            kind: Kind::Slider,
+            options: Vec::new(),
         }
     }
 
     /// A logarithmic slider.
-    pub const fn log(
+    pub fn log(
         key: &'static str,
         label: &'static str,
         symbol: &'static str,
@@ -72,15 +100,48 @@ impl ParamSpec {
         default: f64,
     ) -> Self {
         Self {
-            key,
-            label,
-            symbol,
-            unit,
-            min: range.0,
-            max: range.1,
-            step: range.2,
-            default,
             scale: Scale::Log,
+            ..Self::linear(key, label, symbol, unit, range, default)
+        }
+    }
+
+    /// A checkbox, on (1) or off (0) by default.
+    pub fn toggle(key: &'static str, label: &'static str, on: bool) -> Self {
+        Self {
+            kind: Kind::Toggle,
+            ..Self::linear(
+                key,
+                label,
+                "",
+                "",
+                (0.0, 1.0, 1.0),
+                if on { 1.0 } else { 0.0 },
+            )
+        }
+    }
+
+    /// A drop-down list of `(key, label)` options; `default` is an index.
+    pub fn choice(
+        key: &'static str,
+        label: &'static str,
+        options: &[(&'static str, &'static str)],
+        default: usize,
+    ) -> Self {
+        let n = options.len().max(1);
+        Self {
+            kind: Kind::Choice,
+            options: options
+                .iter()
+                .map(|&(key, label)| ChoiceOption { key, label })
+                .collect(),
+            ..Self::linear(
+                key,
+                label,
+                "",
+                "",
+                (0.0, (n - 1) as f64, 1.0),
+                default.min(n - 1) as f64,
+            )
         }
     }
 }
@@ -107,6 +168,29 @@ pub struct PlotSpec {
     pub aspect: f64,
 }
 
+/// A named set of parameter values, applied with one click (e.g. a textbook configuration).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Preset {
+    /// Button text.
+    pub label: &'static str,
+    /// Values to set; parameters not named keep their value.
+    pub values: Vec<(&'static str, f64)>,
+}
+
+/// A reference table shown with the demo; the row whose key equals the current value of
+/// the readout `highlight_readout` is highlighted.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Table {
+    /// Caption.
+    pub caption: &'static str,
+    /// Column headings.
+    pub columns: Vec<&'static str>,
+    /// Rows: a key (matched against the readout) and the cells.
+    pub rows: Vec<(&'static str, Vec<&'static str>)>,
+    /// The readout whose value selects the highlighted row.
+    pub highlight_readout: &'static str,
+}
+
 /// Everything the front end needs to build a demo's controls.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DemoSpec {
@@ -124,6 +208,12 @@ pub struct DemoSpec {
     pub readouts: Vec<ReadoutSpec>,
     /// Plots in display order.
     pub plots: Vec<PlotSpec>,
+    /// One-click configurations.
+    pub presets: Vec<Preset>,
+    /// An optional reference table.
+    pub table: Option<Table>,
+    /// Whether the demo draws an animated schematic ([`crate::demos::Demo::schematic`]).
+    pub schematic: bool,
 }
 
 impl DemoSpec {

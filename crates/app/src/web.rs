@@ -3,9 +3,10 @@
 //! page, which then starts a fresh session.
 
 use crate::canvas::Canvas;
-use crate::demos::{self, Demo};
+use crate::demos::{self, Demo, Frame};
+use crate::export;
 use crate::params::{resolve_query, Notice, Params};
-use crate::render::render;
+use crate::render::{render, PlotGeometry};
 use crate::spec::DemoSpec;
 use crate::theme::Theme;
 use plotters::prelude::IntoDrawingArea;
@@ -64,13 +65,44 @@ struct SetResult {
     notice: Option<Notice>,
 }
 
-/// One open demo: its parameters, canvases and last readouts.
+/// What [`Session::update`] returns to the page.
+#[derive(Serialize)]
+struct UpdateResult<'a> {
+    readouts: &'a [crate::demos::Readout],
+    /// `[{key, text}]`: each plot's text alternative.
+    descriptions: Vec<Description<'a>>,
+    /// `[start, end]` of the animation in s, if the demo animates.
+    time_span: Option<(f64, f64)>,
+}
+
+#[derive(Serialize)]
+struct Description<'a> {
+    key: &'static str,
+    text: &'a str,
+}
+
+/// One open demo: its parameters, canvases, last figures and where they were drawn.
 #[wasm_bindgen]
 pub struct Session {
     demo: Box<dyn Demo>,
     spec: DemoSpec,
     params: Params,
     canvases: Vec<Option<HtmlCanvasElement>>,
+    schematic_canvas: Option<HtmlCanvasElement>,
+    frame: Option<Frame>,
+    geometry: Vec<Option<PlotGeometry>>,
+}
+
+fn theme(dark: bool) -> Theme {
+    if dark {
+        Theme::DARK
+    } else {
+        Theme::LIGHT
+    }
+}
+
+fn js_err(e: impl std::fmt::Display) -> JsError {
+    JsError::new(&e.to_string())
 }
 
 #[wasm_bindgen]
@@ -82,16 +114,19 @@ impl Session {
             demos::create(id).ok_or_else(|| JsError::new(&format!("unknown demo {id:?}")))?;
         let spec = demo.spec();
         let params = Params::defaults(&spec);
-        let canvases = vec![None; spec.plots.len()];
+        let n = spec.plots.len();
         Ok(Session {
             demo,
             spec,
             params,
-            canvases,
+            canvases: vec![None; n],
+            schematic_canvas: None,
+            frame: None,
+            geometry: vec![None; n],
         })
     }
 
-    /// The demo's declaration: `{id, title, summary, equation_mathml, params, readouts, plots}`.
+    /// The demo's declaration (see [`DemoSpec`]).
     pub fn spec(&self) -> Result<JsValue, JsError> {
         to_js(&self.spec)
     }
@@ -104,8 +139,8 @@ impl Session {
         to_js(&notices)
     }
 
-    /// Sets one parameter from text (a slider or number box); returns `{value, notice}`,
-    /// or `undefined` for an unknown key.
+    /// Sets one parameter from text (a slider, number box, checkbox or list); returns
+    /// `{value, notice}`, or `undefined` for an unknown key.
     pub fn set(&mut self, key: &str, raw: &str) -> Result<JsValue, JsError> {
         match self.params.set_raw(&self.spec, key, raw) {
             Some((value, notice)) => to_js(&SetResult { value, notice }),
@@ -119,8 +154,12 @@ impl Session {
         to_js(&pairs)
     }
 
-    /// Gives the canvas for plot `key`; returns whether the key exists.
+    /// Gives the canvas for plot `key` (or `"schematic"`); returns whether the key exists.
     pub fn attach(&mut self, key: &str, canvas: HtmlCanvasElement) -> bool {
+        if key == "schematic" && self.spec.schematic {
+            self.schematic_canvas = Some(canvas);
+            return true;
+        }
         match self.spec.plots.iter().position(|p| p.key == key) {
             Some(i) => {
                 if let Some(slot) = self.canvases.get_mut(i) {
@@ -132,24 +171,129 @@ impl Session {
         }
     }
 
-    /// Recomputes, draws every attached canvas (sized by the page at `scale` =
-    /// devicePixelRatio) and returns the readouts `[{key, text, data_value}]`.
+    /// Recomputes, draws every attached plot canvas (sized by the page at `scale` =
+    /// devicePixelRatio) and returns `{readouts, descriptions, time_span}`.
     pub fn update(&mut self, scale: f64, dark: bool) -> Result<JsValue, JsError> {
         let frame = self.demo.update(&self.params);
-        let theme = if dark { Theme::DARK } else { Theme::LIGHT };
         let scale = if scale.is_finite() {
             scale.clamp(0.5, 4.0)
         } else {
             1.0
         };
-        for (canvas, fig) in self.canvases.iter().zip(&frame.figures) {
+        for (i, (canvas, fig)) in self.canvases.iter().zip(&frame.figures).enumerate() {
             let Some(canvas) = canvas else { continue };
             let Some(backend) = Canvas::new(canvas) else {
                 continue;
             };
-            let root = backend.into_drawing_area();
-            render(&root, fig, &theme, scale).map_err(|e| JsError::new(&e.to_string()))?;
+            let geo =
+                render(&backend.into_drawing_area(), fig, &theme(dark), scale).map_err(js_err)?;
+            if let Some(slot) = self.geometry.get_mut(i) {
+                *slot = Some(geo);
+            }
         }
-        to_js(&frame.readouts)
+        let descriptions = self
+            .spec
+            .plots
+            .iter()
+            .zip(&frame.figures)
+            .map(|(p, f)| Description {
+                key: p.key,
+                text: &f.description,
+            })
+            .collect();
+        let out = to_js(&UpdateResult {
+            readouts: &frame.readouts,
+            descriptions,
+            time_span: frame.time_span,
+        });
+        self.frame = Some(frame);
+        out
+    }
+
+    /// Draws the schematic at time `t` [s]; returns its text alternative.
+    #[wasm_bindgen(js_name = drawSchematic)]
+    pub fn draw_schematic(&self, t: f64, scale: f64, dark: bool) -> Result<String, JsError> {
+        let (Some(canvas), Some(fig)) = (
+            &self.schematic_canvas,
+            self.demo
+                .schematic(&self.params, if t.is_finite() { t } else { 0.0 }),
+        ) else {
+            return Ok(String::new());
+        };
+        if let Some(backend) = Canvas::new(canvas) {
+            let scale = if scale.is_finite() {
+                scale.clamp(0.5, 4.0)
+            } else {
+                1.0
+            };
+            render(&backend.into_drawing_area(), &fig, &theme(dark), scale).map_err(js_err)?;
+        }
+        Ok(fig.description)
+    }
+
+    fn figure(&self, key: &str) -> Option<(usize, &crate::figure::Figure)> {
+        let i = self.spec.plots.iter().position(|p| p.key == key)?;
+        Some((i, self.frame.as_ref()?.figures.get(i)?))
+    }
+
+    /// Backend-pixel x of time `t` on plot `key`, if its x axis is time and `t` is in range.
+    #[wasm_bindgen(js_name = timeToPixel)]
+    pub fn time_to_pixel(&self, key: &str, t: f64) -> Option<f64> {
+        let (i, fig) = self.figure(key)?;
+        let geo = self.geometry.get(i).copied().flatten()?;
+        (fig.x.unit == "s" && t >= fig.x.range.0 && t <= fig.x.range.1)
+            .then(|| geo.to_pixel(t, fig.y.range.0).0)
+    }
+
+    /// The values under the pointer at backend pixel `(px, py)` of plot `key`:
+    /// `{x_text, y_text, points: [{px, py, color, text}]}`, or `undefined` outside the plot.
+    pub fn probe(&self, key: &str, px: f64, py: f64) -> Result<JsValue, JsError> {
+        let Some((i, fig)) = self.figure(key) else {
+            return Ok(JsValue::UNDEFINED);
+        };
+        let Some(geo) = self.geometry.get(i).copied().flatten() else {
+            return Ok(JsValue::UNDEFINED);
+        };
+        match export::probe(fig, &geo, px, py) {
+            Some(p) => to_js(&p),
+            None => Ok(JsValue::UNDEFINED),
+        }
+    }
+
+    /// CSV of plot `key`'s data, with the parameters and units in a header.
+    pub fn csv(&self, key: &str) -> Result<String, JsError> {
+        let (_, fig) = self.figure(key).ok_or_else(|| js_err("no such plot"))?;
+        let params: Vec<(&str, f64, &str)> = self
+            .params
+            .pairs()
+            .map(|(k, v)| (k, v, self.spec.param(k).map(|p| p.unit).unwrap_or("")))
+            .collect();
+        Ok(export::csv(self.spec.id, &params, fig))
+    }
+
+    /// SVG document of plot `key` at `w × h` px.
+    pub fn svg(&self, key: &str, w: u32, h: u32, dark: bool) -> Result<String, JsError> {
+        let (_, fig) = self.figure(key).ok_or_else(|| js_err("no such plot"))?;
+        export::svg(fig, w, h, &theme(dark)).map_err(js_err)
+    }
+
+    /// Draws plot `key` onto another canvas (e.g. a 2× canvas for PNG export).
+    #[wasm_bindgen(js_name = renderTo)]
+    pub fn render_to(
+        &self,
+        key: &str,
+        canvas: HtmlCanvasElement,
+        scale: f64,
+        dark: bool,
+    ) -> Result<(), JsError> {
+        let (_, fig) = self.figure(key).ok_or_else(|| js_err("no such plot"))?;
+        let backend = Canvas::new(&canvas).ok_or_else(|| js_err("no 2D context"))?;
+        let scale = if scale.is_finite() {
+            scale.clamp(0.5, 8.0)
+        } else {
+            1.0
+        };
+        render(&backend.into_drawing_area(), fig, &theme(dark), scale).map_err(js_err)?;
+        Ok(())
     }
 }

@@ -1,6 +1,7 @@
 //! Browser tests of the wasm boundary (run by `wasm-pack test --headless --chrome crates/app`):
 //! every demo draws real pixels onto a canvas, and hostile input is answered with notices.
 #![cfg(target_arch = "wasm32")]
+#![allow(clippy::unwrap_used)]
 
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;

@@ -55,6 +55,8 @@ pub struct Frame {
     pub readouts: Vec<Readout>,
     /// Figures in the order of the spec's plots.
     pub figures: Vec<Figure>,
+    /// Time span \[s\] of the animation and its scrub control, for demos with a schematic.
+    pub time_span: Option<(f64, f64)>,
 }
 
 /// A live demo.
@@ -63,6 +65,10 @@ pub trait Demo {
     fn spec(&self) -> DemoSpec;
     /// Recomputes for these (validated) parameter values.
     fn update(&mut self, params: &Params) -> Frame;
+    /// The schematic at time `t` \[s\] (for demos whose spec sets `schematic`).
+    fn schematic(&self, _params: &Params, _t: f64) -> Option<Figure> {
+        None
+    }
 }
 
 /// Ids of every demo, in menu order.
@@ -109,6 +115,33 @@ mod tests {
             assert_eq!(frame.figures.len(), spec.plots.len());
             for f in &frame.figures {
                 assert!(f.has_visible_data(), "{id}: {} is empty", f.title);
+                assert!(
+                    !f.description.is_empty(),
+                    "{id}: {} has no text alternative",
+                    f.title
+                );
+            }
+            if spec.schematic {
+                let (t0, t1) = frame.time_span.expect("animated demos give a time span");
+                assert!(t0 < t1);
+                for t in [t0, (t0 + t1) / 2.0, t1] {
+                    let fig = demo
+                        .schematic(&Params::defaults(&spec), t)
+                        .expect("schematic");
+                    assert!(fig.has_visible_data());
+                }
+            }
+            for preset in &spec.presets {
+                for (k, v) in &preset.values {
+                    let p = spec
+                        .param(k)
+                        .unwrap_or_else(|| panic!("{id}: preset names {k}"));
+                    assert!(
+                        (p.min..=p.max).contains(v),
+                        "{id}: preset {} sets {k} out of range",
+                        preset.label
+                    );
+                }
             }
             for r in &frame.readouts {
                 assert!(!r.data_value.contains("NaN") && !r.data_value.contains("inf"));

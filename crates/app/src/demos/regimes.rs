@@ -1,12 +1,15 @@
 //! `regimes`: free response of `x'' + 2ζωₙ·x' + ωₙ²·x = 0` in every damping regime, with
-//! the two poles in the s-plane.
+//! the two poles in the s-plane, a table of the regimes and an animated mass on a spring.
 
 use super::{Demo, Frame, Readout};
 use crate::figure::{
     finite_extent, padded, Axis, Dash, Figure, LineStyle, Marker, MarkerShape, Series,
 };
+use crate::format::si;
 use crate::params::Params;
-use crate::spec::{DemoSpec, ParamSpec, PlotSpec, ReadoutSpec};
+use crate::schematic::{mass_spring_damper, MassLabels};
+use crate::spec::{DemoSpec, ParamSpec, PlotSpec, Preset, ReadoutSpec, Table};
+use zeta_solver::metrics::{free::FreeMetrics, SettlingBand};
 use zeta_solver::{FreeResponse, Regime, SecondOrder};
 
 /// Samples per curve: smooth at any canvas width up to ~1200 CSS px.
@@ -22,6 +25,16 @@ const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mover><mi>x</mi><mo>¨</mo></mover><mo>+</mo><mn>2</mn><mi>ζ</mi><msub><mi>ω</mi><mi>n</mi></msub>\
 <mover><mi>x</mi><mo>˙</mo></mover><mo>+</mo><msubsup><mi>ω</mi><mi>n</mi><mn>2</mn></msubsup><mi>x</mi>\
 <mo>=</mo><mn>0</mn></mrow></math>";
+
+/// The system and initial state the parameters describe.
+fn model(params: &Params) -> Option<(SecondOrder, f64, f64)> {
+    let sys = SecondOrder::from_natural(params.get("wn"), params.get("zeta")).ok()?;
+    Some((sys, params.get("x0"), params.get("v0")))
+}
+
+fn time_window(sys: &SecondOrder) -> f64 {
+    PERIODS * std::f64::consts::TAU / sys.natural_frequency().unwrap_or(1.0)
+}
 
 impl Demo for Regimes {
     fn spec(&self) -> DemoSpec {
@@ -105,22 +118,93 @@ impl Demo for Regimes {
                     aspect: 1.25,
                 },
             ],
+            presets: [
+                ("Undamped ζ = 0", 0.0),
+                ("Underdamped ζ = 0.2", 0.2),
+                ("Critically damped ζ = 1", 1.0),
+                ("Overdamped ζ = 2", 2.0),
+                ("Negative damping ζ = −0.1", -0.1),
+            ]
+            .into_iter()
+            .map(|(label, z)| Preset {
+                label,
+                values: vec![("zeta", z), ("x0", 0.06), ("v0", 0.0)],
+            })
+            .collect(),
+            table: Some(Table {
+                caption: "The damping regimes",
+                columns: vec![
+                    "regime",
+                    "condition",
+                    "roots s₁, s₂",
+                    "behaviour",
+                    "engineering examples",
+                ],
+                rows: vec![
+                    (
+                        "undamped",
+                        vec![
+                            "Undamped",
+                            "ζ = 0",
+                            "±iωₙ, on the imaginary axis",
+                            "oscillates forever at ωₙ",
+                            "ideal pendulum, LC tank circuit",
+                        ],
+                    ),
+                    (
+                        "underdamped",
+                        vec![
+                            "Underdamped",
+                            "0 < ζ < 1",
+                            "−ζωₙ ± iω_d, complex pair",
+                            "decaying oscillation at ω_d",
+                            "car suspension (ζ ≈ 0.2–0.7), guitar string",
+                        ],
+                    ),
+                    (
+                        "critically damped",
+                        vec![
+                            "Critically damped",
+                            "ζ = 1",
+                            "−ωₙ, double real root",
+                            "fastest return without oscillating",
+                            "door closer, analogue meter needle",
+                        ],
+                    ),
+                    (
+                        "overdamped",
+                        vec![
+                            "Overdamped",
+                            "ζ > 1",
+                            "two negative real roots",
+                            "slow return, no oscillation",
+                            "heavy hydraulic damper, thermometer",
+                        ],
+                    ),
+                    (
+                        "negatively damped",
+                        vec![
+                            "Negatively damped",
+                            "ζ < 0",
+                            "right half-plane",
+                            "growing oscillation",
+                            "flutter (Tacoma Narrows), squealing brakes",
+                        ],
+                    ),
+                ],
+                highlight_readout: "regime",
+            }),
+            schematic: true,
         }
     }
 
     fn update(&mut self, params: &Params) -> Frame {
-        let (wn, zeta, x0, v0) = (
-            params.get("wn"),
-            params.get("zeta"),
-            params.get("x0"),
-            params.get("v0"),
-        );
-        match SecondOrder::from_natural(wn, zeta) {
-            Ok(sys) => frame(&sys, x0, v0),
-            // Unreachable with validated parameters; still, never panic: show the message.
-            Err(e) => Frame {
+        match model(params) {
+            Some((sys, x0, v0)) => frame(&sys, x0, v0),
+            // Unreachable with validated parameters; still, never panic.
+            None => Frame {
                 readouts: vec![
-                    Readout::text("regime", e.to_string()),
+                    Readout::text("regime", "invalid parameters"),
                     Readout::number("wn", None, "rad/s", 4),
                     Readout::number("zeta", None, "", 3),
                     Readout::number("wd", None, "rad/s", 4),
@@ -128,20 +212,40 @@ impl Demo for Regimes {
                     Readout::number("pole_im", None, "rad/s", 4),
                 ],
                 figures: Vec::new(),
+                time_span: None,
             },
         }
+    }
+
+    fn schematic(&self, params: &Params, t: f64) -> Option<Figure> {
+        let (sys, x0, v0) = model(params)?;
+        let resp = FreeResponse::new(sys, x0, v0);
+        let wn = sys.natural_frequency().unwrap_or(1.0);
+        let reach = x0.abs().max(v0.abs() / wn).max(1e-9);
+        let x = resp.displacement(t);
+        let labels = MassLabels {
+            mass: "m",
+            spring: "k",
+            damper: "c",
+            base: "",
+        };
+        let description = format!(
+            "Mass on a spring and damper at t = {}: displaced {} from rest.",
+            si(t, "s", 3),
+            si(x, "m", 3)
+        );
+        Some(mass_spring_damper(x / reach, 0.0, &labels, description))
     }
 }
 
 fn frame(sys: &SecondOrder, x0: f64, v0: f64) -> Frame {
     let wn = sys.natural_frequency().unwrap_or(0.0);
-    let zeta = sys.damping_ratio();
     let regime = sys.regime();
     let poles = sys.poles();
     let readouts = vec![
         Readout::text("regime", regime.key()),
         Readout::number("wn", sys.natural_frequency(), "rad/s", 4),
-        Readout::number("zeta", zeta, "", 3),
+        Readout::number("zeta", sys.damping_ratio(), "", 3),
         Readout::number("wd", sys.damped_frequency(), "rad/s", 4),
         Readout::number("pole_re", Some(poles[0].re), "1/s", 4),
         Readout::number("pole_im", Some(poles[0].im), "rad/s", 4),
@@ -149,12 +253,54 @@ fn frame(sys: &SecondOrder, x0: f64, v0: f64) -> Frame {
     Frame {
         readouts,
         figures: vec![response_figure(sys, regime, x0, v0), pole_figure(sys, wn)],
+        time_span: Some((0.0, time_window(sys))),
+    }
+}
+
+/// The response described in words, for screen readers and the plot's text alternative.
+fn describe(sys: &SecondOrder, regime: Regime, x0: f64, v0: f64) -> String {
+    let band = SettlingBand::FREE_DEFAULT;
+    match FreeMetrics::exact(sys, x0, v0, band) {
+        Some(m) => {
+            let settle = m
+                .settling_time
+                .map(|t| format!("stays within 5 % of rest after {}", si(t, "s", 3)))
+                .unwrap_or_else(|| "does not settle".to_string());
+            let swings = match m.zero_crossings {
+                0 => "does not cross equilibrium".to_string(),
+                1 => "crosses equilibrium once".to_string(),
+                n => format!("crosses equilibrium {n} times"),
+            };
+            format!(
+                "{}: {}, {}, peak rebound {}.",
+                regime.key(),
+                swings,
+                settle,
+                si(100.0 * m.peak_rebound, "%", 3)
+            )
+        }
+        None => match regime {
+            Regime::Undamped => format!(
+                "undamped: oscillates forever with amplitude {} at {}.",
+                si(
+                    (x0 * x0 + (v0 / sys.natural_frequency().unwrap_or(1.0)).powi(2)).sqrt(),
+                    "m",
+                    3
+                ),
+                si(sys.natural_frequency().unwrap_or(0.0), "rad/s", 3)
+            ),
+            Regime::NegativelyDamped => format!(
+                "negatively damped: the response grows without bound, by a factor e every {}.",
+                si(1.0 / (-sys.alpha()).max(1e-300), "s", 3)
+            ),
+            _ => format!("{}: starts at rest at equilibrium.", regime.key()),
+        },
     }
 }
 
 fn response_figure(sys: &SecondOrder, regime: Regime, x0: f64, v0: f64) -> Figure {
     let wn = sys.natural_frequency().unwrap_or(1.0);
-    let t_end = PERIODS * std::f64::consts::TAU / wn;
+    let t_end = time_window(sys);
     let resp = FreeResponse::new(*sys, x0, v0);
     let points: Vec<(f64, f64)> = (0..SAMPLES)
         .map(|i| {
@@ -167,8 +313,8 @@ fn response_figure(sys: &SecondOrder, regime: Regime, x0: f64, v0: f64) -> Figur
     if let Some(wd) = sys.damped_frequency() {
         let alpha = sys.alpha();
         let amp = (x0 * x0 + ((v0 + alpha * x0) / wd).powi(2)).sqrt();
-        for (sign, label) in [(1.0, "envelope ±A·e^(−ζωₙ t)"), (-1.0, "")] {
-            let env: Vec<(f64, f64)> = points
+        for (sign, label) in [(1.0, "envelope ±A·e^(−ζωₙt)"), (-1.0, "")] {
+            let env = points
                 .iter()
                 .map(|&(t, _)| (t, sign * amp * (-alpha * t).exp()))
                 .collect();
@@ -183,26 +329,25 @@ fn response_figure(sys: &SecondOrder, regime: Regime, x0: f64, v0: f64) -> Figur
             });
         }
     }
-    let scale_floor = x0.abs().max(v0.abs() / wn).max(1e-6);
+    let floor = x0.abs().max(v0.abs() / wn).max(1e-6);
     let envelope_values = series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
-    let (lo, hi) = finite_extent(points.iter().map(|p| p.1).chain(envelope_values))
-        .unwrap_or((-scale_floor, scale_floor));
-    let y = padded(
-        (lo.min(-0.2 * scale_floor), hi.max(0.2 * scale_floor)),
-        0.08,
-    );
+    let (lo, hi) =
+        finite_extent(points.iter().map(|p| p.1).chain(envelope_values)).unwrap_or((-floor, floor));
+    let y = padded((lo.min(-0.2 * floor), hi.max(0.2 * floor)), 0.08);
     series.push(Series {
         label: format!("x(t), {}", regime.key()),
         points,
         style: LineStyle::solid(0, 2.5),
     });
     Figure {
-        title: "Free response x(t)".into(),
-        x: Axis::linear("time t", "s", (0.0, t_end)),
-        y: Axis::linear("displacement x", "m", y),
+        description: describe(sys, regime, x0, v0),
         series,
-        markers: Vec::new(),
         origin_lines: true,
+        ..Figure::plot(
+            "Free response x(t)",
+            Axis::linear("time t", "s", (0.0, t_end)),
+            Axis::linear("displacement x", "m", y),
+        )
     }
 }
 
@@ -226,11 +371,23 @@ fn pole_figure(sys: &SecondOrder, wn: f64) -> Figure {
             color: 1,
         })
         .collect();
+    let side = if poles[0].re > 0.0 {
+        "right (unstable)"
+    } else {
+        "left (stable)"
+    };
+    let description = format!(
+        "Poles at {} {} {}i and {} {} {}i 1/s, in the {} half-plane.",
+        si(poles[0].re, "", 4),
+        if poles[0].im < 0.0 { "−" } else { "+" },
+        si(poles[0].im.abs(), "", 4),
+        si(poles[1].re, "", 4),
+        if poles[1].im < 0.0 { "−" } else { "+" },
+        si(poles[1].im.abs(), "", 4),
+        side
+    );
     Figure {
-        title: "Poles in the s-plane".into(),
-        // Wider than tall, like the canvas, so the circle |s| = ωₙ looks round.
-        x: Axis::linear("real part Re s", "1/s", (-1.35 * r, 1.35 * r)),
-        y: Axis::linear("imaginary part Im s", "rad/s", (-r, r)),
+        description,
         series: vec![Series {
             label: "|s| = ωₙ".into(),
             points: circle,
@@ -242,6 +399,12 @@ fn pole_figure(sys: &SecondOrder, wn: f64) -> Figure {
         }],
         markers,
         origin_lines: true,
+        ..Figure::plot(
+            "Poles in the s-plane",
+            // Wider than tall, like the canvas, so the circle |s| = ωₙ looks round.
+            Axis::linear("real part Re s", "1/s", (-1.35 * r, 1.35 * r)),
+            Axis::linear("imaginary part Im s", "rad/s", (-r, r)),
+        )
     }
 }
 
@@ -288,11 +451,39 @@ mod tests {
             let f = run(&format!("zeta={z}"));
             assert_eq!(value(&f, "regime"), name);
             assert!(f.figures.iter().all(|fig| fig.has_visible_data()));
+            assert!(
+                f.figures[0].description.starts_with(name),
+                "{}",
+                f.figures[0].description
+            );
         }
         assert_eq!(
             value(&run("zeta=2"), "wd"),
             "",
             "no damped frequency when overdamped"
         );
+    }
+
+    #[test]
+    fn the_text_alternative_follows_the_response() {
+        let light = run("zeta=0.1").figures[0].description.clone();
+        let heavy = run("zeta=0.6").figures[0].description.clone();
+        assert_ne!(light, heavy);
+        assert!(
+            light.contains("crosses equilibrium") && light.contains("within 5 %"),
+            "{light}"
+        );
+        // ζ = 0.6 from rest: rebound e^{−πζ/√(1−ζ²)} = 9.48 %.
+        assert!(heavy.contains("9.48 %"), "{heavy}");
+    }
+
+    #[test]
+    fn every_table_row_matches_a_regime_key() {
+        let spec = Regimes.spec();
+        let keys: Vec<&str> = Regime::ALL.iter().map(|r| r.key()).collect();
+        for (key, cells) in &spec.table.unwrap().rows {
+            assert!(keys.contains(key));
+            assert_eq!(cells.len(), 5);
+        }
     }
 }
