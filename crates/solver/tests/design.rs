@@ -243,3 +243,273 @@ fn iso_zeta_lines_pass_through_the_grid_points_of_that_damping() {
         assert!((z - 0.7).abs() < 1e-14);
     }
 }
+
+// ---------------------------------------------------------------- Pareto front
+
+use zeta_solver::design::pareto::{dominates, pareto_front};
+use zeta_solver::design::rng::Rng;
+
+#[test]
+fn pareto_front_is_mutually_non_dominated_and_dominates_everything_else() {
+    let mut rng = Rng::new(11);
+    for round in 0..20 {
+        let n = 50 + 37 * round;
+        let mut f1: Vec<f64> = (0..n).map(|_| rng.uniform()).collect();
+        // A quarter of the second objective on a coarse grid forces ties.
+        let mut f2: Vec<f64> = (0..n)
+            .map(|i| {
+                if i % 4 == 0 {
+                    (rng.uniform() * 5.0).floor()
+                } else {
+                    rng.uniform() * 5.0
+                }
+            })
+            .collect();
+        f1[3] = f64::NAN;
+        f2[5] = f64::INFINITY;
+        let front = pareto_front(&f1, &f2);
+        assert!(!front.contains(&3) && !front.contains(&5));
+        for w in front.windows(2) {
+            assert!(
+                f1[w[0]] <= f1[w[1]] && f2[w[0]] >= f2[w[1]],
+                "not ordered along the front"
+            );
+        }
+        for &a in &front {
+            for &b in &front {
+                assert!(
+                    !dominates(f1[a], f2[a], f1[b], f2[b]),
+                    "{a} dominates {b} on the front"
+                );
+            }
+        }
+        for i in (0..n).filter(|i| !front.contains(i) && f1[*i].is_finite() && f2[*i].is_finite()) {
+            assert!(
+                front.iter().any(|&p| dominates(f1[p], f2[p], f1[i], f2[i])),
+                "{i} is off the front but not dominated"
+            );
+        }
+    }
+}
+
+// ---------------------------------------------------------------- sensitivity
+
+use zeta_solver::design::sensitivity::{spread, Components, Quantity, Varied};
+
+#[test]
+fn sensitivity_ranges_contain_interior_samples_and_equal_the_corners() {
+    let designs = [
+        Components::mechanical_for_zeta(300.0, 24_000.0, 0.7),
+        Components::mechanical_for_zeta(300.0, 24_000.0, 1.0),
+        Components::Electrical {
+            l: 0.5,
+            r: 4.0,
+            cap: 0.02,
+        },
+    ];
+    let x = 0.1;
+    let mut rng = Rng::new(3);
+    for d in &designs {
+        for q in Quantity::ALL {
+            for varied in [Varied::One(0), Varied::One(1), Varied::One(2), Varied::All] {
+                let s = spread(d, q, varied, x).unwrap();
+                let on = |p: usize| varied == Varied::All || varied == Varied::One(p);
+                // Interior samples stay inside [min, max] (1e-12 relative for rounding).
+                for _ in 0..300 {
+                    let mut v = d.values();
+                    for (p, vp) in v.iter_mut().enumerate() {
+                        if on(p) {
+                            *vp *= 1.0 + x * (2.0 * rng.uniform() - 1.0);
+                        }
+                    }
+                    let val = q.of(&d.with_values(v).system().unwrap()).unwrap();
+                    assert!(
+                        val >= s.min * (1.0 - 1e-12) && val <= s.max * (1.0 + 1e-12),
+                        "{q:?} {varied:?}"
+                    );
+                }
+                // The extremes are the corners predicted by the signs of the exponents.
+                let corner = |dir: f64| {
+                    let mut v = d.values();
+                    for (p, vp) in v.iter_mut().enumerate() {
+                        let e = q.log_sensitivity(d, p).unwrap();
+                        if on(p) && e != 0.0 {
+                            *vp *= 1.0 + dir * e.signum() * x;
+                        }
+                    }
+                    q.of(&d.with_values(v).system().unwrap()).unwrap()
+                };
+                assert!(
+                    (corner(-1.0) - s.min).abs() <= 1e-14 * s.min,
+                    "{q:?} {varied:?}"
+                );
+                assert!(
+                    (corner(1.0) - s.max).abs() <= 1e-14 * s.max,
+                    "{q:?} {varied:?}"
+                );
+                // Linearised ranges are first-order: within 3x² of the exact ones (ζ, all varied:
+                // exact max 1.1/0.9 = 1.2222 vs linear 1.2).
+                assert!(
+                    (s.linear_max - s.max).abs() <= 3.0 * x * x * s.nominal,
+                    "{q:?} {varied:?}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn every_quantity_is_monotone_in_each_component_as_its_exponent_says() {
+    let d = Components::Electrical {
+        l: 0.5,
+        r: 4.0,
+        cap: 0.02,
+    };
+    for q in Quantity::ALL {
+        for p in 0..3 {
+            let e = q.log_sensitivity(&d, p).unwrap();
+            let mut prev = f64::NAN;
+            for i in 0..50 {
+                let mut v = d.values();
+                v[p] *= 0.5 + i as f64 / 49.0;
+                let val = q.of(&d.with_values(v).system().unwrap()).unwrap();
+                if !prev.is_nan() {
+                    let step = val - prev;
+                    match e.partial_cmp(&0.0).unwrap() {
+                        std::cmp::Ordering::Greater => assert!(step > 0.0, "{q:?} p{p}"),
+                        std::cmp::Ordering::Less => assert!(step < 0.0, "{q:?} p{p}"),
+                        std::cmp::Ordering::Equal => {
+                            assert!(step.abs() <= 1e-15 * val, "{q:?} p{p}")
+                        }
+                    }
+                }
+                prev = val;
+            }
+            // And the exponent is the numerical log-derivative (central difference, h = 1e-5).
+            let at = |f: f64| {
+                let mut v = d.values();
+                v[p] *= f;
+                q.of(&d.with_values(v).system().unwrap()).unwrap().ln()
+            };
+            let num =
+                (at(1.0 + 1e-5) - at(1.0 - 1e-5)) / ((1.0f64 + 1e-5).ln() - (1.0f64 - 1e-5).ln());
+            assert!((num - e).abs() < 1e-8, "{q:?} p{p}: {num} vs {e}");
+        }
+    }
+}
+
+#[test]
+fn critical_design_turns_underdamped_with_ten_percent_more_mass() {
+    // ζ ∝ m^−½: ±10 % sprung mass gives ζ ∈ [0.95346, 1.05409] for a ζ = 1 design and
+    // ζ ∈ [0.66742, 0.73786] for ζ = 0.7; linearised ±5 % in both cases.
+    let critical = Components::mechanical_for_zeta(300.0, 24_000.0, 1.0);
+    let s = spread(&critical, Quantity::DampingRatio, Varied::One(0), 0.1).unwrap();
+    assert!(
+        (s.min - 0.953_462_589_245_592).abs() < 1e-12
+            && (s.max - 1.054_092_553_389_459_6).abs() < 1e-12
+    );
+    assert!((s.linear_min - 0.95).abs() < 1e-12 && (s.linear_max - 1.05).abs() < 1e-12);
+    let heavier = critical
+        .with_values([330.0, critical.values()[1], 24_000.0])
+        .system()
+        .unwrap();
+    assert_eq!(heavier.regime(), zeta_solver::Regime::Underdamped);
+    let d07 = Components::mechanical_for_zeta(300.0, 24_000.0, 0.7);
+    let s = spread(&d07, Quantity::DampingRatio, Varied::One(0), 0.1).unwrap();
+    assert!(
+        (s.min - 0.7 * 0.953_462_589_245_592).abs() < 1e-12
+            && (s.max - 0.7 * 1.054_092_553_389_459_6).abs() < 1e-12
+    );
+}
+
+// ---------------------------------------------------------------- Monte Carlo
+
+use zeta_solver::design::monte_carlo::{
+    histogram_into, percentiles_into, run_into, yield_percent, Distribution, McConfig, McSamples,
+    Spec, Tolerance,
+};
+
+fn mc_config(dist: Distribution, fraction: f64, draws: usize, seed: u64) -> McConfig {
+    McConfig {
+        design: Components::mechanical_for_zeta(300.0, 24_000.0, 0.7),
+        tolerances: [Tolerance {
+            fraction,
+            distribution: dist,
+        }; 3],
+        draws,
+        seed,
+        band: SettlingBand::FREE_DEFAULT,
+    }
+}
+
+#[test]
+fn same_seed_gives_identical_results_and_another_seed_does_not() {
+    let mut a = McSamples::default();
+    let mut b = McSamples::default();
+    run_into(&mc_config(Distribution::Normal, 0.1, 5000, 42), &mut a);
+    run_into(&mc_config(Distribution::Normal, 0.1, 5000, 42), &mut b);
+    assert_eq!(a, b);
+    run_into(&mc_config(Distribution::Normal, 0.1, 5000, 43), &mut b);
+    assert_ne!(a.zeta, b.zeta);
+}
+
+#[test]
+fn percentiles_of_a_uniform_draw_converge_to_the_theoretical_values() {
+    // Only the mass varies, uniformly by ±20 %: ω_n = √(k/m) has the quantile function
+    // ω_n(p) = √(k/(m0·(1.2 − 0.4p))) (ω_n falls with m). With n = 100 000 the standard error
+    // of a sample quantile is √(p(1−p)/n)/density ≤ 0.0007·ω_n0·(range): we allow 0.3 %.
+    let mut cfg = mc_config(Distribution::Uniform, 0.2, 100_000, 9);
+    cfg.tolerances[1].fraction = 0.0;
+    cfg.tolerances[2].fraction = 0.0;
+    let mut s = McSamples::default();
+    run_into(&cfg, &mut s);
+    let mut scratch = Vec::new();
+    let mut out = [0.0; 3];
+    let ps = [0.05, 0.5, 0.95];
+    percentiles_into(&s.wn, &ps, &mut scratch, &mut out);
+    for (o, p) in out.iter().zip(ps) {
+        let expect = (24_000.0 / (300.0 * (1.2 - 0.4 * p))).sqrt();
+        assert!((o / expect - 1.0).abs() < 3e-3, "p{p}: {o} vs {expect}");
+    }
+    // And a histogram of the mass-driven ζ over its full range holds every draw.
+    let mut counts = Vec::new();
+    histogram_into(&s.zeta, 40, None, &mut counts).unwrap();
+    assert_eq!(counts.iter().sum::<u64>(), 100_000);
+}
+
+#[test]
+fn yield_of_an_all_inclusive_spec_is_100_and_of_an_impossible_one_is_0() {
+    let mut s = McSamples::default();
+    run_into(&mc_config(Distribution::Normal, 0.1, 20_000, 1), &mut s);
+    assert_eq!(s.invalid, 0);
+    let all = Spec {
+        zeta: Some((0.0, 10.0)),
+        f0: Some((0.0, 100.0)),
+        q: Some((0.0, 100.0)),
+        max_settling_time: Some(100.0),
+    };
+    assert_eq!(yield_percent(&s, &all), 100.0);
+    let none = Spec {
+        zeta: Some((2.0, 3.0)),
+        ..Spec::default()
+    };
+    assert_eq!(yield_percent(&s, &none), 0.0);
+    // ζ within ±5 % of 0.7 with ±10 % (3σ) normal parts: a proper fraction.
+    let tight = Spec {
+        zeta: Some((0.665, 0.735)),
+        ..Spec::default()
+    };
+    let y = yield_percent(&s, &tight);
+    assert!(y > 50.0 && y < 100.0, "{y}");
+}
+
+#[test]
+fn wide_normal_tolerances_redraw_invalid_values_and_never_produce_negative_parts() {
+    // 3σ = 150 %: σ = 50 %, so about 2.3 % of raw draws are non-positive and are re-drawn.
+    let mut s = McSamples::default();
+    run_into(&mc_config(Distribution::Normal, 1.5, 20_000, 5), &mut s);
+    assert!(s.redraws > 500, "{}", s.redraws);
+    assert_eq!(s.invalid, 0);
+    assert!(s.zeta.iter().all(|z| z.is_finite() && *z >= 0.0));
+    assert!(s.wn.iter().all(|w| w.is_finite() && *w > 0.0));
+}

@@ -76,6 +76,8 @@ enum Extrema {
         half: f64,
         /// `|x(t1)|`.
         m: f64,
+        /// `x(t1)`, signed.
+        x1: f64,
         /// `α·π/ω_d`: log of the ratio of successive extremum magnitudes.
         decay: f64,
     },
@@ -130,10 +132,12 @@ impl FreeShape {
             let half = PI / wd;
             let theta = (v0 * wd).atan2(k).rem_euclid(PI);
             let t1 = theta / wd;
+            let x1 = resp.displacement(t1);
             Extrema::Periodic {
                 t1,
                 half,
-                m: resp.displacement(t1).abs(),
+                m: x1.abs(),
+                x1,
                 decay: alpha * half,
             }
         } else if d == 0.0 {
@@ -154,8 +158,9 @@ impl FreeShape {
         Some(Self { resp, x0, extrema })
     }
 
-    /// Root of `|x(t)| = h` on `[a, b]`, where `x` is monotone, `|x(a)| > h ≥ |x(b)|`.
-    fn crossing(&self, h: f64, a: f64, b: f64) -> f64 {
+    /// Root of `|x(t)| = h` on `[a, b]`, where `x` is monotone, `|x(a)| > h ≥ |x(b)|`,
+    /// starting from `guess` if it is inside (NaN: the midpoint).
+    fn crossing(&self, h: f64, a: f64, b: f64, guess: f64) -> f64 {
         let s = self.resp.displacement(a).signum();
         let resp = self.resp;
         solve_decreasing(
@@ -165,6 +170,7 @@ impl FreeShape {
             },
             a,
             b,
+            guess,
         )
     }
 
@@ -179,7 +185,7 @@ impl FreeShape {
                 return None;
             }
             if s * self.resp.displacement(t) - h <= 0.0 {
-                return Some(self.crossing(h, lo, t));
+                return Some(self.crossing(h, lo, t, f64::NAN));
             }
             lo = t;
             step *= 2.0;
@@ -192,12 +198,18 @@ impl FreeShape {
     pub(crate) fn settle(&self, band: SettlingBand) -> Option<Settling> {
         let h = band.fraction() * self.x0.abs();
         match self.extrema {
-            Extrema::Periodic { t1, half, m, decay } => {
+            Extrema::Periodic {
+                t1,
+                half,
+                m,
+                x1,
+                decay,
+            } => {
                 if m <= h {
                     // |x0| > h and the first extremum is inside: the crossing precedes it
                     // (and precedes any zero, so no crossings are counted). Here t1 > 0.
                     return Some(Settling {
-                        time: self.crossing(h, 0.0, t1),
+                        time: self.crossing(h, 0.0, t1, f64::NAN),
                         zero_crossings: 0,
                         piece: 0,
                     });
@@ -209,19 +221,25 @@ impl FreeShape {
                 for _ in 0..4 {
                     if k > 0.0 && m * (-decay * k).exp() <= h {
                         k -= 1.0;
-                    }
-                    if m * (-decay * (k + 1.0)).exp() > h {
+                    } else if m * (-decay * (k + 1.0)).exp() > h {
                         k += 1.0;
+                    } else {
+                        break;
                     }
                 }
                 let a = t1 + k * half;
-                let x1 = self.resp.displacement(t1);
                 let first = u64::from(t1 > 0.0 && x1 * self.x0 < 0.0);
                 // `as` saturates; k is a non-negative whole number here.
                 let zeros = (k as u64).saturating_add(first);
                 // Extrema at t > 0 outside the band: k + 1, less the one at t = 0 if t1 = 0.
                 let piece = (k as u64).saturating_add(u64::from(t1 > 0.0));
-                let time = self.crossing(h, a, a + half);
+                // Starting guess: from the extremum at `a` the response is exactly
+                // x(a)·e^{−ατ}·(cos ω_d τ + (α/ω_d)·sin ω_d τ); dropping the decay gives
+                // τ ≈ acos(h/M_k)/ω_d, close enough for Newton to converge in a few steps
+                // (the app evaluates ~10⁴ of these per frame).
+                let mk = m * (-decay * k).exp();
+                let tau0 = (h / mk).min(1.0).acos() * half / PI;
+                let time = self.crossing(h, a, a + half, a + tau0);
                 Some(Settling {
                     time,
                     zero_crossings: zeros,
@@ -239,7 +257,7 @@ impl FreeShape {
                     })
                 }
                 Some(te) => {
-                    let time = self.crossing(h, 0.0, te);
+                    let time = self.crossing(h, 0.0, te, f64::NAN);
                     Some(Settling {
                         time,
                         zero_crossings: 0,
@@ -262,8 +280,13 @@ impl FreeShape {
     pub(crate) fn rebound(&self) -> (f64, Option<f64>) {
         let ax0 = self.x0.abs();
         match self.extrema {
-            Extrema::Periodic { t1, half, m, decay } => {
-                let x1 = self.resp.displacement(t1);
+            Extrema::Periodic {
+                t1,
+                half,
+                m,
+                x1,
+                decay,
+            } => {
                 if t1 > 0.0 && x1 * self.x0 < 0.0 {
                     (m / ax0, Some(t1))
                 } else {

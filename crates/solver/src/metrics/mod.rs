@@ -151,15 +151,25 @@ pub(crate) fn validate_samples(t: &[f64], y: &[f64]) -> Result<(), MetricError> 
 const ROOT_MAX_ITER: usize = 200;
 
 /// Root of `g` in `[lo, hi]` where `g(lo) > 0 ≥ g(hi)` (the caller guarantees the bracket;
-/// `g` returns `(value, derivative)`).
+/// `g` returns `(value, derivative)`), starting from `guess` when it lies strictly inside
+/// the bracket and from the midpoint otherwise.
 ///
 /// Safeguarded Newton: a Newton step is taken when it stays strictly inside the current
 /// bracket and at least halves the previous step, otherwise the bracket is bisected, so
 /// convergence never becomes slower than bisection. Stops when the step falls below a few
 /// ulps of `t`, or after [`ROOT_MAX_ITER`] iterations.
-pub(crate) fn solve_decreasing(mut g: impl FnMut(f64) -> (f64, f64), lo: f64, hi: f64) -> f64 {
+pub(crate) fn solve_decreasing(
+    mut g: impl FnMut(f64) -> (f64, f64),
+    lo: f64,
+    hi: f64,
+    guess: f64,
+) -> f64 {
     let (mut lo, mut hi) = (lo, hi);
-    let mut t = 0.5 * (lo + hi);
+    let mut t = if guess > lo && guess < hi {
+        guess
+    } else {
+        0.5 * (lo + hi)
+    };
     let mut last_step = hi - lo;
     for _ in 0..ROOT_MAX_ITER {
         let (f, df) = g(t);
@@ -173,6 +183,11 @@ pub(crate) fn solve_decreasing(mut g: impl FnMut(f64) -> (f64, f64), lo: f64, hi
         }
         let newton_step = f / df;
         let newton = t - newton_step;
+        // Converged: the Newton correction is below rounding. (Testing this before the
+        // bracket check matters: the corrected point may round onto the bracket end.)
+        if newton_step.abs() <= 4.0 * f64::EPSILON * t.abs() + f64::MIN_POSITIVE {
+            return newton.clamp(lo, hi);
+        }
         let next = if newton.is_finite()
             && newton > lo
             && newton < hi
@@ -211,11 +226,29 @@ mod tests {
 
     #[test]
     fn solver_finds_the_root_of_cos_on_a_wide_bracket() {
-        let r = solve_decreasing(|t| (t.cos(), -t.sin()), 0.0, 3.0);
+        let r = solve_decreasing(|t| (t.cos(), -t.sin()), 0.0, 3.0, f64::NAN);
         assert!((r - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
         // A flat function forces bisection; the cap still ends the loop.
-        let r = solve_decreasing(|t| (if t < 0.3 { 1.0 } else { -1.0 }, 0.0), 0.0, 1.0);
+        let r = solve_decreasing(|t| (if t < 0.3 { 1.0 } else { -1.0 }, 0.0), 0.0, 1.0, 0.9);
         assert!((r - 0.3).abs() < 1e-15);
+    }
+
+    #[test]
+    fn solver_stops_once_newton_has_converged() {
+        // Regression: a converged Newton point rounding onto the bracket end must not fall
+        // back to bisection. From a near guess, quadratic convergence needs ≤ 6 evaluations.
+        let evals = std::cell::Cell::new(0);
+        let r = solve_decreasing(
+            |t| {
+                evals.set(evals.get() + 1);
+                (t.cos(), -t.sin())
+            },
+            0.0,
+            3.0,
+            1.4,
+        );
+        assert!((r - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        assert!(evals.get() <= 6, "{} evaluations", evals.get());
     }
 
     #[test]

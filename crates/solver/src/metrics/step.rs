@@ -248,7 +248,7 @@ fn first_fall_to(z: &FreeResponse, target: f64, end: Option<f64>, tau: f64) -> O
         (x - target, v)
     };
     match end {
-        Some(b) => (g(b).0 <= 0.0).then(|| solve_decreasing(g, 0.0, b)),
+        Some(b) => (g(b).0 <= 0.0).then(|| solve_decreasing(g, 0.0, b, f64::NAN)),
         // z > 0 for all t when it does not oscillate: the level y_ss itself is never reached.
         None if target <= 0.0 => None,
         None => {
@@ -259,7 +259,7 @@ fn first_fall_to(z: &FreeResponse, target: f64, end: Option<f64>, tau: f64) -> O
                     return None;
                 }
                 if g(t).0 <= 0.0 {
-                    return Some(solve_decreasing(g, lo, t));
+                    return Some(solve_decreasing(g, lo, t, f64::NAN));
                 }
                 lo = t;
                 step *= 2.0;
