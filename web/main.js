@@ -5,6 +5,9 @@ import init, { Session, demoList, takePanicMessage } from '../zeta-app.js';
 import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
 import { currentQuery, demoFromUrl, writeState } from './url.js';
 import { download } from './download.js';
+import { applyEmbedView, connectHost, embedOptions } from './embed.js';
+import { createSonifier } from './sound.js';
+import { openShareDialog } from './share.js';
 
 const DEFAULT_DEMO = 'regimes';
 const ANNOUNCE_DELAY_MS = 1200;
@@ -26,6 +29,11 @@ const app = {
   playing: false,
   lastTick: null,
   announceTimer: null,
+  embed: embedOptions(),
+  host: { notify() {} },
+  changed: true,
+  firstDrawn: false,
+  sound: createSonifier(),
 };
 
 function isDark() {
@@ -62,7 +70,7 @@ function recover() {
 
 function attachCanvases() {
   app.lastSize.clear();
-  for (const [key, canvas] of app.view.canvases) app.session.attach(key, canvas);
+  for (const key of app.view.shownPlots) app.session.attach(key, app.view.canvases.get(key));
   if (app.view.animation) app.session.attach('schematic', app.view.animation.canvas);
 }
 
@@ -102,18 +110,52 @@ function drawFrame() {
     const dpr = sizeCanvases();
     const out = app.session.update(dpr, isDark());
     showReadouts(app.view.readouts, out.readouts);
+    for (const [key, value] of out.derived) {
+      const control = app.view.controls.get(key);
+      if (control) showValue(control, value);
+    }
+    if (out.derived.length) syncUrl();
+    describeSliders(out.readouts);
     highlightRow(app.view.table, out.readouts);
     for (const d of out.descriptions) {
       const cap = app.view.captions.get(d.key);
       if (cap) cap.textContent = d.text;
     }
     if (out.descriptions.length) announce(out.descriptions[0].text);
+    if (!app.firstDrawn) {
+      app.firstDrawn = true;
+      performance.mark('zeta:first-draw');
+    }
     app.timeSpan = out.time_span;
     if (app.timeSpan) app.time = Math.min(Math.max(app.time, app.timeSpan[0]), app.timeSpan[1]);
     drawTime(dpr);
+    if (app.changed) {
+      app.changed = false;
+      app.host.notify();
+    }
   } catch (err) {
     reportFailure(err);
   }
+}
+
+/** aria-valuetext in words: "damping ratio 0.30, underdamped". */
+function describeSliders(readouts) {
+  const text = readouts.find((r) => r.data_value !== '' && Number.isNaN(Number(r.data_value)));
+  for (const control of app.view.controls.values()) {
+    if (!control.range) continue;
+    const unit = control.param.unit ? ` ${control.param.unit}` : '';
+    const words = `${control.param.label} ${control.number.value}${unit}`;
+    control.range.setAttribute('aria-valuetext', text ? `${words}, ${text.text}` : words);
+  }
+}
+
+/** The state reported to a host page. */
+function hostState() {
+  const params = {};
+  for (const [k, v] of app.session.values()) params[k] = v;
+  const readouts = {};
+  for (const [key, item] of app.view.readouts) readouts[key] = item.getAttribute('data-value');
+  return { demo: app.demoId, params, readouts };
 }
 
 /** Draws the schematic at the current time and the time cursor on every time plot. */
@@ -166,6 +208,7 @@ function setParam(control, raw) {
   } catch (err) {
     reportFailure(err);
   }
+  app.changed = true;
   requestDraw();
   syncUrl();
 }
@@ -186,6 +229,13 @@ function wireControls() {
       control.number.addEventListener('change', () => setParam(control, control.number.value));
     }
   }
+  app.view.reset.addEventListener('click', () => {
+    app.session.reset();
+    showAllValues();
+    app.changed = true;
+    requestDraw();
+    syncUrl();
+  });
   for (const { preset, button } of app.view.presets) {
     button.addEventListener('click', () => {
       for (const [key, value] of preset.values) {
@@ -200,6 +250,12 @@ function wireAnimation() {
   const anim = app.view.animation;
   if (!anim) return;
   anim.play.addEventListener('click', () => setPlaying(!app.playing));
+  anim.sound.addEventListener('click', () => {
+    const on = !app.sound.enabled && app.sound.start();
+    if (!on) app.sound.stop();
+    anim.sound.textContent = on ? 'Sound on' : 'Sound off';
+    anim.sound.setAttribute('aria-pressed', String(on));
+  });
   anim.scrub.addEventListener('input', () => {
     if (!app.timeSpan) return;
     const [t0, t1] = app.timeSpan;
@@ -218,6 +274,8 @@ function setPlaying(on) {
     if (app.timeSpan && app.time >= app.timeSpan[1]) app.time = app.timeSpan[0];
     app.lastTick = null;
     requestAnimationFrame(tick);
+  } else {
+    app.sound.play(null);
   }
 }
 
@@ -234,6 +292,7 @@ function tick(now) {
   app.lastTick = now;
   try {
     drawTime();
+    if (app.sound.enabled) app.sound.play(app.session.sonify(app.time));
   } catch (err) {
     reportFailure(err);
     setPlaying(false);
@@ -308,7 +367,7 @@ function wireExports() {
         if (format === 'csv') {
           download(new Blob([app.session.csv(key)], { type: 'text/csv' }), `${name}.csv`);
         } else if (format === 'svg') {
-          const svg = app.session.svg(key, canvas.clientWidth, canvas.clientHeight, isDark());
+          const svg = app.session.svg(key, canvas.clientWidth, canvas.clientHeight, isDark(), document.createElement('canvas'));
           download(new Blob([svg], { type: 'image/svg+xml' }), `${name}.svg`);
         } else {
           const big = document.createElement('canvas');
@@ -338,7 +397,9 @@ function openDemo(id, query) {
   const notices = query ? app.session.applyQuery(query) : [];
   const spec = app.session.spec();
   app.view = buildDemo(app.root, spec);
+  app.view.shownPlots = applyEmbedView(app.view, app.embed);
   app.time = 0;
+  app.changed = true;
   document.title = `${spec.title} — Zeta Lab`;
   attachCanvases();
   wireControls();
@@ -371,6 +432,27 @@ function buildMenu(list) {
 function applyForcedTheme() {
   const forced = new URLSearchParams(window.location.search).get('theme');
   if (forced === 'dark' || forced === 'light') document.documentElement.dataset.theme = forced;
+  if (app.embed.embed) document.documentElement.dataset.embed = '1';
+}
+
+function wireShare() {
+  const button = document.getElementById('share-button');
+  if (!button) return;
+  button.addEventListener('click', () => {
+    try {
+      openShareDialog({ demoId: app.demoId, values: app.session.values(), spec: app.view.spec });
+    } catch (err) {
+      reportFailure(err);
+    }
+  });
+}
+
+/** Sets parameters from the host page ([[key, text]]), each validated by Rust. */
+function setFromHost(entries) {
+  for (const [key, raw] of entries) {
+    const control = app.view.controls.get(key);
+    if (control) setParam(control, raw);
+  }
 }
 
 /** Space plays or pauses the animation unless a control that uses Space has focus. */
@@ -408,6 +490,8 @@ async function main() {
   new ResizeObserver(() => requestDraw()).observe(app.root);
   darkQuery.addEventListener('change', () => requestDraw());
   document.addEventListener('keydown', onKey);
+  wireShare();
+  app.host = connectHost(app.embed, { set: setFromHost, state: hostState });
   document.documentElement.dataset.ready = 'true';
 }
 

@@ -109,6 +109,7 @@ export function buildDemo(root, spec) {
       controls.set(p.key, { param: p, range: c.range, number: c.number });
     }
   }
+  const reset = el('button', { type: 'button', class: 'reset' }, 'Reset to defaults');
   const presets = [];
   if (spec.presets.length) {
     const box = el('div', { class: 'presets', role: 'group', 'aria-label': 'Presets' });
@@ -120,6 +121,9 @@ export function buildDemo(root, spec) {
     }
     form.append(box);
   }
+  const actions = el('div', { class: 'form-actions' });
+  actions.append(reset);
+  form.append(actions);
 
   const readoutBox = el('dl', { class: 'readouts', 'aria-label': 'Readouts' });
   const readouts = new Map();
@@ -167,7 +171,7 @@ export function buildDemo(root, spec) {
   if (spec.table) table = buildTable(root, spec.table);
   const live = el('div', { class: 'visually-hidden', 'aria-live': 'polite', id: 'plot-announcer' });
   root.append(live);
-  return { controls, readouts, canvases, overlays, captions, exports, presets, animation, table, live };
+  return { controls, readouts, canvases, overlays, captions, exports, presets, animation, table, live, reset, spec };
 }
 
 function buildAnimation(parent) {
@@ -177,11 +181,12 @@ function buildAnimation(parent) {
   const play = el('button', { type: 'button', class: 'play', 'aria-pressed': 'false' }, 'Play');
   const scrub = el('input', { type: 'range', min: '0', max: '1000', step: '1', value: '0', 'aria-label': 'Animation time' });
   const time = el('output', { class: 'anim-time' }, 't = 0 s');
-  bar.append(play, scrub, time);
+  const sound = el('button', { type: 'button', class: 'sound', 'aria-pressed': 'false', title: 'Hear x(t): pitch follows displacement' }, 'Sound off');
+  bar.append(play, scrub, time, sound);
   const caption = el('figcaption', { class: 'visually-hidden' });
   fig.append(canvas, bar, caption);
   parent.append(fig);
-  return { canvas, play, scrub, time, caption };
+  return { canvas, play, scrub, time, caption, sound };
 }
 
 function buildTable(root, table) {

@@ -1,59 +1,74 @@
-//! The canvas backend used in the browser: plotters-canvas, with text measured by the
-//! canvas itself.
+//! Backends used in the browser: plotters-canvas (and, for SVG export, plotters' SVG
+//! backend), with text measured by a canvas 2D context.
 //!
 //! plotters' default text measurement on the web inserts a styled `<span>` into the page
 //! and reads its layout, once per label. That is slow (a forced layout per label, every
 //! frame) and is blocked by a strict Content-Security-Policy (`style-src 'self'`). This
 //! wrapper measures with `CanvasRenderingContext2d.measureText` instead and delegates all
-//! drawing to `CanvasBackend`.
+//! drawing to the wrapped backend.
 
 use plotters_backend::{
     BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind,
 };
 use plotters_canvas::CanvasBackend;
-
-/// plotters-canvas does not export its error type by name.
-type CanvasError = <CanvasBackend as DrawingBackend>::ErrorType;
 use wasm_bindgen::JsCast;
 use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
 
-/// A plotters backend drawing onto an HTML canvas.
-pub struct Canvas {
-    inner: CanvasBackend,
+/// Any plotters backend, with text measured by a canvas 2D context.
+pub struct Measured<B> {
+    inner: B,
     context: CanvasRenderingContext2d,
+}
+
+/// A plotters backend drawing onto an HTML canvas.
+pub type Canvas = Measured<CanvasBackend>;
+
+fn context_of(canvas: &HtmlCanvasElement) -> Option<CanvasRenderingContext2d> {
+    canvas
+        .get_context("2d")
+        .ok()??
+        .dyn_into::<CanvasRenderingContext2d>()
+        .ok()
 }
 
 impl Canvas {
     /// Wraps `canvas`; `None` if it has no 2D context.
     pub fn new(canvas: &HtmlCanvasElement) -> Option<Self> {
-        let context = canvas
-            .get_context("2d")
-            .ok()??
-            .dyn_into::<CanvasRenderingContext2d>()
-            .ok()?;
+        let context = context_of(canvas)?;
         let inner = CanvasBackend::with_canvas_object(canvas.clone())?;
         Some(Self { inner, context })
     }
 }
 
-type Result<T> = std::result::Result<T, DrawingErrorKind<CanvasError>>;
+impl<B: DrawingBackend> Measured<B> {
+    /// Wraps `inner`, measuring text with the 2D context of `measure` (any canvas, even one
+    /// that is not in the page).
+    pub fn with_measure(inner: B, measure: &HtmlCanvasElement) -> Option<Self> {
+        Some(Self {
+            inner,
+            context: context_of(measure)?,
+        })
+    }
+}
 
-impl DrawingBackend for Canvas {
-    type ErrorType = CanvasError;
+type Result<T, E> = std::result::Result<T, DrawingErrorKind<E>>;
+
+impl<B: DrawingBackend> DrawingBackend for Measured<B> {
+    type ErrorType = B::ErrorType;
 
     fn get_size(&self) -> (u32, u32) {
         self.inner.get_size()
     }
 
-    fn ensure_prepared(&mut self) -> Result<()> {
+    fn ensure_prepared(&mut self) -> Result<(), B::ErrorType> {
         self.inner.ensure_prepared()
     }
 
-    fn present(&mut self) -> Result<()> {
+    fn present(&mut self) -> Result<(), B::ErrorType> {
         self.inner.present()
     }
 
-    fn draw_pixel(&mut self, point: BackendCoord, color: BackendColor) -> Result<()> {
+    fn draw_pixel(&mut self, point: BackendCoord, color: BackendColor) -> Result<(), B::ErrorType> {
         self.inner.draw_pixel(point, color)
     }
 
@@ -62,7 +77,7 @@ impl DrawingBackend for Canvas {
         from: BackendCoord,
         to: BackendCoord,
         style: &S,
-    ) -> Result<()> {
+    ) -> Result<(), B::ErrorType> {
         self.inner.draw_line(from, to, style)
     }
 
@@ -72,7 +87,7 @@ impl DrawingBackend for Canvas {
         bottom_right: BackendCoord,
         style: &S,
         fill: bool,
-    ) -> Result<()> {
+    ) -> Result<(), B::ErrorType> {
         self.inner.draw_rect(upper_left, bottom_right, style, fill)
     }
 
@@ -80,7 +95,7 @@ impl DrawingBackend for Canvas {
         &mut self,
         path: I,
         style: &S,
-    ) -> Result<()> {
+    ) -> Result<(), B::ErrorType> {
         self.inner.draw_path(path, style)
     }
 
@@ -90,7 +105,7 @@ impl DrawingBackend for Canvas {
         radius: u32,
         style: &S,
         fill: bool,
-    ) -> Result<()> {
+    ) -> Result<(), B::ErrorType> {
         self.inner.draw_circle(center, radius, style, fill)
     }
 
@@ -98,7 +113,7 @@ impl DrawingBackend for Canvas {
         &mut self,
         vert: I,
         style: &S,
-    ) -> Result<()> {
+    ) -> Result<(), B::ErrorType> {
         self.inner.fill_polygon(vert, style)
     }
 
@@ -107,12 +122,16 @@ impl DrawingBackend for Canvas {
         text: &str,
         style: &S,
         pos: BackendCoord,
-    ) -> Result<()> {
+    ) -> Result<(), B::ErrorType> {
         self.inner.draw_text(text, style, pos)
     }
 
-    fn estimate_text_size<S: BackendTextStyle>(&self, text: &str, style: &S) -> Result<(u32, u32)> {
-        // The same font string CanvasBackend::draw_text sets, so measure and draw agree.
+    fn estimate_text_size<S: BackendTextStyle>(
+        &self,
+        text: &str,
+        style: &S,
+    ) -> Result<(u32, u32), B::ErrorType> {
+        // The font string CanvasBackend::draw_text sets, so measuring and drawing agree.
         self.context.set_font(&format!(
             "{} {}px {}",
             style.style().as_str(),
@@ -130,7 +149,12 @@ impl DrawingBackend for Canvas {
         ))
     }
 
-    fn blit_bitmap(&mut self, pos: BackendCoord, size: (u32, u32), src: &[u8]) -> Result<()> {
+    fn blit_bitmap(
+        &mut self,
+        pos: BackendCoord,
+        size: (u32, u32),
+        src: &[u8],
+    ) -> Result<(), B::ErrorType> {
         self.inner.blit_bitmap(pos, size, src)
     }
 }

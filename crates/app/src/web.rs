@@ -2,14 +2,14 @@
 //! nowhere else; a panic (there should be none) is logged by the hook and reported to the
 //! page, which then starts a fresh session.
 
-use crate::canvas::Canvas;
+use crate::canvas::{Canvas, Measured};
 use crate::demos::{self, Demo, Frame};
 use crate::export;
 use crate::params::{resolve_query, Notice, Params};
 use crate::render::{render, PlotGeometry};
 use crate::spec::DemoSpec;
 use crate::theme::Theme;
-use plotters::prelude::IntoDrawingArea;
+use plotters::prelude::{IntoDrawingArea, SVGBackend};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
@@ -73,6 +73,8 @@ struct UpdateResult<'a> {
     descriptions: Vec<Description<'a>>,
     /// `[start, end]` of the animation in s, if the demo animates.
     time_span: Option<(f64, f64)>,
+    /// `[[key, value]]` of parameters the demo derived from others this update.
+    derived: Vec<(&'static str, f64)>,
 }
 
 #[derive(Serialize)]
@@ -175,6 +177,12 @@ impl Session {
     /// devicePixelRatio) and returns `{readouts, descriptions, time_span}`.
     pub fn update(&mut self, scale: f64, dark: bool) -> Result<JsValue, JsError> {
         let frame = self.demo.update(&self.params);
+        let mut derived = Vec::new();
+        for (key, value) in self.demo.derived_params() {
+            if let Some((v, _)) = self.params.set_raw(&self.spec, key, &format!("{value}")) {
+                derived.push((key, v));
+            }
+        }
         let scale = if scale.is_finite() {
             scale.clamp(0.5, 4.0)
         } else {
@@ -205,6 +213,7 @@ impl Session {
             readouts: &frame.readouts,
             descriptions,
             time_span: frame.time_span,
+            derived,
         });
         self.frame = Some(frame);
         out
@@ -229,6 +238,16 @@ impl Session {
             render(&backend.into_drawing_area(), &fig, &theme(dark), scale).map_err(js_err)?;
         }
         Ok(fig.description)
+    }
+
+    /// The main response at time `t` [s], normalised to about −1…1 (for sonification).
+    pub fn sonify(&self, t: f64) -> Option<f64> {
+        self.demo.sonify(&self.params, t).filter(|v| v.is_finite())
+    }
+
+    /// Restores every parameter's default.
+    pub fn reset(&mut self) {
+        self.params = Params::defaults(&self.spec);
     }
 
     fn figure(&self, key: &str) -> Option<(usize, &crate::figure::Figure)> {
@@ -271,10 +290,25 @@ impl Session {
         Ok(export::csv(self.spec.id, &params, fig))
     }
 
-    /// SVG document of plot `key` at `w × h` px.
-    pub fn svg(&self, key: &str, w: u32, h: u32, dark: bool) -> Result<String, JsError> {
+    /// SVG document of plot `key` at `w × h` px. Text is measured with `measure`'s 2D
+    /// context (any canvas), so export works under a strict Content-Security-Policy.
+    pub fn svg(
+        &self,
+        key: &str,
+        w: u32,
+        h: u32,
+        dark: bool,
+        measure: HtmlCanvasElement,
+    ) -> Result<String, JsError> {
         let (_, fig) = self.figure(key).ok_or_else(|| js_err("no such plot"))?;
-        export::svg(fig, w, h, &theme(dark)).map_err(js_err)
+        let mut buf = String::new();
+        {
+            let size = (w.clamp(16, 8000), h.clamp(16, 8000));
+            let backend = Measured::with_measure(SVGBackend::with_string(&mut buf, size), &measure)
+                .ok_or_else(|| js_err("no 2D context to measure text"))?;
+            render(&backend.into_drawing_area(), fig, &theme(dark), 1.0).map_err(js_err)?;
+        }
+        Ok(buf)
     }
 
     /// Draws plot `key` onto another canvas (e.g. a 2× canvas for PNG export).

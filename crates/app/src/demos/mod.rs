@@ -69,6 +69,16 @@ pub trait Demo {
     fn schematic(&self, _params: &Params, _t: f64) -> Option<Figure> {
         None
     }
+    /// Parameters the last [`Demo::update`] derived from others (e.g. `c` from a moved
+    /// `zeta`); the page moves those controls and the URL follows.
+    fn derived_params(&self) -> Vec<(&'static str, f64)> {
+        Vec::new()
+    }
+    /// The main response at time `t` \[s\], normalised to about −1…1, for sonification
+    /// (pitch follows displacement). `None` for demos without a time response.
+    fn sonify(&self, _params: &Params, _t: f64) -> Option<f64> {
+        None
+    }
 }
 
 /// Ids of every demo, in menu order.

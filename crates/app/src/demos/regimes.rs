@@ -217,6 +217,12 @@ impl Demo for Regimes {
         }
     }
 
+    fn sonify(&self, params: &Params, t: f64) -> Option<f64> {
+        let (sys, x0, v0) = model(params)?;
+        let reach = x0.abs().max(v0.abs() / sys.natural_frequency()?).max(1e-9);
+        Some(FreeResponse::new(sys, x0, v0).displacement(t) / reach)
+    }
+
     fn schematic(&self, params: &Params, t: f64) -> Option<Figure> {
         let (sys, x0, v0) = model(params)?;
         let resp = FreeResponse::new(sys, x0, v0);

@@ -1,0 +1,91 @@
+// Browser benchmark: for every demo, the main-thread work of one slider event (input
+// handling plus the animation frame that redraws) as p50/p95 over ≥ 300 events, the time
+// to the first drawn plot on a cold load, and the bytes shipped. Prints a Markdown table.
+// Usage: node bench/browser.mjs [events-per-demo]   (after scripts/build.sh)
+import { gzipSync } from 'node:zlib';
+import { readFileSync, readdirSync } from 'node:fs';
+import { join } from 'node:path';
+import { serve, DIST } from '../tests/support/server.mjs';
+import { launch } from '../tests/support/browser.mjs';
+
+const EVENTS = Math.max(300, Number(process.argv[2]) || 300);
+
+function quantile(sorted, q) {
+  const i = (sorted.length - 1) * q;
+  const lo = Math.floor(i);
+  const hi = Math.ceil(i);
+  return sorted[lo] + (sorted[hi] - sorted[lo]) * (i - lo);
+}
+
+/** Runs in the page: moves sliders `n` times and times each event's work. */
+async function measureInPage(n) {
+  const ranges = [...document.querySelectorAll('.controls input[type=range]')];
+  const frame = () => new Promise((r) => requestAnimationFrame(() => r(performance.now())));
+  const times = [];
+  for (let i = 0; i < n; i++) {
+    const range = ranges[i % ranges.length];
+    const min = Number(range.min);
+    const max = Number(range.max);
+    const f = 0.1 + 0.8 * (((i * 7919) % 97) / 96);
+    await frame(); // start from a quiet frame
+    // Three callbacks of the same frame, in order: ours (start), the app's redraw, ours (end).
+    let before = 0;
+    requestAnimationFrame(() => {
+      before = performance.now();
+    });
+    const t0 = performance.now();
+    range.value = String(min + f * (max - min));
+    range.dispatchEvent(new Event('input', { bubbles: true }));
+    const handled = performance.now() - t0;
+    const after = await frame();
+    times.push(handled + (after - before));
+  }
+  return times;
+}
+
+async function main() {
+  const server = await serve();
+  const browser = await launch();
+  const rows = [];
+  try {
+    const probe = await browser.newPage();
+    await probe.goto(server.url);
+    await probe.waitForSelector('html[data-ready="true"]');
+    const ids = await probe.$$eval('#demo-select option', (os) => os.map((o) => o.value));
+    await probe.close();
+    for (const id of ids) {
+      const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+      const page = await context.newPage();
+      await page.goto(`${server.url}?demo=${id}`);
+      await page.waitForSelector('html[data-ready="true"]');
+      await page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0);
+      const firstDraw = await page.evaluate(() => performance.getEntriesByName('zeta:first-draw')[0].startTime);
+      const times = (await page.evaluate(measureInPage, EVENTS)).sort((a, b) => a - b);
+      rows.push({ id, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), max: times[times.length - 1], firstDraw });
+      await context.close();
+    }
+  } finally {
+    await browser.close();
+    await server.close();
+  }
+  const files = ['zeta-app_bg.wasm', 'zeta-app.js', ...readdirSync(join(DIST, 'web')).filter((f) => f.endsWith('.js')).map((f) => `web/${f}`)];
+  let wasmRaw = 0, wasmGz = 0, jsRaw = 0, jsGz = 0;
+  for (const f of files) {
+    const buf = readFileSync(join(DIST, f));
+    const gz = gzipSync(buf, { level: 9 }).length;
+    if (f.endsWith('.wasm')) { wasmRaw += buf.length; wasmGz += gz; } else { jsRaw += buf.length; jsGz += gz; }
+  }
+  console.log(`\nSlider events in headless Chromium (${EVENTS} per demo; input handling + the redraw frame):\n`);
+  console.log('| demo | events | p50 (ms) | p95 (ms) | max (ms) | first plot, cold load (ms) |');
+  console.log('| --- | --- | --- | --- | --- | --- |');
+  for (const r of rows) {
+    console.log(`| ${r.id} | ${r.n} | ${r.p50.toFixed(2)} | ${r.p95.toFixed(2)} | ${r.max.toFixed(2)} | ${r.firstDraw.toFixed(0)} |`);
+  }
+  const kb = (b) => (b / 1024).toFixed(1);
+  console.log(`\nBytes: wasm ${kb(wasmRaw)} KiB (${kb(wasmGz)} KiB gzipped), JS ${kb(jsRaw)} KiB (${kb(jsGz)} KiB gzipped), total gzipped ${kb(wasmGz + jsGz)} KiB`);
+}
+
+main().catch((e) => {
+  console.error(e);
+  process.exit(1);
+});
