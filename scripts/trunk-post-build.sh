@@ -21,3 +21,8 @@ for f in zeta-app_bg.wasm zeta-app.js; do
   hash="sha384-$(openssl dgst -sha384 -binary "$stage/$f" | openssl base64 -A)"
   perl -pi -e "s#(href=\"\\./\Q$f\E\"[^>]*?integrity=\")[^\"]*#\${1}$hash#g" "$html"
 done
+
+# Version the service worker's cache by the build and list every file it must cache.
+build="$(cat "$stage/zeta-app_bg.wasm" "$stage/zeta-app.js" "$stage"/web/* | openssl dgst -sha256 | awk '{print substr($NF, 1, 16)}')"
+files="$(cd "$stage" && find . -type f ! -name sw.js | sed 's#^\./##' | sort | awk '{printf ", \x27%s\x27", $0}')"
+perl -pi -e "s#__ZETA_BUILD__#$build#; s#const FILES = \['\./'\];#const FILES = ['./'$files];#" "$stage/sw.js"

@@ -493,6 +493,15 @@ async function main() {
   wireShare();
   app.host = connectHost(app.embed, { set: setFromHost, state: hostState });
   document.documentElement.dataset.ready = 'true';
+  registerServiceWorker();
+}
+
+/** Offline use after the first visit (not for file:// pages, where it cannot work). */
+function registerServiceWorker() {
+  if (!('serviceWorker' in navigator) || !window.location.protocol.startsWith('http')) return;
+  navigator.serviceWorker.register(new URL('../sw.js', import.meta.url)).catch((err) => {
+    console.warn('Offline support unavailable:', err && err.message);
+  });
 }
 
 main();
