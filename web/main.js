@@ -349,6 +349,23 @@ function wireProbes() {
       tip.style.left = `${Math.min(x + 12, stage.clientWidth - tip.offsetWidth - 4)}px`;
       tip.style.top = `${Math.max(4, y - tip.offsetHeight - 12)}px`;
     };
+    canvas.addEventListener('click', (ev) => {
+      const dpr = window.devicePixelRatio || 1;
+      const rect = canvas.getBoundingClientRect();
+      try {
+        const applied = app.session.pick(key, (ev.clientX - rect.left) * dpr, (ev.clientY - rect.top) * dpr);
+        if (!applied.length) return;
+        for (const [k, v] of applied) {
+          const control = app.view.controls.get(k);
+          if (control) showValue(control, v);
+        }
+        app.changed = true;
+        requestDraw();
+        syncUrl();
+      } catch (err) {
+        reportFailure(err);
+      }
+    });
     canvas.addEventListener('pointermove', show);
     canvas.addEventListener('pointerdown', show);
     canvas.addEventListener('pointerleave', () => {

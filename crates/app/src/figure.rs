@@ -145,6 +145,25 @@ pub enum FigureKind {
     Schematic,
 }
 
+/// A colour map over a regular grid, drawn under the series (e.g. a metric over (k, c)).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Heatmap {
+    /// Cells along x.
+    pub nx: usize,
+    /// Cells along y.
+    pub ny: usize,
+    /// Row-major values, `values[iy·nx + ix]`; non-finite cells are left blank.
+    pub values: Vec<f64>,
+    /// x of the first and last cell edges.
+    pub x_edges: (f64, f64),
+    /// y of the first and last cell edges.
+    pub y_edges: (f64, f64),
+    /// Colour scale `(low, high)`; values outside are clamped.
+    pub scale: (f64, f64),
+    /// What the colour means, with unit, for the legend (e.g. "settling time [s]").
+    pub label: String,
+}
+
 /// One plot.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
@@ -164,6 +183,8 @@ pub struct Figure {
     pub markers: Vec<Marker>,
     /// Horizontal and vertical reference lines through the origin.
     pub origin_lines: bool,
+    /// An optional colour map drawn under the series.
+    pub heatmap: Option<Heatmap>,
 }
 
 impl Figure {
@@ -178,6 +199,7 @@ impl Figure {
             series: Vec::new(),
             markers: Vec::new(),
             origin_lines: false,
+            heatmap: None,
         }
     }
 

@@ -237,6 +237,10 @@ where
         .draw()
         .map_err(err)?;
 
+    if let Some(h) = &fig.heatmap {
+        draw_heatmap(&mut chart, h)?;
+    }
+
     if fig.origin_lines {
         let (x0, x1) = fig.x.range;
         let (y0, y1) = fig.y.range;
@@ -275,6 +279,39 @@ where
         f64::from(xs.end),
         f64::from(ys.end),
     ))
+}
+
+/// Fills the heatmap's cells (one rectangle each; blank where the value is not finite).
+fn draw_heatmap<DB, X, Y>(
+    chart: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
+    h: &crate::figure::Heatmap,
+) -> Result<(), RenderError>
+where
+    DB: DrawingBackend,
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    if h.nx == 0 || h.ny == 0 || h.values.len() < h.nx * h.ny {
+        return Ok(());
+    }
+    let dx = (h.x_edges.1 - h.x_edges.0) / h.nx as f64;
+    let dy = (h.y_edges.1 - h.y_edges.0) / h.ny as f64;
+    let (lo, hi) = h.scale;
+    let span = if hi > lo { hi - lo } else { 1.0 };
+    let cells = h
+        .values
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| v.is_finite())
+        .map(|(i, &v)| {
+            let (ix, iy) = ((i % h.nx) as f64, (i / h.nx) as f64);
+            let x0 = h.x_edges.0 + ix * dx;
+            let y0 = h.y_edges.0 + iy * dy;
+            let color = crate::theme::viridis((v - lo) / span);
+            Rectangle::new([(x0, y0), (x0 + dx, y0 + dy)], color.filled())
+        });
+    chart.draw_series(cells).map_err(err)?;
+    Ok(())
 }
 
 /// Draws the series and markers of `fig`; returns the legend entries.
@@ -473,6 +510,37 @@ mod tests {
             svg.matches("<polyline").count() >= 2,
             "line split at the NaN"
         );
+    }
+
+    #[test]
+    fn heatmap_cells_are_filled_and_blank_where_undefined() {
+        let mut fig = sample();
+        fig.heatmap = Some(crate::figure::Heatmap {
+            nx: 4,
+            ny: 3,
+            values: (0..12).map(|i| if i == 5 { f64::NAN } else { i as f64 }).collect(),
+            x_edges: (0.0, 1.0),
+            y_edges: (-1.0, 1.0),
+            scale: (0.0, 11.0),
+            label: "metric [s]".into(),
+        });
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+            render(&root, &fig, &Theme::LIGHT, 1.0).unwrap();
+        }
+        let lo = crate::theme::viridis(0.0);
+        let hi = crate::theme::viridis(1.0);
+        let hex = |c: RGBColor| format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2);
+        assert!(svg.contains(&hex(lo)) && svg.contains(&hex(hi)), "both ends of the colour map");
+        let without = {
+            let mut s = String::new();
+            let root = SVGBackend::with_string(&mut s, (640, 360)).into_drawing_area();
+            render(&root, &sample(), &Theme::LIGHT, 1.0).unwrap();
+            drop(root);
+            s
+        };
+        assert_eq!(svg.matches("<rect").count() - without.matches("<rect").count(), 11);
     }
 
     #[test]

@@ -245,6 +245,31 @@ impl Session {
         self.demo.sonify(&self.params, t).filter(|v| v.is_finite())
     }
 
+    /// A click at backend pixel `(px, py)` of plot `key`: the demo may choose parameters
+    /// from the point (e.g. a design on a map). Returns `[[key, value]]` applied.
+    pub fn pick(&mut self, key: &str, px: f64, py: f64) -> Result<JsValue, JsError> {
+        let Some(i) = self.spec.plots.iter().position(|p| p.key == key) else {
+            return to_js(&Vec::<(&str, f64)>::new());
+        };
+        let Some((x, y)) = self
+            .geometry
+            .get(i)
+            .copied()
+            .flatten()
+            .and_then(|g| g.to_data(px, py))
+        else {
+            return to_js(&Vec::<(&str, f64)>::new());
+        };
+        let plot = self.spec.plots.get(i).map(|p| p.key).unwrap_or("");
+        let mut applied = Vec::new();
+        for (k, v) in self.demo.pick(plot, x, y) {
+            if let Some((v, _)) = self.params.set_raw(&self.spec, k, &format!("{v}")) {
+                applied.push((k, v));
+            }
+        }
+        to_js(&applied)
+    }
+
     /// Restores every parameter's default.
     pub fn reset(&mut self) {
         self.params = Params::defaults(&self.spec);

@@ -74,6 +74,11 @@ pub trait Demo {
     fn derived_params(&self) -> Vec<(&'static str, f64)> {
         Vec::new()
     }
+    /// A click or tap at data point `(x, y)` of plot `plot` (e.g. choosing a design on a
+    /// map); returns the parameters to set.
+    fn pick(&mut self, _plot: &str, _x: f64, _y: f64) -> Vec<(&'static str, f64)> {
+        Vec::new()
+    }
     /// The main response at time `t` \[s\], normalised to about −1…1, for sonification
     /// (pitch follows displacement). `None` for demos without a time response.
     fn sonify(&self, _params: &Params, _t: f64) -> Option<f64> {
