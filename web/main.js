@@ -52,18 +52,23 @@ function reportFailure(err) {
   app.needsRecovery = true;
 }
 
-function safeValues() {
-  try {
-    return app.session.values();
-  } catch {
-    return [];
+/** The values shown in the controls: the page's own copy, usable after a failed call. */
+function shownValues() {
+  const values = [];
+  for (const [key, control] of app.view.controls) {
+    const kind = control.param.kind;
+    if (kind === 'toggle') values.push([key, control.input.checked ? '1' : '0']);
+    else if (kind === 'choice') values.push([key, control.input.value]);
+    else values.push([key, control.number.value]);
   }
+  return values;
 }
 
+/** A fresh Session with the values the page shows (the old one may be unusable after a trap). */
 function recover() {
-  const values = app.session ? safeValues() : [];
+  const values = shownValues();
   app.session = new Session(app.demoId);
-  for (const [k, v] of values) app.session.set(k, String(v));
+  for (const [k, v] of values) app.session.set(k, v);
   attachCanvases();
   app.needsRecovery = false;
 }
@@ -487,7 +492,9 @@ async function main() {
   app.root = document.getElementById('demo');
   app.notices = document.getElementById('notices');
   try {
-    await init({ module_or_path: new URL('../zeta-app_bg.wasm', import.meta.url) });
+    const wasm = await init({ module_or_path: new URL('../zeta-app_bg.wasm', import.meta.url) });
+    // Read-only diagnostics for the soak test and curious lecturers.
+    window.zetaDiagnostics = Object.freeze({ wasmBytes: () => wasm.memory.buffer.byteLength });
   } catch (err) {
     app.root.replaceChildren();
     const p = document.createElement('p');

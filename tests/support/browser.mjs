@@ -7,11 +7,12 @@ import { fileURLToPath } from 'node:url';
 const EXECUTABLE = process.env.CHROMIUM || '/usr/bin/chromium';
 export const SHOTS = fileURLToPath(new URL('../../target/screenshots/', import.meta.url));
 
-export async function launch() {
+export async function launch(extraArgs = []) {
   await mkdir(SHOTS, { recursive: true });
   return chromium.launch({
     executablePath: EXECUTABLE,
     args: [
+      ...extraArgs,
       '--no-sandbox',
       '--disable-gpu',
       '--disable-quic',

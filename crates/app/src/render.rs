@@ -170,9 +170,10 @@ fn px(v: f64, scale: f64) -> u32 {
     (v * scale).round().max(1.0) as u32
 }
 
-/// Splits a series at non-finite points and clamps the rest into the (slightly widened)
-/// plot area, so a diverging curve is drawn to the edge instead of off the canvas.
-fn segments(s: &Series, fig: &Figure) -> Vec<Vec<(f64, f64)>> {
+/// Splits a series at points that cannot be drawn (non-finite, or ≤ 0 on a log axis) and
+/// clamps the rest into the (slightly widened) plot area, so a diverging curve is drawn to
+/// the edge instead of off the canvas. The flag says whether anything was clamped.
+fn segments(s: &Series, fig: &Figure) -> (Vec<Vec<(f64, f64)>>, bool) {
     let widen = |(lo, hi): (f64, f64), log: bool| {
         if log {
             (lo / 1.05, hi * 1.05)
@@ -183,11 +184,17 @@ fn segments(s: &Series, fig: &Figure) -> Vec<Vec<(f64, f64)>> {
     };
     let (xl, xh) = widen(fig.x.range, fig.x.scale == AxisScale::Log);
     let (yl, yh) = widen(fig.y.range, fig.y.scale == AxisScale::Log);
+    let x_log = fig.x.scale == AxisScale::Log;
+    let y_log = fig.y.scale == AxisScale::Log;
     let mut out: Vec<Vec<(f64, f64)>> = Vec::new();
     let mut cur: Vec<(f64, f64)> = Vec::new();
+    let mut clipped = false;
     for &(x, y) in &s.points {
-        if x.is_finite() && y.is_finite() {
-            cur.push((x.clamp(xl, xh), y.clamp(yl, yh)));
+        let drawable = x.is_finite() && y.is_finite() && (!x_log || x > 0.0) && (!y_log || y > 0.0);
+        if drawable {
+            let p = (x.clamp(xl, xh), y.clamp(yl, yh));
+            clipped |= p != (x, y);
+            cur.push(p);
         } else if !cur.is_empty() {
             out.push(std::mem::take(&mut cur));
         }
@@ -195,7 +202,7 @@ fn segments(s: &Series, fig: &Figure) -> Vec<Vec<(f64, f64)>> {
     if !cur.is_empty() {
         out.push(cur);
     }
-    out
+    (out, clipped)
 }
 
 fn draw<DB, X, Y>(
@@ -329,10 +336,13 @@ where
     let fg = theme.foreground;
     let font = |size: f64| ("sans-serif", size * scale).into_font().color(&fg);
     let mut legend: Vec<(&str, LineStyle)> = Vec::new();
+    let mut clipped = false;
     for s in &fig.series {
         let color = theme.color(s.style.color);
         let style = color.stroke_width(px(s.style.width, scale));
-        for seg in segments(s, fig) {
+        let (segs, cut) = segments(s, fig);
+        clipped |= cut;
+        for seg in segs {
             match s.style.dash {
                 Dash::Solid => chart
                     .draw_series(LineSeries::new(seg, style))
@@ -402,6 +412,13 @@ where
         }
     }
 
+    if clipped && fig.kind == FigureKind::Plot {
+        // Say so when a curve leaves the axes, so a clamped line is not read as data.
+        let area = chart.plotting_area().strip_coord_spec();
+        let at = (px(6.0, scale) as i32, px(4.0, scale) as i32);
+        let note = "clipped: some values lie beyond the axes";
+        area.draw(&Text::new(note, at, font(11.0))).map_err(err)?;
+    }
     Ok(legend)
 }
 
@@ -513,12 +530,37 @@ mod tests {
     }
 
     #[test]
+    fn log_axes_never_receive_zero_or_negative_values() {
+        let mut fig = sample();
+        fig.x = Axis {
+            scale: AxisScale::Log,
+            ..Axis::linear("r", "", (0.01, 100.0))
+        };
+        fig.series[0].points = vec![
+            (0.0, 1.0),
+            (-1.0, 1.0),
+            (0.1, 0.5),
+            (1.0, 0.2),
+            (-0.5, 0.1),
+            (10.0, 0.3),
+        ];
+        let (segs, _) = segments(&fig.series[0], &fig);
+        assert_eq!(segs.len(), 2);
+        assert!(segs.iter().flatten().all(|p| p.0 > 0.0));
+        let mut svg = String::new();
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        render(&root, &fig, &Theme::LIGHT, 1.0).unwrap();
+    }
+
+    #[test]
     fn heatmap_cells_are_filled_and_blank_where_undefined() {
         let mut fig = sample();
         fig.heatmap = Some(crate::figure::Heatmap {
             nx: 4,
             ny: 3,
-            values: (0..12).map(|i| if i == 5 { f64::NAN } else { i as f64 }).collect(),
+            values: (0..12)
+                .map(|i| if i == 5 { f64::NAN } else { i as f64 })
+                .collect(),
             x_edges: (0.0, 1.0),
             y_edges: (-1.0, 1.0),
             scale: (0.0, 11.0),
@@ -532,7 +574,10 @@ mod tests {
         let lo = crate::theme::viridis(0.0);
         let hi = crate::theme::viridis(1.0);
         let hex = |c: RGBColor| format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2);
-        assert!(svg.contains(&hex(lo)) && svg.contains(&hex(hi)), "both ends of the colour map");
+        assert!(
+            svg.contains(&hex(lo)) && svg.contains(&hex(hi)),
+            "both ends of the colour map"
+        );
         let without = {
             let mut s = String::new();
             let root = SVGBackend::with_string(&mut s, (640, 360)).into_drawing_area();
@@ -540,7 +585,10 @@ mod tests {
             drop(root);
             s
         };
-        assert_eq!(svg.matches("<rect").count() - without.matches("<rect").count(), 11);
+        assert_eq!(
+            svg.matches("<rect").count() - without.matches("<rect").count(),
+            11
+        );
     }
 
     #[test]
@@ -561,8 +609,15 @@ mod tests {
     #[test]
     fn non_finite_points_split_lines_and_huge_ones_are_clamped() {
         let fig = sample();
-        let segs = segments(&fig.series[0], &fig);
+        let (segs, clipped) = segments(&fig.series[0], &fig);
         assert_eq!(segs.len(), 2);
         assert!(segs[1][0].1 <= 1.05);
+        assert!(clipped);
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+            render(&root, &fig, &Theme::LIGHT, 1.0).unwrap();
+        }
+        assert!(svg.contains("clipped"), "the plot says it is clipped");
     }
 }

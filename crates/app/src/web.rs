@@ -28,6 +28,16 @@ thread_local! {
     static LAST_PANIC: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
 }
 
+/// Set by [`arm_panic_for_tests`]: the next [`Session::update`] panics, so the end-to-end
+/// tests can check that the page reports a panic and recovers. Never set otherwise.
+static PANIC_ARMED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Test hook: makes the next `update` panic (see the recovery end-to-end test).
+#[wasm_bindgen(js_name = armPanicForTests)]
+pub fn arm_panic_for_tests() {
+    PANIC_ARMED.store(true, std::sync::atomic::Ordering::SeqCst);
+}
+
 /// The message of the last panic, if any (read by the page after a failed call).
 #[wasm_bindgen(js_name = takePanicMessage)]
 pub fn take_panic_message() -> Option<String> {
@@ -176,6 +186,12 @@ impl Session {
     /// Recomputes, draws every attached plot canvas (sized by the page at `scale` =
     /// devicePixelRatio) and returns `{readouts, descriptions, time_span}`.
     pub fn update(&mut self, scale: f64, dark: bool) -> Result<JsValue, JsError> {
+        if PANIC_ARMED.swap(false, std::sync::atomic::Ordering::SeqCst) {
+            #[allow(clippy::panic)]
+            {
+                panic!("deliberate panic armed by armPanicForTests");
+            }
+        }
         let frame = self.demo.update(&self.params);
         let mut derived = Vec::new();
         for (key, value) in self.demo.derived_params() {
