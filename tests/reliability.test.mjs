@@ -34,7 +34,7 @@ test('a panic in wasm is reported in the page and the next input recovers', asyn
   assert.match(await page.textContent('.notice-error'), /Something went wrong[\s\S]*deliberate panic/);
   // The hook logged the panic; nothing else went to the console.
   assert.equal(errors.length, 1);
-  assert.match(errors[0], /Zeta Lab internal error: .*deliberate panic/);
+  assert.match(errors[0], /Zeta Lab internal error: [\s\S]*deliberate panic/);
   await page.keyboard.press('ArrowRight');
   await waitForReadout(page, 'zeta', 0.22);
   assert.equal(await readout(page, 'regime'), 'underdamped');
