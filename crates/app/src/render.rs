@@ -238,6 +238,7 @@ where
         .label_style(font(12.0))
         .bold_line_style(theme.grid.stroke_width(px(1.0, scale)))
         .light_line_style(theme.grid_minor.stroke_width(px(1.0, scale)))
+        .max_light_lines(4)
         .axis_style(fg.stroke_width(px(1.0, scale)))
         .x_labels(6)
         .y_labels(6)
