@@ -11,6 +11,7 @@ pub mod demos;
 pub mod export;
 pub mod figure;
 pub mod format;
+pub mod i18n;
 pub mod params;
 pub mod render;
 pub mod schematic;
