@@ -33,8 +33,8 @@ pub struct Analogy;
 const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mi>m</mi><mover><mi>x</mi><mo>¨</mo></mover><mo>+</mo><mi>c</mi><mover><mi>x</mi><mo>˙</mo></mover>\
 <mo>+</mo><mi>k</mi><mi>x</mi><mo>=</mo><mi>F</mi><mo>(</mo><mi>t</mi><mo>)</mo>\
-<mspace width=\"1em\"/><mo>⟷</mo><mspace width=\"1em\"/>\
-<mi>L</mi><mover><mi>q</mi><mo>¨</mo></mover><mo>+</mo><mi>R</mi><mover><mi>q</mi><mo>˙</mo></mover>\
+</mrow></math>\
+<math display=\"block\"><mrow><mo>⟷</mo><mspace width=\"0.5em\"/><mi>L</mi><mover><mi>q</mi><mo>¨</mo></mover><mo>+</mo><mi>R</mi><mover><mi>q</mi><mo>˙</mo></mover>\
 <mo>+</mo><mfrac><mi>q</mi><mi>C</mi></mfrac><mo>=</mo><mi>E</mi><mo>(</mo><mi>t</mi><mo>)</mo>\
 </mrow></math>";
 
@@ -117,6 +117,16 @@ fn line(label: impl Into<String>, points: Vec<(f64, f64)>, style: LineStyle) -> 
 
 fn styled(color: usize, dash: Dash, width: f64) -> LineStyle {
     LineStyle { color, dash, width }
+}
+
+/// A dimensionless number with 3 significant digits and no trailing zeros (`0.05`, `2`).
+fn plain(v: f64) -> String {
+    let s = si(v, "", 3);
+    if s.contains('.') && !s.contains('e') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
 }
 
 fn label(text: &str, at: (f64, f64)) -> Marker {
@@ -545,7 +555,7 @@ fn response_figure(tw: &Twins) -> Figure {
         "{} (ζ = {}): the mechanical x/x₀ and electrical q/q₀ coincide, as do the \
          velocity v/(x₀ωₙ) and current i/(q₀ω₀) ({}); {}.",
         regime.key(),
-        si(zeta, "", 3),
+        plain(zeta),
         same,
         motion
     );
@@ -717,6 +727,14 @@ mod tests {
         assert!(lo < 0.0 && hi > CIRCUIT_DX, "both drawings present");
         assert!(hi <= fig.x.range.1 && lo >= fig.x.range.0);
         assert!(fig.description.contains("capacitor"));
+    }
+
+    #[test]
+    fn plain_numbers_drop_trailing_zeros_only() {
+        assert_eq!(plain(0.05), "0.05");
+        assert_eq!(plain(0.0), "0");
+        assert_eq!(plain(20.0), "20");
+        assert_eq!(plain(1.5), "1.5");
     }
 
     #[test]

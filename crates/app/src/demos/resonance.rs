@@ -41,8 +41,8 @@ const VIEWS: [(&str, &str); 2] = [("linear", "linear |H|"), ("db", "decibels 20�
 const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mi>m</mi><mover><mi>x</mi><mo>¨</mo></mover><mo>+</mo><mi>c</mi><mover><mi>x</mi><mo>˙</mo></mover>\
 <mo>+</mo><mi>k</mi><mi>x</mi><mo>=</mo><msub><mi>F</mi><mn>0</mn></msub><mi>cos</mi><mo>⁡</mo>\
-<mo>(</mo><mi>ω</mi><mi>t</mi><mo>)</mo><mo>,</mo><mspace width=\"1em\"/>\
-<mi>H</mi><mo>(</mo><mi>r</mi><mo>)</mo><mo>=</mo><mfrac><mn>1</mn><mrow><mn>1</mn><mo>−</mo>\
+<mo>(</mo><mi>ω</mi><mi>t</mi><mo>)</mo></mrow></math>\
+<math display=\"block\"><mrow><mi>H</mi><mo>(</mo><mi>r</mi><mo>)</mo><mo>=</mo><mfrac><mn>1</mn><mrow><mn>1</mn><mo>−</mo>\
 <msup><mi>r</mi><mn>2</mn></msup><mo>+</mo><mn>2</mn><mi>i</mi><mi>ζ</mi><mi>r</mi></mrow></mfrac>\
 </mrow></math>";
 
@@ -172,8 +172,14 @@ fn clip_above(points: &mut [(f64, f64)], top: f64) {
     }
 }
 
+/// A dimensionless number with 3 significant digits and no trailing zeros (`0.05`, `1.05`).
 fn fmt_ratio(r: f64) -> String {
-    si(r, "", 3)
+    let s = si(r, "", 3);
+    if s.contains('.') && !s.contains('e') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
 }
 
 fn degrees(rad: f64) -> f64 {
@@ -184,7 +190,7 @@ impl Demo for Resonance {
     fn spec(&self) -> DemoSpec {
         DemoSpec {
             id: "resonance",
-            title: "Resonance: forced harmonic response",
+            title: "Forced resonance",
             summary: "A 1 kg mass on a spring (k = ωₙ²·m) and damper (c = 2ζωₙ·m), at rest, is \
                       driven from t = 0 by F(t) = F₀·cos(ωt). In the steady state it moves at the \
                       drive frequency with amplitude |H(r)|·F₀/k, lagging the force by the phase \
@@ -445,8 +451,11 @@ fn magnitude_figure(inp: &Inputs, grid: &[f64]) -> Figure {
         let label = if i == 0 { "family ζ = 0.01 … 1" } else { "" };
         series.push(line(label, pts, styled(6, Dash::Dotted, 1.2)));
         if LABELLED.contains(&zf) {
-            let at = (1.08, gain(1.0, zf, db));
-            if at.1 < 0.93 * top {
+            // Beside the peaks, level with |H(1)| = 1/(2ζ); in the linear view only where
+            // the curves are far enough apart to tell which label is which.
+            let at = (1.3, gain(1.0, zf, db));
+            let floor = if db { y_range.0 } else { 0.12 * top };
+            if at.1 < 0.93 * top && at.1 > floor {
                 markers.push(Marker {
                     label: format!("ζ = {zf}"),
                     at,
@@ -493,7 +502,7 @@ fn magnitude_figure(inp: &Inputs, grid: &[f64]) -> Figure {
     let mut cur: Vec<(f64, f64)> = grid.iter().map(|&r| (r, gain(r, z, db))).collect();
     clip_above(&mut cur, top);
     series.push(line(
-        format!("current ζ = {}", si(z, "", 3)),
+        format!("current ζ = {}", fmt_ratio(z)),
         cur,
         LineStyle::solid(0, 3.0),
     ));
@@ -535,7 +544,7 @@ fn magnitude_figure(inp: &Inputs, grid: &[f64]) -> Figure {
     let description = format!(
         "Magnitude{} for ζ = {}: {}; {}. At the drive r = {} the amplification is {}.",
         if db { " in dB" } else { "" },
-        si(z, "", 3),
+        fmt_ratio(z),
         peak_text,
         band_text,
         fmt_ratio(inp.r),
@@ -574,7 +583,7 @@ fn phase_figure(inp: &Inputs, grid: &[f64]) -> Figure {
         series.push(line(label, pts, styled(6, Dash::Dotted, 1.2)));
     }
     series.push(line(
-        format!("current ζ = {}", si(z, "", 3)),
+        format!("current ζ = {}", fmt_ratio(z)),
         grid.iter()
             .map(|&r| (r, degrees(frf::phase(r, z))))
             .collect(),
@@ -604,7 +613,7 @@ fn phase_figure(inp: &Inputs, grid: &[f64]) -> Figure {
         "Phase of the displacement behind the force for ζ = {}: 0° at low frequency, −90° at \
          r = 1 for every damping ratio, towards −180° above resonance; the smaller ζ, the \
          sharper the switch. At the drive r = {} the lag is {} ({} rad).",
-        si(z, "", 3),
+        fmt_ratio(z),
         fmt_ratio(inp.r),
         si(degrees(ph), "°", 3),
         si(ph, "", 4),
@@ -632,7 +641,8 @@ fn time_figure(inp: &Inputs, resp: &HarmonicResponse, t_end: f64) -> Figure {
         .filter(|v| v.is_finite())
         .fold(0.0, f64::max);
     let mut series = Vec::with_capacity(5);
-    let has_envelope = resp.envelope(0.0).is_some();
+    // The slow envelope is informative only while the free motion rings for a while.
+    let has_envelope = inp.zeta < 0.5 && resp.envelope(0.0).is_some();
     if has_envelope {
         let env: Vec<(f64, f64)> = times
             .clone()
