@@ -71,6 +71,11 @@ for (const [name, preset] of PRESETS) {
       const [ink] = await canvasFingerprint(page, plot);
       assert.ok(ink > 2000, `${plot} has ink (${ink} px)`);
     }
+    // The text alternatives name the regime and say the two machines agree.
+    const responses = await page.textContent('#desc-responses');
+    assert.ok(responses.startsWith(expected(values).regime), responses);
+    assert.match(responses, /coincide/);
+    assert.match(await page.textContent('#desc-energy'), /spring.*capacitor/);
     await page.screenshot({ path: `${SHOTS}analogy-${name}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);
     await context.close();

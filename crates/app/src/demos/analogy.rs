@@ -288,12 +288,12 @@ impl Demo for Analogy {
                 PlotSpec {
                     key: "responses",
                     title: "Normalised responses of both machines",
-                    aspect: 1.9,
+                    aspect: 1.6,
                 },
                 PlotSpec {
                     key: "energy",
                     title: "Energy exchange",
-                    aspect: 1.7,
+                    aspect: 1.4,
                 },
             ],
             presets: vec![
@@ -531,7 +531,7 @@ fn response_figure(tw: &Twins) -> Figure {
     let all = xs.iter().chain(&vs).chain(&qs).chain(&is).map(|p| p.1);
     let (lo, hi) = finite_extent(all).unwrap_or((-1.0, 1.0));
     let (lo, hi) = padded((lo.min(-0.2), hi.max(1.0)), 0.06);
-    let y = (lo, hi + 0.3 * (hi - lo));
+    let y = (lo, hi + 0.45 * (hi - lo));
     let regime = tw.mech.regime();
     let zeta = tw.mech.damping_ratio().unwrap_or(0.0);
     let motion = match tw.mech.damped_frequency() {
@@ -562,10 +562,10 @@ fn response_figure(tw: &Twins) -> Figure {
     Figure {
         description,
         series: vec![
-            line("mechanical x/x₀", xs, LineStyle::solid(0, 3.5)),
-            line("electrical q/q₀", qs, styled(1, Dash::Dashed, 2.0)),
-            line("mechanical v/(x₀ωₙ)", vs, LineStyle::solid(2, 3.5)),
-            line("electrical i/(q₀ω₀)", is, styled(3, Dash::Dotted, 2.0)),
+            line("x/x₀ mass", xs, LineStyle::solid(0, 3.5)),
+            line("q/q₀ circuit", qs, styled(1, Dash::Dashed, 2.0)),
+            line("v/(x₀ωₙ) mass", vs, LineStyle::solid(2, 3.5)),
+            line("i/(q₀ω₀) circuit", is, styled(3, Dash::Dotted, 2.0)),
         ],
         origin_lines: true,
         ..Figure::plot(
@@ -607,30 +607,51 @@ fn energy_figure(tw: &Twins) -> Figure {
     let left = tot_m.last().map_or(0.0, |p| p.1);
     let kinetic_peak = mass.iter().map(|p| p.1).fold(0.0, f64::max);
     let t_end = tw.window();
+    let exchange = if tw.mech.damped_frequency().is_some() {
+        format!(
+            "It swings to the mass (inductor), at most {} at once, and back, twice per cycle",
+            si(kinetic_peak, "J", 3)
+        )
+    } else {
+        format!(
+            "Without oscillating, at most {} passes through the mass (inductor)",
+            si(kinetic_peak, "J", 3)
+        )
+    };
+    let loss = if left >= 0.999_999 * e0 {
+        format!(
+            "with no damper (resistor) it is all still there after {}",
+            si(t_end, "s", 3)
+        )
+    } else {
+        format!(
+            "the damper c (resistor R) turns it into heat, leaving {} ({}) after {}",
+            si(left, "J", 3),
+            si(100.0 * left / e0.max(1e-300), "%", 3),
+            si(t_end, "s", 3)
+        )
+    };
     let description = format!(
-        "At t = 0 all {} is stored in the spring, and equally in the capacitor. It moves to \
-         the mass (inductor), at most {} at once, and back; the damper c (resistor R) turns \
-         it into heat, leaving {} ({}) after {}. The mechanical and electrical curves coincide.",
+        "At t = 0 all {} is stored in the spring, and equally in the capacitor. {}; {}. \
+         The mechanical and electrical curves coincide.",
         si(e0, "J", 3),
-        si(kinetic_peak, "J", 3),
-        si(left, "J", 3),
-        si(100.0 * left / e0.max(1e-300), "%", 3),
-        si(t_end, "s", 3),
+        exchange,
+        loss
     );
     Figure {
         description,
         series: vec![
-            line("spring ½kx²", spring, LineStyle::solid(0, 3.5)),
-            line("capacitor ½q²/C", cap, styled(1, Dash::Dashed, 2.0)),
-            line("mass ½mv²", mass, LineStyle::solid(2, 3.5)),
-            line("inductor ½Li²", ind, styled(3, Dash::Dotted, 2.0)),
-            line("total, mechanical", tot_m, LineStyle::solid(6, 2.5)),
-            line("total, electrical", tot_e, styled(4, Dash::Dashed, 1.5)),
+            line("½kx² spring", spring, LineStyle::solid(0, 3.5)),
+            line("½q²/C capacitor", cap, styled(1, Dash::Dashed, 2.0)),
+            line("½mv² mass", mass, LineStyle::solid(2, 3.5)),
+            line("½Li² inductor", ind, styled(3, Dash::Dotted, 2.0)),
+            line("total, mass", tot_m, LineStyle::solid(6, 2.5)),
+            line("total, circuit", tot_e, styled(4, Dash::Dashed, 1.5)),
         ],
         ..Figure::plot(
             "Energy exchange",
             Axis::linear("time t", "s", (0.0, t_end)),
-            Axis::linear("energy", "J", (0.0, 1.9 * e0.max(1e-300))),
+            Axis::linear("energy", "J", (0.0, 2.1 * e0.max(1e-300))),
         )
     }
 }

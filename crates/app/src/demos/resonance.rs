@@ -267,12 +267,12 @@ impl Demo for Resonance {
                 PlotSpec {
                     key: "magnitude",
                     title: "Amplification |H(r)|",
-                    aspect: 1.6,
+                    aspect: 1.4,
                 },
                 PlotSpec {
                     key: "phase",
                     title: "Phase ∠H(r)",
-                    aspect: 1.6,
+                    aspect: 1.4,
                 },
                 PlotSpec {
                     key: "time",
