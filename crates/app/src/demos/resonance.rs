@@ -537,7 +537,7 @@ fn magnitude_figure(inp: &Inputs, grid: &[f64]) -> Figure {
         Some(p) => format!(
             "resonant peak {} at r = {}",
             unit_text(p.gain),
-            fmt_ratio(p.ratio)
+            si(p.ratio, "", 4)
         ),
         None => "no resonant peak (ζ ≥ 1/√2): |H| only falls from 1 at r = 0".to_string(),
     };
@@ -641,8 +641,11 @@ fn time_figure(inp: &Inputs, resp: &HarmonicResponse, t_end: f64) -> Figure {
         .filter(|v| v.is_finite())
         .fold(0.0, f64::max);
     let mut series = Vec::with_capacity(5);
-    // The slow envelope is informative only while the free motion rings for a while.
-    let has_envelope = inp.zeta < 0.5 && resp.envelope(0.0).is_some();
+    // The envelope is informative only while it varies slowly against the oscillation
+    // (near resonance: slow beats or a build-up) and the free motion rings for a while.
+    let slowest = TAU / inp.wn.min(inp.r * inp.wn);
+    let slow = resp.beat_period().is_none_or(|tb| tb > 3.0 * slowest);
+    let has_envelope = inp.zeta < 0.5 && slow && resp.envelope(0.0).is_some();
     if has_envelope {
         let env: Vec<(f64, f64)> = times
             .clone()
@@ -850,6 +853,18 @@ mod tests {
         let d = &beat.figures[2].description;
         assert!(d.contains("beat"), "{d}");
         assert!(value(&beat, "beat_period").is_some());
+        let labels = |f: &Frame| -> Vec<String> {
+            f.figures[2]
+                .series
+                .iter()
+                .map(|s| s.label.clone())
+                .collect()
+        };
+        assert!(labels(&beat).iter().any(|l| l.starts_with("envelope")));
+        // Far from resonance the "envelope" would wobble faster than the motion: not drawn.
+        assert!(!labels(&run("zeta=0.1&r=0.2"))
+            .iter()
+            .any(|l| l.starts_with("envelope")));
     }
 
     #[test]
