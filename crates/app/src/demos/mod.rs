@@ -6,7 +6,9 @@ use crate::params::Params;
 use crate::spec::DemoSpec;
 use serde::Serialize;
 
+pub mod analogy;
 pub mod regimes;
+pub mod resonance;
 
 /// One computed readout, ready for the page.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -87,12 +89,14 @@ pub trait Demo {
 }
 
 /// Ids of every demo, in menu order.
-pub const IDS: &[&str] = &["regimes"];
+pub const IDS: &[&str] = &["regimes", "resonance", "analogy"];
 
 /// A new instance of the demo `id`, or `None` if there is no such demo.
 pub fn create(id: &str) -> Option<Box<dyn Demo>> {
     match id {
         "regimes" => Some(Box::new(regimes::Regimes)),
+        "resonance" => Some(Box::new(resonance::Resonance::default())),
+        "analogy" => Some(Box::new(analogy::Analogy)),
         _ => None,
     }
 }
