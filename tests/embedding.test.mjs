@@ -155,8 +155,8 @@ test('the share dialog builds the link and iframe snippet with a live preview', 
   const link = await page.inputValue('#share-link');
   assert.match(link, /\?demo=regimes&wn=6&zeta=0\.35&x0=0\.06&v0=0$/);
   await page.check('#share-autoplay');
-  await page.uncheck('#share-Plots-shown-poles');
-  await page.check('#share-Sliders-locked-wn');
+  await page.uncheck('#share-plots-poles');
+  await page.check('#share-locked-wn');
   const snippet = await page.inputValue('#share-snippet');
   assert.match(snippet, /^<iframe src="[^"]*embed=1[^"]*lock=wn[^"]*plots=response[^"]*autoplay=1/);
   assert.match(snippet, /sandbox="allow-scripts allow-same-origin allow-downloads"/);

@@ -1,13 +1,14 @@
 // Zeta Lab front end: loads the wasm module, builds the chosen demo from its Rust
 // declaration, and redraws at most once per animation frame while controls move.
 // No physics here: every number comes from the Session (Rust).
-import init, { Session, demoList, takePanicMessage } from '../zeta-app.js';
+import init, { Session, demoList, setLanguage, takePanicMessage } from '../zeta-app.js';
 import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
 import { currentQuery, demoFromUrl, writeState } from './url.js';
 import { download } from './download.js';
 import { applyEmbedView, connectHost, embedOptions } from './embed.js';
 import { createSonifier } from './sound.js';
 import { openShareDialog } from './share.js';
+import { LANG, num, t, translatePage } from './i18n.js';
 
 const DEFAULT_DEMO = 'regimes';
 const ANNOUNCE_DELAY_MS = 1200;
@@ -48,7 +49,7 @@ function reportFailure(err) {
   const panic = takePanicMessage();
   const text = panic || (err && err.message) || String(err);
   console.warn('Zeta Lab recovered from an error:', text);
-  notify(app.notices, `Something went wrong and the demo was restarted: ${text}`, 'error');
+  notify(app.notices, t('failed', { text }), 'error');
   app.needsRecovery = true;
 }
 
@@ -171,8 +172,8 @@ function drawTime(dpr = window.devicePixelRatio || 1) {
   anim.caption.textContent = text;
   const [t0, t1] = app.timeSpan;
   anim.scrub.value = String(Math.round(((app.time - t0) / (t1 - t0)) * 1000));
-  anim.time.textContent = `t = ${app.time.toFixed(2)} s`;
-  anim.scrub.setAttribute('aria-valuetext', `time ${app.time.toFixed(2)} seconds`);
+  anim.time.textContent = `t = ${num(app.time, 2)} s`;
+  anim.scrub.setAttribute('aria-valuetext', t('timeWords', { t: num(app.time, 2) }));
   for (const [key, { overlay }] of app.view.overlays) {
     const ctx = overlay.getContext('2d');
     ctx.clearRect(0, 0, overlay.width, overlay.height);
@@ -258,7 +259,7 @@ function wireAnimation() {
   anim.sound.addEventListener('click', () => {
     const on = !app.sound.enabled && app.sound.start();
     if (!on) app.sound.stop();
-    anim.sound.textContent = on ? 'Sound on' : 'Sound off';
+    anim.sound.textContent = on ? t('soundOn') : t('soundOff');
     anim.sound.setAttribute('aria-pressed', String(on));
   });
   anim.scrub.addEventListener('input', () => {
@@ -273,7 +274,7 @@ function setPlaying(on) {
   const anim = app.view && app.view.animation;
   if (!anim) return;
   app.playing = on;
-  anim.play.textContent = on ? 'Pause' : 'Play';
+  anim.play.textContent = on ? t('pause') : t('play');
   anim.play.setAttribute('aria-pressed', String(on));
   if (on) {
     if (app.timeSpan && app.time >= app.timeSpan[1]) app.time = app.timeSpan[0];
@@ -488,6 +489,7 @@ function onKey(ev) {
 }
 
 async function main() {
+  translatePage();
   applyForcedTheme();
   app.root = document.getElementById('demo');
   app.notices = document.getElementById('notices');
@@ -499,16 +501,17 @@ async function main() {
     app.root.replaceChildren();
     const p = document.createElement('p');
     p.className = 'notice notice-error';
-    p.textContent = `The solver could not be loaded (${err && err.message ? err.message : err}). This page needs WebAssembly.`;
+    p.textContent = t('noWasm', { text: err && err.message ? err.message : err });
     app.root.append(p);
     return;
   }
+  setLanguage(LANG);
   const list = demoList();
   buildMenu(list);
   const wanted = demoFromUrl();
   const known = list.some((d) => d.id === wanted);
   if (wanted !== null && !known) {
-    notify(app.notices, `There is no demo called “${wanted.slice(0, 40)}”; showing ${DEFAULT_DEMO}.`, 'warn');
+    notify(app.notices, t('noDemo', { id: wanted.slice(0, 40), fallback: DEFAULT_DEMO }), 'warn');
   }
   openDemo(known ? wanted : DEFAULT_DEMO, known ? currentQuery() : null);
   new ResizeObserver(() => requestDraw()).observe(app.root);

@@ -1,3 +1,5 @@
+import { t } from './i18n.js';
+
 // The "Share / Embed" dialog: builds the link and the <iframe> snippet for the current
 // view and the chosen embed options, with copy buttons and a live preview.
 
@@ -33,19 +35,19 @@ export function iframeSnippet(url, width, height, title) {
 async function copy(text, button) {
   try {
     await navigator.clipboard.writeText(text);
-    button.textContent = 'Copied';
+    button.textContent = t('copied');
   } catch {
-    button.textContent = 'Select and copy (Ctrl+C)';
+    button.textContent = t('copyManual');
   }
-  setTimeout(() => { button.textContent = 'Copy'; }, 2000);
+  setTimeout(() => { button.textContent = t('copy'); }, 2000);
 }
 
-function checkboxList(legend, items, checked) {
+function checkboxList(legend, items, checked, group) {
   const box = el('fieldset', { class: 'share-list' });
   box.append(el('legend', {}, legend));
   const inputs = [];
   for (const [key, label] of items) {
-    const id = `share-${legend.replace(/\W+/g, '-')}-${key}`;
+    const id = `share-${group}-${key}`;
     const input = el('input', { type: 'checkbox', id, value: key });
     input.checked = checked(key);
     const lab = el('label', { for: id }, label);
@@ -61,7 +63,7 @@ function checkboxList(legend, items, checked) {
 export function openShareDialog({ demoId, values, spec }) {
   document.getElementById('share-dialog')?.remove();
   const dialog = el('dialog', { id: 'share-dialog', 'aria-labelledby': 'share-title' });
-  dialog.append(el('h2', { id: 'share-title' }, `Share or embed “${spec.title}”`));
+  dialog.append(el('h2', { id: 'share-title' }, t('shareTitle', { title: spec.title })));
   const base = window.location.origin + window.location.pathname;
 
   const embed = el('input', { type: 'checkbox', id: 'share-embed' });
@@ -77,29 +79,29 @@ export function openShareDialog({ demoId, values, spec }) {
     d.append(input, el('label', { for: input.id }, text));
     return d;
   };
-  opts.append(row(embed, ' Embed view (no site header)'), row(autoplay, ' Start the animation'));
+  opts.append(row(embed, t('embedView')), row(autoplay, t('autoplay')));
   const sizes = el('div', { class: 'share-sizes' });
-  sizes.append(el('label', { for: 'share-theme' }, 'Theme '), theme,
-    el('label', { for: 'share-width' }, ' Width '), width, el('label', { for: 'share-height' }, ' Height '), height);
+  sizes.append(el('label', { for: 'share-theme' }, t('theme')), theme,
+    el('label', { for: 'share-width' }, t('width')), width, el('label', { for: 'share-height' }, t('height')), height);
   opts.append(sizes);
   const params = spec.params.map((p) => [p.key, `${p.label} (${p.key})`]);
-  const shown = checkboxList('Sliders shown', params, () => true);
-  const locked = checkboxList('Sliders locked', params, () => false);
-  const plots = checkboxList('Plots shown', spec.plots.map((p) => [p.key, p.title]), () => true);
+  const shown = checkboxList(t('slidersShown'), params, () => true, 'shown');
+  const locked = checkboxList(t('slidersLocked'), params, () => false, 'locked');
+  const plots = checkboxList(t('plotsShown'), spec.plots.map((p) => [p.key, p.title]), () => true, 'plots');
   const lists = el('div', { class: 'share-lists' });
   lists.append(shown.box, locked.box, plots.box);
 
-  const link = el('input', { type: 'text', readonly: '', id: 'share-link', 'aria-label': 'Link to this view' });
-  const copyLink = el('button', { type: 'button' }, 'Copy');
-  const snippet = el('textarea', { readonly: '', rows: '3', id: 'share-snippet', 'aria-label': 'Embed code' });
-  const copySnippet = el('button', { type: 'button' }, 'Copy');
-  const preview = el('iframe', { title: 'Preview of the embedded demo', sandbox: 'allow-scripts allow-same-origin', class: 'share-preview' });
-  const close = el('button', { type: 'button', class: 'share-close' }, 'Close');
+  const link = el('input', { type: 'text', readonly: '', id: 'share-link', 'aria-label': t('link') });
+  const copyLink = el('button', { type: 'button' }, t('copy'));
+  const snippet = el('textarea', { readonly: '', rows: '3', id: 'share-snippet', 'aria-label': t('embedCode') });
+  const copySnippet = el('button', { type: 'button' }, t('copy'));
+  const preview = el('iframe', { title: t('preview'), sandbox: 'allow-scripts allow-same-origin', class: 'share-preview' });
+  const close = el('button', { type: 'button', class: 'share-close' }, t('close'));
 
   const linkRow = el('div', { class: 'share-row' });
-  linkRow.append(el('label', { for: 'share-link' }, 'Link'), link, copyLink);
+  linkRow.append(el('label', { for: 'share-link' }, t('link')), link, copyLink);
   const snipRow = el('div', { class: 'share-row' });
-  snipRow.append(el('label', { for: 'share-snippet' }, 'Embed code'), snippet, copySnippet);
+  snipRow.append(el('label', { for: 'share-snippet' }, t('embedCode')), snippet, copySnippet);
   dialog.append(opts, lists, linkRow, snipRow, preview, close);
 
   let timer = null;

@@ -2,6 +2,8 @@
 // Every string from outside is inserted with textContent, never as HTML; the only markup
 // inserted is the equation's MathML, which comes from the compiled Rust declaration.
 
+import { t } from './i18n.js';
+
 const LOG_STEPS = 1000;
 
 function el(tag, attrs = {}, text) {
@@ -75,7 +77,7 @@ function paramControl(param) {
     max: param.max,
     step: param.scale === 'log' ? 'any' : param.step,
     inputmode: 'decimal',
-    'aria-label': `${param.label} (${param.symbol})${unitSuffix(param.unit)}, exact value`,
+    'aria-label': `${param.label} (${param.symbol})${unitSuffix(param.unit)}, ${t('exactValue')}`,
   });
   wrap.append(label, el('div', { class: 'param-inputs' }, undefined));
   wrap.lastChild.append(range, number);
@@ -95,7 +97,7 @@ export function buildDemo(root, spec) {
   head.append(eq, el('p', { class: 'summary' }, spec.summary));
 
   const panel = el('div', { class: 'panel' });
-  const form = el('form', { class: 'controls', 'aria-label': 'Parameters' });
+  const form = el('form', { class: 'controls', 'aria-label': t('parameters') });
   form.addEventListener('submit', (e) => e.preventDefault());
   const controls = new Map();
   for (const p of spec.params) {
@@ -109,11 +111,11 @@ export function buildDemo(root, spec) {
       controls.set(p.key, { param: p, range: c.range, number: c.number });
     }
   }
-  const reset = el('button', { type: 'button', class: 'reset' }, 'Reset to defaults');
+  const reset = el('button', { type: 'button', class: 'reset' }, t('reset'));
   const presets = [];
   if (spec.presets.length) {
-    const box = el('div', { class: 'presets', role: 'group', 'aria-label': 'Presets' });
-    box.append(el('span', { class: 'presets-label' }, 'Presets'));
+    const box = el('div', { class: 'presets', role: 'group', 'aria-label': t('presets') });
+    box.append(el('span', { class: 'presets-label' }, t('presets')));
     for (const preset of spec.presets) {
       const b = el('button', { type: 'button', class: 'preset' }, preset.label);
       box.append(b);
@@ -125,7 +127,7 @@ export function buildDemo(root, spec) {
   actions.append(reset);
   form.append(actions);
 
-  const readoutBox = el('dl', { class: 'readouts', 'aria-label': 'Readouts' });
+  const readoutBox = el('dl', { class: 'readouts', 'aria-label': t('readouts') });
   const readouts = new Map();
   for (const r of spec.readouts) {
     const item = el('div', { class: 'readout', 'data-readout': r.key, 'data-value': '' });
@@ -154,9 +156,9 @@ export function buildDemo(root, spec) {
     stage.append(canvas, overlay, tip);
     const caption = el('figcaption', { id: `desc-${p.key}` });
     canvas.setAttribute('aria-describedby', caption.id);
-    const tools = el('div', { class: 'plot-tools', role: 'group', 'aria-label': `Export ${p.title}` });
+    const tools = el('div', { class: 'plot-tools', role: 'group', 'aria-label': t('exportGroup', { plot: p.title }) });
     for (const [format, text] of [['png', 'PNG'], ['svg', 'SVG'], ['csv', 'CSV']]) {
-      const b = el('button', { type: 'button', 'data-export': format, 'aria-label': `Download ${p.title} as ${text}` }, text);
+      const b = el('button', { type: 'button', 'data-export': format, 'aria-label': t('download', { plot: p.title, format: text }) }, text);
       tools.append(b);
       exports.push({ key: p.key, format, button: b });
     }
@@ -176,12 +178,12 @@ export function buildDemo(root, spec) {
 
 function buildAnimation(parent) {
   const fig = el('figure', { class: 'schematic' });
-  const canvas = el('canvas', { 'data-plot': 'schematic', role: 'img', 'aria-label': 'Animated schematic' });
+  const canvas = el('canvas', { 'data-plot': 'schematic', role: 'img', 'aria-label': t('schematic') });
   const bar = el('div', { class: 'anim-bar' });
-  const play = el('button', { type: 'button', class: 'play', 'aria-pressed': 'false' }, 'Play');
-  const scrub = el('input', { type: 'range', min: '0', max: '1000', step: '1', value: '0', 'aria-label': 'Animation time' });
+  const play = el('button', { type: 'button', class: 'play', 'aria-pressed': 'false' }, t('play'));
+  const scrub = el('input', { type: 'range', min: '0', max: '1000', step: '1', value: '0', 'aria-label': t('animTime') });
   const time = el('output', { class: 'anim-time' }, 't = 0 s');
-  const sound = el('button', { type: 'button', class: 'sound', 'aria-pressed': 'false', title: 'Hear x(t): pitch follows displacement' }, 'Sound off');
+  const sound = el('button', { type: 'button', class: 'sound', 'aria-pressed': 'false', title: t('soundHint') }, t('soundOff'));
   bar.append(play, scrub, time, sound);
   const caption = el('figcaption', { class: 'visually-hidden' });
   fig.append(canvas, bar, caption);
@@ -253,7 +255,7 @@ export function showReadouts(elements, readouts) {
 export function notify(box, message, kind = 'info') {
   const p = el('p', { class: `notice notice-${kind}` });
   p.append(el('span', {}, message));
-  const close = el('button', { type: 'button', class: 'notice-close', 'aria-label': 'Dismiss notice' }, '×');
+  const close = el('button', { type: 'button', class: 'notice-close', 'aria-label': t('dismiss') }, '×');
   close.addEventListener('click', () => p.remove());
   p.append(close);
   box.append(p);

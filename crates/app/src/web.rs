@@ -5,6 +5,7 @@
 use crate::canvas::{Canvas, Measured};
 use crate::demos::{self, Demo, Frame};
 use crate::export;
+use crate::i18n::{tr, Lang};
 use crate::params::{resolve_query, Notice, Params};
 use crate::render::{render, PlotGeometry};
 use crate::spec::DemoSpec;
@@ -38,6 +39,204 @@ pub fn arm_panic_for_tests() {
     PANIC_ARMED.store(true, std::sync::atomic::Ordering::SeqCst);
 }
 
+/// The interface language, set once by the page ([`set_language`]).
+static LANG: std::sync::atomic::AtomicU8 = std::sync::atomic::AtomicU8::new(0);
+
+fn lang() -> Lang {
+    match LANG.load(std::sync::atomic::Ordering::Relaxed) {
+        1 => Lang::Es,
+        _ => Lang::En,
+    }
+}
+
+/// Sets the language of every string the module returns (a BCP 47 tag: `en`, `es`, …);
+/// returns the tag in use.
+#[wasm_bindgen(js_name = setLanguage)]
+pub fn set_language(tag: &str) -> String {
+    let l = Lang::from_tag(tag);
+    LANG.store(
+        if l == Lang::Es { 1 } else { 0 },
+        std::sync::atomic::Ordering::Relaxed,
+    );
+    l.tag().to_string()
+}
+
+/// Translates, in place, every string of a figure that the page shows.
+fn translate_figure(fig: &mut crate::figure::Figure, l: Lang) {
+    if l == Lang::En {
+        return;
+    }
+    let t = |s: &mut String| *s = tr(l, s).into_owned();
+    t(&mut fig.title);
+    t(&mut fig.description);
+    t(&mut fig.x.label);
+    t(&mut fig.y.label);
+    for s in &mut fig.series {
+        t(&mut s.label);
+    }
+    for m in &mut fig.markers {
+        t(&mut m.label);
+    }
+    if let Some(h) = &mut fig.heatmap {
+        t(&mut h.label);
+    }
+}
+
+/// The spec with its human strings in language `l` (keys, symbols and units unchanged).
+fn translate_spec(spec: &DemoSpec, l: Lang) -> TranslatedSpec {
+    let t = |s: &str| tr(l, s).into_owned();
+    TranslatedSpec {
+        id: spec.id,
+        title: t(spec.title),
+        summary: t(spec.summary),
+        equation_mathml: spec.equation_mathml,
+        params: spec
+            .params
+            .iter()
+            .map(|p| TranslatedParam {
+                key: p.key,
+                label: t(p.label),
+                symbol: p.symbol,
+                unit: p.unit,
+                min: p.min,
+                max: p.max,
+                step: p.step,
+                default: p.default,
+                scale: p.scale,
+                kind: p.kind,
+                options: p.options.iter().map(|o| (o.key, t(o.label))).collect(),
+            })
+            .collect(),
+        readouts: spec
+            .readouts
+            .iter()
+            .map(|r| (r.key, t(r.label), r.unit))
+            .collect(),
+        plots: spec
+            .plots
+            .iter()
+            .map(|p| (p.key, t(p.title), p.aspect))
+            .collect(),
+        presets: spec
+            .presets
+            .iter()
+            .map(|p| (t(p.label), p.values.clone()))
+            .collect(),
+        table: spec.table.as_ref().map(|tb| TranslatedTable {
+            caption: t(tb.caption),
+            columns: tb.columns.iter().map(|c| t(c)).collect(),
+            rows: tb
+                .rows
+                .iter()
+                .map(|(k, cells)| (*k, cells.iter().map(|c| t(c)).collect()))
+                .collect(),
+            highlight_readout: tb.highlight_readout,
+        }),
+        schematic: spec.schematic,
+    }
+}
+
+#[derive(Serialize)]
+struct TranslatedParam {
+    key: &'static str,
+    label: String,
+    symbol: &'static str,
+    unit: &'static str,
+    min: f64,
+    max: f64,
+    step: f64,
+    default: f64,
+    scale: crate::spec::Scale,
+    kind: crate::spec::Kind,
+    #[serde(serialize_with = "options_as_objects")]
+    options: Vec<(&'static str, String)>,
+}
+
+fn options_as_objects<S: serde::Serializer>(
+    v: &[(&'static str, String)],
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeSeq;
+    #[derive(Serialize)]
+    struct Opt<'a> {
+        key: &'a str,
+        label: &'a str,
+    }
+    let mut seq = s.serialize_seq(Some(v.len()))?;
+    for (key, label) in v {
+        seq.serialize_element(&Opt { key, label })?;
+    }
+    seq.end()
+}
+
+#[derive(Serialize)]
+struct TranslatedTable {
+    caption: String,
+    columns: Vec<String>,
+    rows: Vec<(&'static str, Vec<String>)>,
+    highlight_readout: &'static str,
+}
+
+/// [`DemoSpec`] as the page receives it, in the page's language. Same field names.
+#[derive(Serialize)]
+struct TranslatedSpec {
+    id: &'static str,
+    title: String,
+    summary: String,
+    equation_mathml: &'static str,
+    params: Vec<TranslatedParam>,
+    #[serde(serialize_with = "readouts_as_objects")]
+    readouts: Vec<(&'static str, String, &'static str)>,
+    #[serde(serialize_with = "plots_as_objects")]
+    plots: Vec<(&'static str, String, f64)>,
+    #[serde(serialize_with = "presets_as_objects")]
+    presets: Vec<(String, Vec<(&'static str, f64)>)>,
+    table: Option<TranslatedTable>,
+    schematic: bool,
+}
+
+fn readouts_as_objects<S: serde::Serializer>(
+    v: &[(&'static str, String, &'static str)],
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    struct R<'a> {
+        key: &'a str,
+        label: &'a str,
+        unit: &'a str,
+    }
+    s.collect_seq(v.iter().map(|(key, label, unit)| R { key, label, unit }))
+}
+
+fn plots_as_objects<S: serde::Serializer>(
+    v: &[(&'static str, String, f64)],
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    struct P<'a> {
+        key: &'a str,
+        title: &'a str,
+        aspect: f64,
+    }
+    s.collect_seq(v.iter().map(|(key, title, aspect)| P {
+        key,
+        title,
+        aspect: *aspect,
+    }))
+}
+
+fn presets_as_objects<S: serde::Serializer>(
+    v: &[(String, Vec<(&'static str, f64)>)],
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    struct P<'a> {
+        label: &'a str,
+        values: &'a [(&'static str, f64)],
+    }
+    s.collect_seq(v.iter().map(|(label, values)| P { label, values }))
+}
+
 /// The message of the last panic, if any (read by the page after a failed call).
 #[wasm_bindgen(js_name = takePanicMessage)]
 pub fn take_panic_message() -> Option<String> {
@@ -52,7 +251,7 @@ fn to_js<T: Serialize>(v: &T) -> Result<JsValue, JsError> {
 #[derive(Serialize)]
 struct DemoEntry {
     id: &'static str,
-    title: &'static str,
+    title: String,
 }
 
 /// `[{id, title}]` of every demo, in menu order.
@@ -63,7 +262,7 @@ pub fn demo_list() -> Result<JsValue, JsError> {
         .filter_map(|id| demos::create(id).map(|d| d.spec()))
         .map(|s| DemoEntry {
             id: s.id,
-            title: s.title,
+            title: tr(lang(), s.title).into_owned(),
         })
         .collect();
     to_js(&list)
@@ -140,14 +339,17 @@ impl Session {
 
     /// The demo's declaration (see [`DemoSpec`]).
     pub fn spec(&self) -> Result<JsValue, JsError> {
-        to_js(&self.spec)
+        to_js(&translate_spec(&self.spec, lang()))
     }
 
     /// Applies a URL query string (`?demo=…&zeta=0.2`); returns the notices `[{key, message}]`.
     #[wasm_bindgen(js_name = applyQuery)]
     pub fn apply_query(&mut self, query: &str) -> Result<JsValue, JsError> {
-        let (params, notices) = resolve_query(&self.spec, query);
+        let (params, mut notices) = resolve_query(&self.spec, query);
         self.params = params;
+        for n in &mut notices {
+            n.message = tr(lang(), &n.message).into_owned();
+        }
         to_js(&notices)
     }
 
@@ -155,7 +357,12 @@ impl Session {
     /// `{value, notice}`, or `undefined` for an unknown key.
     pub fn set(&mut self, key: &str, raw: &str) -> Result<JsValue, JsError> {
         match self.params.set_raw(&self.spec, key, raw) {
-            Some((value, notice)) => to_js(&SetResult { value, notice }),
+            Some((value, mut notice)) => {
+                if let Some(n) = &mut notice {
+                    n.message = tr(lang(), &n.message).into_owned();
+                }
+                to_js(&SetResult { value, notice })
+            }
             None => Ok(JsValue::UNDEFINED),
         }
     }
@@ -192,7 +399,16 @@ impl Session {
                 panic!("deliberate panic armed by armPanicForTests");
             }
         }
-        let frame = self.demo.update(&self.params);
+        let mut frame = self.demo.update(&self.params);
+        let l = lang();
+        if l != Lang::En {
+            for r in &mut frame.readouts {
+                r.text = tr(l, &r.text).into_owned();
+            }
+            for f in &mut frame.figures {
+                translate_figure(f, l);
+            }
+        }
         let mut derived = Vec::new();
         for (key, value) in self.demo.derived_params() {
             if let Some((v, _)) = self.params.set_raw(&self.spec, key, &format!("{value}")) {
@@ -238,13 +454,14 @@ impl Session {
     /// Draws the schematic at time `t` [s]; returns its text alternative.
     #[wasm_bindgen(js_name = drawSchematic)]
     pub fn draw_schematic(&self, t: f64, scale: f64, dark: bool) -> Result<String, JsError> {
-        let (Some(canvas), Some(fig)) = (
+        let (Some(canvas), Some(mut fig)) = (
             &self.schematic_canvas,
             self.demo
                 .schematic(&self.params, if t.is_finite() { t } else { 0.0 }),
         ) else {
             return Ok(String::new());
         };
+        translate_figure(&mut fig, lang());
         if let Some(backend) = Canvas::new(canvas) {
             let scale = if scale.is_finite() {
                 scale.clamp(0.5, 4.0)
