@@ -66,10 +66,7 @@ const FAMILY: [(&str, f64); 6] = [
 const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mi>m</mi><mover><mi>x</mi><mo>¨</mo></mover><mo>+</mo><mi>c</mi><mover><mi>x</mi><mo>˙</mo></mover>\
 <mo>+</mo><mi>k</mi><mi>x</mi><mo>=</mo><mn>0</mn><mo>,</mo><mspace width=\"1em\"/>\
-<mi>x</mi><mo>(</mo><mn>0</mn><mo>)</mo><mo>=</mo><msub><mi>x</mi><mn>0</mn></msub><mo>,</mo>\
-<mspace width=\"0.5em\"/><mover><mi>x</mi><mo>˙</mo></mover><mo>(</mo><mn>0</mn><mo>)</mo><mo>=</mo><mn>0</mn>\
-<mo>,</mo><mspace width=\"1em\"/><mi>c</mi><mo>=</mo><mn>2</mn><mi>ζ</mi>\
-<msqrt><mi>k</mi><mi>m</mi></msqrt></mrow></math>";
+<mi>c</mi><mo>=</mo><mn>2</mn><mi>ζ</mi><msqrt><mi>k</mi><mi>m</mi></msqrt></mrow></math>";
 
 /// The `c`/`zeta` values seen at the previous update and published for the sliders.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -240,9 +237,9 @@ impl Demo for QuarterCar {
     fn spec(&self) -> DemoSpec {
         DemoSpec {
             id: "quarter-car",
-            title: "Quarter-car suspension: free response",
+            title: "Quarter-car suspension",
             summary: "One corner of a car: the body (sprung mass m) on a spring k and a damper \
-                      c over a fixed road, pushed down by x₀ and released. c and ζ are two \
+                      c over a fixed road, pushed by x₀ and released from rest (x′(0) = 0). c and ζ are two \
                       views of one damper, c = 2ζ√(km): move either and the other follows; \
                       changing m or k keeps the damper, so ζ moves. The grey family shows the \
                       textbook settings on this car: comfort (ζ ≈ 0.3–0.4) rebounds, \
@@ -405,6 +402,11 @@ fn family_legend(group: &str) -> &'static str {
     }
 }
 
+/// A percentage as typed on the slider: `5` → `"5 %"`, `2.5` → `"2.5 %"`.
+fn pct(v: f64) -> String {
+    format!("{} %", (v * 100.0).round() / 100.0)
+}
+
 fn crossings_text(n: u64) -> String {
     match n {
         0 => "does not cross equilibrium".to_string(),
@@ -474,7 +476,7 @@ impl QuarterCar {
         optimum: Option<ZetaOptimum>,
     ) -> Figure {
         let zeta = car.zeta();
-        let z_hi = (1.15 * zeta).clamp(2.0, 15.0);
+        let z_hi = (1.3 * zeta).clamp(2.0, 15.0);
         let z_lo = (0.9 * zeta).clamp(0.02, 0.1);
         let key = [cfg.wn, car.band.fraction(), z_lo, z_hi];
         let cache = &mut self.sweep;
@@ -543,7 +545,7 @@ impl QuarterCar {
                 color: 6,
             });
         }
-        let band = si(car.band_pct, "%", 3);
+        let band = pct(car.band_pct);
         let mut description = match optimum {
             Some(o) => format!(
                 "Settling time into the ±{band} band against ζ for this car: fastest at ζ = {} \
@@ -563,14 +565,15 @@ impl QuarterCar {
         });
         Figure {
             description,
+            // One curve, named by the axes and the title: no legend box to hide it.
             series: vec![Series {
-                label: format!("settling time, ±{band} band"),
+                label: String::new(),
                 points,
                 style: LineStyle::solid(0, 2.5),
             }],
             markers,
             ..Figure::plot(
-                "Settling time against ζ",
+                format!("Settling time into ±{band} against ζ"),
                 Axis::linear("damping ratio ζ", "", (0.0, z_hi)),
                 Axis::linear("settling time t_s", "s", (0.0, y_top)),
             )
@@ -697,7 +700,7 @@ fn describe_response(
     family_ts: &[Option<f64>],
 ) -> String {
     let regime = car.sys.regime();
-    let band = si(car.band_pct, "%", 3);
+    let band = pct(car.band_pct);
     let now = match metrics {
         Some(m) => {
             let settle = m
@@ -764,17 +767,25 @@ fn sensitivity_figure(
     let zeta = car.zeta();
     let z_opt = optimum.map(|o| o.zeta);
     let (z_min, z_max) = mass_spread.map_or((zeta, zeta), |s| (s.min, s.max));
-    let (xl, xh) = finite_extent([z_min, z_max, zeta, z_opt.unwrap_or(zeta)])
-        .map_or((0.0, 1.0), |r| padded(r, 0.12));
+    let (xl, xh) = finite_extent([z_min, z_max, zeta, z_opt.unwrap_or(zeta)]).map_or(
+        (0.0, 1.0),
+        |(lo, hi)| {
+            let span = (hi - lo).max(0.02 * hi.abs()).max(1e-6);
+            // Room on the right for the marker labels, which are drawn right of their point.
+            (lo - 0.1 * span, hi + 0.3 * span)
+        },
+    );
     let y = padded((m_lo.min(car.m), m_hi.max(car.m)), 0.25);
+    // No legend box (it would cover the curve): the axes name the curve, labels the rest.
     let mut series = vec![Series {
-        label: format!("ζ(m), m ± {}", si(car.dm_pct, "%", 3)),
+        label: String::new(),
         points,
         style: LineStyle::solid(0, 3.0),
     }];
+    let mut markers = Vec::with_capacity(4);
     if let Some(z) = z_opt {
         series.push(Series {
-            label: format!("fastest ζ = {}", si(z, "", 3)),
+            label: String::new(),
             points: vec![(z, y.0), (z, y.1)],
             style: LineStyle {
                 color: 1,
@@ -782,8 +793,15 @@ fn sensitivity_figure(
                 width: 1.5,
             },
         });
+        markers.push(Marker {
+            label: format!("fastest ζ {}", si(z, "", 3)),
+            at: (z + 0.01 * (xh - xl), y.1 - 0.04 * (y.1 - y.0)),
+            shape: MarkerShape::Label,
+            color: 1,
+        });
     }
-    let markers = vec![
+    let dm = pct(car.dm_pct);
+    markers.extend([
         Marker {
             label: "nominal".into(),
             at: (zeta, car.m),
@@ -791,25 +809,25 @@ fn sensitivity_figure(
             color: 6,
         },
         Marker {
-            label: String::new(),
+            label: format!("m − {dm}"),
             at: (zeta_at(m_lo), m_lo),
             shape: MarkerShape::Cross,
             color: 0,
         },
         Marker {
-            label: String::new(),
+            label: format!("m + {dm}"),
             at: (zeta_at(m_hi), m_hi),
             shape: MarkerShape::Cross,
             color: 0,
         },
-    ];
+    ]);
     let mut description = match mass_spread {
         Some(s) => format!(
             "With the sprung mass between {} and {} (±{}) and the same damper and spring, ζ \
              ranges from {} to {} (nominal {}); the linear estimate is {} to {}.",
             si(m_lo, "kg", 3),
             si(m_hi, "kg", 3),
-            si(car.dm_pct, "%", 3),
+            pct(car.dm_pct),
             si(s.min, "", 3),
             si(s.max, "", 3),
             si(s.nominal, "", 3),
