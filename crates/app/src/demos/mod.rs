@@ -8,6 +8,7 @@ use serde::Serialize;
 
 pub mod quarter_car;
 pub mod regimes;
+pub mod rlc;
 
 /// One computed readout, ready for the page.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -73,13 +74,14 @@ pub trait Demo {
 }
 
 /// Ids of every demo, in menu order.
-pub const IDS: &[&str] = &["regimes", "quarter-car"];
+pub const IDS: &[&str] = &["regimes", "quarter-car", "rlc"];
 
 /// A new instance of the demo `id`, or `None` if there is no such demo.
 pub fn create(id: &str) -> Option<Box<dyn Demo>> {
     match id {
         "regimes" => Some(Box::new(regimes::Regimes)),
         "quarter-car" => Some(Box::new(quarter_car::QuarterCar::new())),
+        "rlc" => Some(Box::new(rlc::Rlc)),
         _ => None,
     }
 }
