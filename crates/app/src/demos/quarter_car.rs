@@ -90,6 +90,8 @@ struct SweepCache {
     curves: ZetaCurves,
     /// `(ζ, t_s)` with a NaN break at every jump of the settling time.
     points: Vec<(f64, f64)>,
+    /// The fastest-settling ζ for `(ω_n, band)`.
+    optimum: Option<([f64; 2], Option<ZetaOptimum>)>,
 }
 
 /// The quarter-car demo. Holds the damper rate (see the module docs) and a sweep cache.
@@ -241,7 +243,7 @@ impl Demo for QuarterCar {
             summary: "One corner of a car: the body (sprung mass m) on a spring k and a damper \
                       c over a fixed road, pushed by x₀ and released from rest (x′(0) = 0). c and ζ are two \
                       views of one damper, c = 2ζ√(km): move either and the other follows; \
-                      changing m or k keeps the damper, so ζ moves. The grey family shows the \
+                      changing m or k keeps the damper, so ζ moves. The thin curves show the \
                       textbook settings on this car: comfort (ζ ≈ 0.3–0.4) rebounds, \
                       performance (ζ ≈ 0.65–0.7) settles fastest, critical (ζ = 1) and \
                       overdamped settings return without rebound but more slowly. Settling \
@@ -291,7 +293,7 @@ impl Demo for QuarterCar {
                 PlotSpec {
                     key: "response",
                     title: "Body displacement x(t)",
-                    aspect: 1.6,
+                    aspect: 1.3,
                 },
                 PlotSpec {
                     key: "settling",
@@ -301,7 +303,7 @@ impl Demo for QuarterCar {
                 PlotSpec {
                     key: "sensitivity",
                     title: "ζ when the sprung mass varies",
-                    aspect: 2.6,
+                    aspect: 2.0,
                 },
             ],
             presets: presets(),
@@ -395,10 +397,10 @@ fn family_style(group: &str) -> (LineStyle, Option<MarkerShape>) {
 
 fn family_legend(group: &str) -> &'static str {
     match group {
-        "comfort" => "comfort ζ 0.3, 0.4",
-        "performance" => "performance ζ 0.65, 0.7",
-        "critical" => "critical ζ 1 (×)",
-        _ => "overdamped ζ 2 (●)",
+        "comfort" => "comfort 0.3, 0.4",
+        "performance" => "performance 0.65, 0.7",
+        "critical" => "critical 1 (×)",
+        _ => "overdamped 2 (●)",
     }
 }
 
@@ -407,11 +409,16 @@ fn pct(v: f64) -> String {
     format!("{} %", (v * 100.0).round() / 100.0)
 }
 
-fn crossings_text(n: u64) -> String {
-    match n {
-        0 => "does not cross equilibrium".to_string(),
-        1 => "crosses equilibrium once".to_string(),
-        n => format!("crosses equilibrium {n} times"),
+/// How often the body swings through equilibrium before it settles (the solver counts
+/// crossings before the settling time; a later rebound inside the band is not counted).
+fn crossings_text(m: &FreeMetrics) -> String {
+    match (m.zero_crossings, m.rebound_time) {
+        (0, None) => "does not cross equilibrium".to_string(),
+        (0, Some(_)) => {
+            "settles before crossing equilibrium (its rebound stays inside the band)".to_string()
+        }
+        (1, _) => "crosses equilibrium once before settling".to_string(),
+        (n, _) => format!("crosses equilibrium {n} times before settling"),
     }
 }
 
@@ -426,7 +433,16 @@ impl QuarterCar {
             v0: 0.0,
             band: car.band,
         };
-        let optimum = fastest_settling_zeta(&cfg, OPTIMUM_RANGE.0, OPTIMUM_RANGE.1, OPTIMUM_GRID);
+        let opt_key = [wn, car.band.fraction()];
+        let optimum = match self.sweep.optimum {
+            Some((key, found)) if key == opt_key => found,
+            _ => {
+                let found =
+                    fastest_settling_zeta(&cfg, OPTIMUM_RANGE.0, OPTIMUM_RANGE.1, OPTIMUM_GRID);
+                self.sweep.optimum = Some((opt_key, found));
+                found
+            }
+        };
         let mass_spread = spread(
             &Components::Mechanical {
                 m: car.m,
@@ -648,9 +664,9 @@ fn response_figure(car: &Car, metrics: Option<FreeMetrics>) -> (Figure, f64) {
         });
     }
     let h = mm * car.band.fraction() * car.x0.abs();
-    for (sign, label) in [(1.0, "±band"), (-1.0, "")] {
+    for sign in [1.0, -1.0] {
         series.push(Series {
-            label: label.to_string(),
+            label: String::new(),
             points: vec![(0.0, sign * h), (t_end, sign * h)],
             style: LineStyle {
                 color: 6,
@@ -673,9 +689,17 @@ fn response_figure(car: &Car, metrics: Option<FreeMetrics>) -> (Figure, f64) {
     .unwrap_or((-mm * car.x0, mm * car.x0));
     // Head-room above x₀ for the legend box in the upper right.
     let span = hi - lo;
-    let y = (lo - 0.06 * span, hi + 0.45 * span);
+    let y = (lo - 0.06 * span, hi + 0.6 * span);
+    // Named under the lower band line, right of the middle: text hangs below its point, and
+    // there the curves are back near rest.
+    markers.push(Marker {
+        label: format!("±{} band", pct(car.band_pct)),
+        at: (0.62 * t_end, -h - 0.015 * span),
+        shape: MarkerShape::Label,
+        color: 6,
+    });
     series.push(Series {
-        label: format!("this design, ζ = {}", si(car.zeta(), "", 3)),
+        label: format!("this design, ζ {}", si(car.zeta(), "", 3)),
         points: current,
         style: LineStyle::solid(0, 3.0),
     });
@@ -719,7 +743,7 @@ fn describe_response(
                 "This design (ζ = {}, {}): {}, {}, {}.",
                 si(car.zeta(), "", 3),
                 regime.key(),
-                crossings_text(m.zero_crossings),
+                crossings_text(&m),
                 settle,
                 rebound
             )
@@ -793,12 +817,6 @@ fn sensitivity_figure(
                 width: 1.5,
             },
         });
-        markers.push(Marker {
-            label: format!("fastest ζ {}", si(z, "", 3)),
-            at: (z + 0.01 * (xh - xl), y.1 - 0.04 * (y.1 - y.0)),
-            shape: MarkerShape::Label,
-            color: 1,
-        });
     }
     let dm = pct(car.dm_pct);
     markers.extend([
@@ -821,6 +839,10 @@ fn sensitivity_figure(
             color: 0,
         },
     ]);
+    let x_label = match z_opt {
+        Some(z) => format!("damping ratio ζ (dashed: fastest ζ = {})", si(z, "", 3)),
+        None => "damping ratio ζ".to_string(),
+    };
     let mut description = match mass_spread {
         Some(s) => format!(
             "With the sprung mass between {} and {} (±{}) and the same damper and spring, ζ \
@@ -856,7 +878,7 @@ fn sensitivity_figure(
         markers,
         ..Figure::plot(
             "ζ when the sprung mass varies",
-            Axis::linear("damping ratio ζ", "", (xl, xh)),
+            Axis::linear(x_label, "", (xl, xh)),
             Axis::linear("sprung mass m", "kg", y),
         )
     }
@@ -1019,6 +1041,10 @@ mod tests {
             .description
             .clone();
         assert!(none.contains("oscillates forever"), "{none}");
+        let past_jump = run_on(&mut QuarterCar::new(), "zeta=0.7").figures[0]
+            .description
+            .clone();
+        assert!(past_jump.contains("settles before crossing"), "{past_jump}");
         let strip = run_on(&mut QuarterCar::new(), "zeta=0.7").figures[2]
             .description
             .clone();

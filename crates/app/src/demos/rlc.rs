@@ -124,12 +124,12 @@ impl Demo for Rlc {
                 PlotSpec {
                     key: "current",
                     title: "Current i(t)",
-                    aspect: 1.7,
+                    aspect: 1.35,
                 },
                 PlotSpec {
                     key: "voltage",
                     title: "Capacitor voltage v_C(t)",
-                    aspect: 1.7,
+                    aspect: 1.35,
                 },
             ],
             presets: [
@@ -294,7 +294,7 @@ fn plot(
             Signal::Voltage => c.v0.abs() * w0 / wd,
         };
         let alpha = c.sys.alpha();
-        for (sign, label) in [(1.0, "envelope ±e^(−αt)"), (-1.0, "")] {
+        for (sign, label) in [(1.0, "envelope"), (-1.0, "")] {
             let points = (0..=120)
                 .map(|i| {
                     let t = t_end * f64::from(i) / 120.0;
@@ -314,7 +314,7 @@ fn plot(
     }
     if let (Some(crit), false) = (critical, regime == Regime::CriticallyDamped) {
         series.push(Series {
-            label: format!("critical, R = {}", ohms(crit.b())),
+            label: format!("critical R = {}", ohms(crit.b())),
             points: sample(&crit),
             style: LineStyle {
                 color: 1,
@@ -339,9 +339,9 @@ fn plot(
     let (lo, hi) = (lo.min(-0.1 * scale), hi.max(0.1 * scale));
     // Head-room above the data for the legend in the upper right.
     let span = hi - lo;
-    let y = padded((lo, hi + 0.35 * span), 0.05);
+    let y = padded((lo, hi + 0.5 * span), 0.05);
     series.push(Series {
-        label: format!("R = {}, {}", ohms(c.r), regime.key()),
+        label: format!("R = {}", ohms(c.r)),
         points: own,
         style: LineStyle::solid(0, 3.0),
     });
@@ -371,10 +371,20 @@ fn describe(c: &Circuit, signal: Signal, metrics: Option<FreeMetrics>) -> String
         .and_then(|m| m.settling_time)
         .map(|t| format!("stays within 5 % of V₀ after {}", si(t, "s", 3)))
         .unwrap_or_else(|| "never settles".to_string());
-    let reversals = match metrics.map(|m| m.zero_crossings) {
-        Some(0) | None => "never reverses polarity".to_string(),
-        Some(1) => "reverses polarity once".to_string(),
-        Some(n) => format!("reverses polarity {n} times"),
+    // The solver counts zero crossings before the settling time.
+    let reversals = match metrics {
+        Some(m) if m.zero_crossings == 0 && m.rebound_time.is_some() => format!(
+            "reverses only slightly (at most {} of V₀, inside the band)",
+            si(100.0 * m.peak_rebound, "%", 3)
+        ),
+        Some(m) if m.zero_crossings == 1 => "reverses polarity once before settling".to_string(),
+        Some(m) if m.zero_crossings > 1 => {
+            format!(
+                "reverses polarity {} times before settling",
+                m.zero_crossings
+            )
+        }
+        _ => "never reverses polarity".to_string(),
     };
     match (sys.regime(), signal) {
         (Regime::Undamped, Signal::Current) => format!(
@@ -533,6 +543,8 @@ mod tests {
     fn the_voltage_text_counts_reversals() {
         let ringing = run("R=2").figures[1].description.clone();
         assert!(ringing.contains("reverses polarity"), "{ringing}");
+        let slight = run("R=8").figures[1].description.clone();
+        assert!(slight.contains("reverses only slightly"), "{slight}");
         let crit = run("R=10").figures[1].description.clone();
         assert!(crit.contains("without reversing"), "{crit}");
     }
