@@ -125,7 +125,7 @@ test('CSV, SVG and PNG downloads are produced and parse; CSV numbers match the s
 test('the text alternative changes when the response changes and is announced', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&zeta=0.1`);
   const first = await page.textContent('#desc-response');
-  assert.match(first, /underdamped: crosses equilibrium \d+ times/);
+  assert.match(first, /underdamped: swings past equilibrium \d+ times before settling/);
   await page.fill('input[type=number][data-key="zeta"]', '1.5');
   await page.press('input[type=number][data-key="zeta"]', 'Enter');
   await page.waitForFunction((f) => document.querySelector('#desc-response').textContent !== f, first);

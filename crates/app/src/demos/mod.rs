@@ -7,8 +7,10 @@ use crate::spec::DemoSpec;
 use serde::Serialize;
 
 pub mod analogy;
+pub mod quarter_car;
 pub mod regimes;
 pub mod resonance;
+pub mod rlc;
 
 /// One computed readout, ready for the page.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -89,12 +91,14 @@ pub trait Demo {
 }
 
 /// Ids of every demo, in menu order.
-pub const IDS: &[&str] = &["regimes", "resonance", "analogy"];
+pub const IDS: &[&str] = &["regimes", "quarter-car", "rlc", "resonance", "analogy"];
 
 /// A new instance of the demo `id`, or `None` if there is no such demo.
 pub fn create(id: &str) -> Option<Box<dyn Demo>> {
     match id {
         "regimes" => Some(Box::new(regimes::Regimes)),
+        "quarter-car" => Some(Box::new(quarter_car::QuarterCar::new())),
+        "rlc" => Some(Box::new(rlc::Rlc)),
         "resonance" => Some(Box::new(resonance::Resonance::default())),
         "analogy" => Some(Box::new(analogy::Analogy)),
         _ => None,

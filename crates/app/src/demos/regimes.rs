@@ -272,10 +272,11 @@ fn describe(sys: &SecondOrder, regime: Regime, x0: f64, v0: f64) -> String {
                 .settling_time
                 .map(|t| format!("stays within 5 % of rest after {}", si(t, "s", 3)))
                 .unwrap_or_else(|| "does not settle".to_string());
+            // The solver counts crossings before the response settles into the band.
             let swings = match m.zero_crossings {
-                0 => "does not cross equilibrium".to_string(),
-                1 => "crosses equilibrium once".to_string(),
-                n => format!("crosses equilibrium {n} times"),
+                0 => "no swing past equilibrium before settling".to_string(),
+                1 => "swings past equilibrium once before settling".to_string(),
+                n => format!("swings past equilibrium {n} times before settling"),
             };
             format!(
                 "{}: {}, {}, peak rebound {}.",
@@ -476,7 +477,7 @@ mod tests {
         let heavy = run("zeta=0.6").figures[0].description.clone();
         assert_ne!(light, heavy);
         assert!(
-            light.contains("crosses equilibrium") && light.contains("within 5 %"),
+            light.contains("swings past equilibrium 9 times") && light.contains("within 5 %"),
             "{light}"
         );
         // ζ = 0.6 from rest: rebound e^{−πζ/√(1−ζ²)} = 9.48 %.

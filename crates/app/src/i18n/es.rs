@@ -70,10 +70,16 @@ pub const WHOLE: &[(&str, &str)] = &[
 
 /// Phrases inside generated sentences.
 pub const PHRASES: &[(&str, &str)] = &[
-    ("crosses equilibrium once", "cruza el equilibrio una vez"),
-    ("crosses equilibrium", "cruza el equilibrio"),
-    ("does not cross equilibrium", "no cruza el equilibrio"),
-    (" times", " veces"),
+    (
+        "no swing past equilibrium before settling",
+        "no pasa por el equilibrio antes de asentarse",
+    ),
+    (
+        "swings past equilibrium once before settling",
+        "pasa por el equilibrio una vez antes de asentarse",
+    ),
+    ("swings past equilibrium", "pasa por el equilibrio"),
+    (" times before settling", " veces antes de asentarse"),
     (
         "stays within 5 % of rest after",
         "queda dentro del 5 % del reposo tras",
