@@ -183,12 +183,12 @@ impl Demo for Flutter {
                 PlotSpec {
                     key: "damping",
                     title: "Effective damping against wind speed",
-                    aspect: 1.7,
+                    aspect: 2.0,
                 },
                 PlotSpec {
                     key: "locus",
                     title: "Root locus as the wind rises",
-                    aspect: 1.5,
+                    aspect: 1.25,
                 },
                 PlotSpec {
                     key: "response",

@@ -7,6 +7,7 @@ use crate::spec::DemoSpec;
 use serde::Serialize;
 
 pub mod flutter;
+pub mod nonlinear;
 pub mod regimes;
 
 /// One computed readout, ready for the page.
@@ -73,13 +74,14 @@ pub trait Demo {
 }
 
 /// Ids of every demo, in menu order.
-pub const IDS: &[&str] = &["regimes", "flutter"];
+pub const IDS: &[&str] = &["regimes", "flutter", "nonlinear"];
 
 /// A new instance of the demo `id`, or `None` if there is no such demo.
 pub fn create(id: &str) -> Option<Box<dyn Demo>> {
     match id {
         "regimes" => Some(Box::new(regimes::Regimes)),
         "flutter" => Some(Box::new(flutter::Flutter::default())),
+        "nonlinear" => Some(Box::new(nonlinear::Nonlinear::default())),
         _ => None,
     }
 }
