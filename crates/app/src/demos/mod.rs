@@ -8,6 +8,7 @@ use serde::Serialize;
 
 pub mod flutter;
 pub mod nonlinear;
+pub mod quarter_car_2dof;
 pub mod regimes;
 
 /// One computed readout, ready for the page.
@@ -74,7 +75,7 @@ pub trait Demo {
 }
 
 /// Ids of every demo, in menu order.
-pub const IDS: &[&str] = &["regimes", "flutter", "nonlinear"];
+pub const IDS: &[&str] = &["regimes", "flutter", "nonlinear", "quarter-car-2dof"];
 
 /// A new instance of the demo `id`, or `None` if there is no such demo.
 pub fn create(id: &str) -> Option<Box<dyn Demo>> {
@@ -82,6 +83,7 @@ pub fn create(id: &str) -> Option<Box<dyn Demo>> {
         "regimes" => Some(Box::new(regimes::Regimes)),
         "flutter" => Some(Box::new(flutter::Flutter::default())),
         "nonlinear" => Some(Box::new(nonlinear::Nonlinear::default())),
+        "quarter-car-2dof" => Some(Box::new(quarter_car_2dof::QuarterCar2Dof::default())),
         _ => None,
     }
 }
