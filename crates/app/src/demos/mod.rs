@@ -7,7 +7,10 @@ use crate::spec::DemoSpec;
 use serde::Serialize;
 
 pub mod analogy;
+pub mod flutter;
+pub mod nonlinear;
 pub mod quarter_car;
+pub mod quarter_car_2dof;
 pub mod regimes;
 pub mod resonance;
 pub mod rlc;
@@ -91,7 +94,16 @@ pub trait Demo {
 }
 
 /// Ids of every demo, in menu order.
-pub const IDS: &[&str] = &["regimes", "quarter-car", "rlc", "resonance", "analogy"];
+pub const IDS: &[&str] = &[
+    "regimes",
+    "quarter-car",
+    "rlc",
+    "analogy",
+    "resonance",
+    "flutter",
+    "nonlinear",
+    "quarter-car-2dof",
+];
 
 /// A new instance of the demo `id`, or `None` if there is no such demo.
 pub fn create(id: &str) -> Option<Box<dyn Demo>> {
@@ -101,6 +113,9 @@ pub fn create(id: &str) -> Option<Box<dyn Demo>> {
         "rlc" => Some(Box::new(rlc::Rlc)),
         "resonance" => Some(Box::new(resonance::Resonance::default())),
         "analogy" => Some(Box::new(analogy::Analogy)),
+        "flutter" => Some(Box::new(flutter::Flutter::default())),
+        "nonlinear" => Some(Box::new(nonlinear::Nonlinear::default())),
+        "quarter-car-2dof" => Some(Box::new(quarter_car_2dof::QuarterCar2Dof::default())),
         _ => None,
     }
 }
