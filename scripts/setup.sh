@@ -27,7 +27,6 @@ install_apt() {
   local missing=()
   command -v chromium >/dev/null 2>&1 || missing+=(chromium)
   command -v chromedriver >/dev/null 2>&1 || missing+=(chromium-driver)
-  command -v wasm-opt >/dev/null 2>&1 || missing+=(binaryen)
   command -v gzip >/dev/null 2>&1 || missing+=(gzip)
   if ((${#missing[@]})); then
     log "apt-get install ${missing[*]}"
@@ -67,7 +66,7 @@ install_rust_tools() {
 }
 
 install_node_deps() {
-  if [ ! -d node_modules/playwright-core ] || [ ! -d node_modules/axe-core ] \
+  if [ ! -d node_modules/playwright-core ] || [ ! -d node_modules/axe-core ] || [ ! -d node_modules/binaryen ] \
      || [ package-lock.json -nt node_modules/.package-lock.json ]; then
     log "npm ci"
     npm ci --no-audit --no-fund --loglevel=error

@@ -13,10 +13,22 @@ if grep -q 'TrunkApplicationStarted' "$html"; then
   exit 1
 fi
 
-# wasm-opt is not run: Debian's binaryen (108) rewrites the externref table that
-# wasm-bindgen 0.2.130 emits into one the browser rejects at start-up
-# ("WebAssembly.Table.set(): Argument 1 is invalid"). rustc's release profile
-# (LTO, one codegen unit) already gives ~130 KB gzipped.
+# Release builds: shrink the wasm with binaryen's wasm-opt from npm (package-lock.json).
+# Not Debian's binaryen: its wasm-opt 108 rewrites the externref table that wasm-bindgen
+# emits into one browsers reject at start-up.
+wasm="$stage/zeta-app_bg.wasm"
+opt="${TRUNK_SOURCE_DIR:-.}/node_modules/.bin/wasm-opt"
+if [ "${TRUNK_PROFILE:-}" = "release" ]; then
+  if [ ! -x "$opt" ]; then
+    echo "post-build: $opt is missing; run scripts/setup.sh" >&2
+    exit 1
+  fi
+  "$opt" -Oz --strip-debug --strip-producers \
+    --enable-bulk-memory --enable-sign-ext --enable-mutable-globals \
+    --enable-nontrapping-float-to-int --enable-reference-types --enable-multivalue \
+    "$wasm" -o "$wasm.opt"
+  mv "$wasm.opt" "$wasm"
+fi
 for f in zeta-app_bg.wasm zeta-app.js; do
   hash="sha384-$(openssl dgst -sha384 -binary "$stage/$f" | openssl base64 -A)"
   perl -pi -e "s#(href=\"\\./\Q$f\E\"[^>]*?integrity=\")[^\"]*#\${1}$hash#g" "$html"
