@@ -6,6 +6,7 @@ use crate::params::Params;
 use crate::spec::DemoSpec;
 use serde::Serialize;
 
+pub mod integrators;
 pub mod regimes;
 
 /// One computed readout, ready for the page.
@@ -72,12 +73,13 @@ pub trait Demo {
 }
 
 /// Ids of every demo, in menu order.
-pub const IDS: &[&str] = &["regimes"];
+pub const IDS: &[&str] = &["regimes", "integrators"];
 
 /// A new instance of the demo `id`, or `None` if there is no such demo.
 pub fn create(id: &str) -> Option<Box<dyn Demo>> {
     match id {
         "regimes" => Some(Box::new(regimes::Regimes)),
+        "integrators" => Some(Box::new(integrators::Integrators::new())),
         _ => None,
     }
 }
