@@ -859,9 +859,13 @@ fn mark(shape: MarkerShape, color: usize, at: (f64, f64)) -> Marker {
     }
 }
 
+/// A logarithmic axis over whole decades (clean tick labels).
 fn log_axis(label: &str, unit: &'static str, range: (f64, f64)) -> Axis {
+    let (lo, hi) = crate::figure::sane_range(range, AxisScale::Log);
+    let lo = 10f64.powf(lo.log10().floor());
+    let hi = 10f64.powf(hi.log10().ceil());
     Axis {
-        range: crate::figure::sane_range(range, AxisScale::Log),
+        range: crate::figure::sane_range((lo, hi), AxisScale::Log),
         scale: AxisScale::Log,
         ..Axis::linear(label, unit, (0.0, 1.0))
     }
@@ -1338,7 +1342,7 @@ impl Demo for Integrators {
                 PlotSpec {
                     key: "error",
                     title: "Error over time",
-                    aspect: 1.9,
+                    aspect: 1.2,
                 },
                 PlotSpec {
                     key: "convergence",
@@ -1361,8 +1365,8 @@ impl Demo for Integrators {
                     values: vec![("zeta", 0.05), ("wn", 2.0), ("h", 0.04)],
                 },
                 Preset {
-                    label: "RK4 beyond its limit, h = 1.5 s",
-                    values: vec![("zeta", 0.05), ("wn", 2.0), ("h", 1.5)],
+                    label: "RK4 beyond its limit, h = 1.6 s",
+                    values: vec![("zeta", 0.05), ("wn", 2.0), ("h", 1.6)],
                 },
                 Preset {
                     label: "Undamped, h = 0.1 s",
