@@ -859,11 +859,38 @@ fn mark(shape: MarkerShape, color: usize, at: (f64, f64)) -> Marker {
     }
 }
 
-/// A logarithmic axis over whole decades (clean tick labels).
+/// Whether plotters' tick labels for this log range (6 requested, printed with `{:?}`
+/// as the renderer does) are all short, i.e. free of rounding tails like
+/// `1.0000000000000002e-6`.
+fn clean_log_ticks(lo: f64, hi: f64) -> bool {
+    use plotters::coord::combinators::IntoLogRange;
+    use plotters::coord::ranged1d::Ranged;
+    let coord: plotters::coord::combinators::LogCoord<f64> = (lo..hi).log_scale().into();
+    coord
+        .key_points(6usize)
+        .iter()
+        .all(|v| format!("{v:?}").len() <= 8)
+}
+
+/// A logarithmic axis over whole decades, widened by up to two decades at either end when
+/// that gives tick labels without rounding tails (the renderer prints ticks with `{:?}`).
 fn log_axis(label: &str, unit: &'static str, range: (f64, f64)) -> Axis {
     let (lo, hi) = crate::figure::sane_range(range, AxisScale::Log);
-    let lo = 10f64.powf(lo.log10().floor());
-    let hi = 10f64.powf(hi.log10().ceil());
+    let (dlo, dhi) = (lo.log10().floor(), hi.log10().ceil());
+    let candidates = [
+        (0.0, 0.0),
+        (1.0, 0.0),
+        (0.0, 1.0),
+        (1.0, 1.0),
+        (2.0, 0.0),
+        (0.0, 2.0),
+    ];
+    let (a, b) = candidates
+        .iter()
+        .copied()
+        .find(|&(a, b)| clean_log_ticks(10f64.powf(dlo - a), 10f64.powf(dhi + b)))
+        .unwrap_or((0.0, 0.0));
+    let (lo, hi) = (10f64.powf(dlo - a), 10f64.powf(dhi + b));
     Axis {
         range: crate::figure::sane_range((lo, hi), AxisScale::Log),
         scale: AxisScale::Log,
@@ -1509,5 +1536,28 @@ mod tests {
         assert!((1.7..2.3).contains(&o("order_heun")));
         assert!((3.6..4.4).contains(&o("order_rk4")));
         assert!((3.5..6.5).contains(&o("order_dp45")));
+    }
+}
+
+#[cfg(test)]
+mod axes {
+    use super::*;
+    #[test]
+    fn log_axes_get_clean_tick_labels() {
+        for (lo, hi) in [
+            (3e-13, 1e5),
+            (1e-12, 1e0),
+            (2e-9, 1e3),
+            (1e-10, 1e4),
+            (1e-6, 1e2),
+        ] {
+            let a = log_axis("y", "", (lo, hi));
+            assert!(a.range.0 <= lo && a.range.1 >= hi);
+            assert!(
+                clean_log_ticks(a.range.0, a.range.1),
+                "{lo:e}..{hi:e} -> {:?}",
+                a.range
+            );
+        }
     }
 }
