@@ -859,38 +859,48 @@ fn mark(shape: MarkerShape, color: usize, at: (f64, f64)) -> Marker {
     }
 }
 
-/// Whether plotters' tick labels for this log range (6 requested, printed with `{:?}`
-/// as the renderer does) are all short, i.e. free of rounding tails like
+/// Length of the longest of plotters' tick labels for this log range (6 requested,
+/// printed with `{:?}` as the renderer does): long ones carry rounding tails such as
 /// `1.0000000000000002e-6`.
-fn clean_log_ticks(lo: f64, hi: f64) -> bool {
+fn log_tick_width(lo: f64, hi: f64) -> usize {
     use plotters::coord::combinators::IntoLogRange;
     use plotters::coord::ranged1d::Ranged;
     let coord: plotters::coord::combinators::LogCoord<f64> = (lo..hi).log_scale().into();
     coord
         .key_points(6usize)
         .iter()
-        .all(|v| format!("{v:?}").len() <= 8)
+        .map(|v| format!("{v:?}").len())
+        .max()
+        .unwrap_or(0)
 }
 
-/// A logarithmic axis over whole decades, widened by up to two decades at either end when
-/// that gives tick labels without rounding tails (the renderer prints ticks with `{:?}`).
+/// Longest tick label accepted as free of rounding tails (`1e-11`, `10000.0`).
+const CLEAN_TICK: usize = 8;
+
+/// A logarithmic axis over whole decades, widened by up to three decades at either end
+/// when that gives tick labels without rounding tails (the renderer prints ticks with
+/// `{:?}`, and the rounding of `powf` differs between native code and wasm).
 fn log_axis(label: &str, unit: &'static str, range: (f64, f64)) -> Axis {
     let (lo, hi) = crate::figure::sane_range(range, AxisScale::Log);
     let (dlo, dhi) = (lo.log10().floor(), hi.log10().ceil());
-    let candidates = [
-        (0.0, 0.0),
-        (1.0, 0.0),
-        (0.0, 1.0),
-        (1.0, 1.0),
-        (2.0, 0.0),
-        (0.0, 2.0),
-    ];
-    let (a, b) = candidates
-        .iter()
-        .copied()
-        .find(|&(a, b)| clean_log_ticks(10f64.powf(dlo - a), 10f64.powf(dhi + b)))
-        .unwrap_or((0.0, 0.0));
-    let (lo, hi) = (10f64.powf(dlo - a), 10f64.powf(dhi + b));
+    let mut best = (usize::MAX, 0.0, 0.0);
+    'search: for widen in 0..=6 {
+        for a in 0..=widen.min(3) {
+            let b = widen - a;
+            if b > 3 {
+                continue;
+            }
+            let (a, b) = (f64::from(a), f64::from(b));
+            let w = log_tick_width(10f64.powf(dlo - a), 10f64.powf(dhi + b));
+            if w < best.0 {
+                best = (w, a, b);
+            }
+            if w <= CLEAN_TICK {
+                break 'search;
+            }
+        }
+    }
+    let (lo, hi) = (10f64.powf(dlo - best.1), 10f64.powf(dhi + best.2));
     Axis {
         range: crate::figure::sane_range((lo, hi), AxisScale::Log),
         scale: AxisScale::Log,
@@ -1054,7 +1064,7 @@ fn convergence_figure(s: &Setup, study: &Study, cur: &Current) -> Figure {
     }
     let yhi = yhi.min(clip).max(ylo * 100.0);
     let x_range = (xlo / 1.6, xhi * 1.6);
-    let y_range = (ylo / 4.0, yhi * 30.0);
+    let y_range = (ylo / 4.0, yhi * 1000.0);
     // Reference slopes 1 and 4 through the geometric middle of the drawn data.
     let xm = (x_range.0 * x_range.1).sqrt();
     let ym = (ylo * yhi).sqrt();
@@ -1554,7 +1564,7 @@ mod axes {
             let a = log_axis("y", "", (lo, hi));
             assert!(a.range.0 <= lo && a.range.1 >= hi);
             assert!(
-                clean_log_ticks(a.range.0, a.range.1),
+                log_tick_width(a.range.0, a.range.1) <= CLEAN_TICK,
                 "{lo:e}..{hi:e} -> {:?}",
                 a.range
             );
