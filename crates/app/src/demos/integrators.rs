@@ -25,8 +25,8 @@ use crate::format::si;
 use crate::params::Params;
 use crate::spec::{DemoSpec, ParamSpec, PlotSpec, Preset, ReadoutSpec, Table};
 use zeta_solver::integrate::analysis::{
-    convergence_study, error_norms, symplectic_euler_spectral_radius, symplectic_euler_step_limit,
-    Amplification, ConvergenceStudy, FitWindow, StepLimit,
+    convergence_study, error_norms, fit_order, symplectic_euler_spectral_radius,
+    symplectic_euler_step_limit, Amplification, ConvergenceStudy, FitWindow, StepLimit,
 };
 use zeta_solver::integrate::{
     Dopri5, Dopri5Config, Dopri5Solution, Euler, FixedStep, Grid, Heun, IntegrationError, Linear2,
@@ -51,6 +51,10 @@ const COARSEST_H_LAMBDA: f64 = 1.0;
 const MIN_CHECKPOINTS: usize = 16;
 /// Tolerances of the DP45 sweep.
 const DP45_TOLS: [f64; 9] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
+/// DP45's order is fitted to this many of its finest usable runs.
+const DP45_FIT_POINTS: usize = 4;
+/// Smallest ratio of largest to smallest mean step for a DP45 fit.
+const DP45_MIN_SPAN: f64 = 1.5;
 /// Step budget of one DP45 run.
 const DP45_MAX_STEPS: usize = 20_000;
 /// Errors below this fraction of x₀ are rounding: left out of the fit.
@@ -384,7 +388,7 @@ fn compute_study(s: &Setup, key: [f64; 4]) -> Study {
         })
         .collect();
     let mut status = Vec::with_capacity(DP45_TOLS.len());
-    let study = convergence_study(&DP45_TOLS, window, |tol| match run_dp45(s, tol) {
+    let mut study = convergence_study(&DP45_TOLS, window, |tol| match run_dp45(s, tol) {
         Ok(out) => {
             let n = out.solution.stats.n_accepted.max(1);
             status.push(RunStatus::Measured);
@@ -395,12 +399,49 @@ fn compute_study(s: &Setup, key: [f64; 4]) -> Study {
             Err(e)
         }
     });
+    refit_finest(&mut study);
     Study {
         key,
         n0,
         fixed,
         dp45: Sweep { study, status },
     }
+}
+
+/// Restricts DP45's fit to its [`DP45_FIT_POINTS`] finest usable runs, and drops it when
+/// their mean steps span less than [`DP45_MIN_SPAN`]: when stability rather than accuracy
+/// limits the step (a stiff pole), loosening the tolerance no longer lengthens the steps
+/// and a slope of error against the mean step would be meaningless.
+fn refit_finest(study: &mut ConvergenceStudy) {
+    let mut used: Vec<(usize, f64)> = study
+        .points
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.used)
+        .map(|(i, p)| (i, p.h))
+        .collect();
+    used.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let keep: Vec<usize> = used.iter().take(DP45_FIT_POINTS).map(|u| u.0).collect();
+    for (i, p) in study.points.iter_mut().enumerate() {
+        p.used = p.used && keep.contains(&i);
+    }
+    let fit: Vec<(f64, f64)> = study
+        .points
+        .iter()
+        .filter(|p| p.used)
+        .map(|p| (p.h, p.error))
+        .collect();
+    let (lo, hi) = fit.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), p| {
+        (lo.min(p.0), hi.max(p.0))
+    });
+    study.order = if hi >= DP45_MIN_SPAN * lo {
+        fit_order(&fit)
+    } else {
+        for p in study.points.iter_mut() {
+            p.used = false;
+        }
+        None
+    };
 }
 
 /// Outer boundary `|R(z)| = 1` of a stability region, traced along 360 rays from
@@ -1051,7 +1092,7 @@ fn convergence_figure(s: &Setup, study: &Study, cur: &Current) -> Figure {
     }
     add(
         &study.dp45,
-        "DP45 (against the mean step T/steps over tolerances 1e-2 … 1e-10)",
+        "DP45 (against the mean step T/steps over tolerances 1e-2 … 1e-10, its 4 finest usable runs; no fit when stability, not accuracy, sets its steps)",
         "DP45 vs mean step",
         DP45_STYLE,
         Some(DP45_MARK),
@@ -1546,6 +1587,14 @@ mod tests {
         assert!((1.7..2.3).contains(&o("order_heun")));
         assert!((3.6..4.4).contains(&o("order_rk4")));
         assert!((3.5..6.5).contains(&o("order_dp45")));
+    }
+
+    #[test]
+    fn stiff_dp45_gets_no_meaningless_order() {
+        let f = run("zeta=2&wn=20&h=0.03&T=5");
+        assert_eq!(value(&f, "order_dp45"), "");
+        assert_eq!(value(&f, "stable_euler"), "no");
+        assert_eq!(value(&f, "stable_rk4"), "yes");
     }
 }
 
