@@ -103,7 +103,7 @@ const FIXED: [Fixed; 4] = [
             width: 2.0,
         },
         mark: None,
-        legend: "Euler (dashed)",
+        legend: "Euler",
     },
     Fixed {
         method: Method::SymplecticEuler,
@@ -118,7 +118,7 @@ const FIXED: [Fixed; 4] = [
             width: 1.5,
         },
         mark: Some(MarkerShape::Cross),
-        legend: "sympl. Euler (dashed, ×)",
+        legend: "sympl. Euler ×",
     },
     Fixed {
         method: Method::Heun,
@@ -133,7 +133,7 @@ const FIXED: [Fixed; 4] = [
             width: 2.5,
         },
         mark: None,
-        legend: "Heun (dotted)",
+        legend: "Heun",
     },
     Fixed {
         method: Method::Rk4,
@@ -148,7 +148,7 @@ const FIXED: [Fixed; 4] = [
             width: 1.8,
         },
         mark: None,
-        legend: "RK4 (thin solid)",
+        legend: "RK4",
     },
 ];
 
@@ -162,7 +162,7 @@ const DP45_STYLE: LineStyle = LineStyle {
     dash: Dash::Dotted,
     width: 2.0,
 };
-const DP45_LEGEND: &str = "DP45 (dotted, ● steps)";
+const DP45_LEGEND: &str = "DP45 ● steps";
 const DP45_MARK: MarkerShape = MarkerShape::Dot;
 
 /// How one run of the convergence study ended.
@@ -658,7 +658,7 @@ impl Integrators {
         let y_range = (-RESPONSE_RANGE * amp, RESPONSE_RANGE * amp);
         let inside = |y: f64| y.is_finite() && y.abs() <= RESPONSE_RANGE * amp;
         let mut series = vec![Series {
-            label: "exact (thick)".into(),
+            label: "exact".into(),
             points: exact,
             style: EXACT_STYLE,
         }];
@@ -685,7 +685,7 @@ impl Integrators {
             }
             let mut label = f.legend.to_string();
             if cur.growth[k] > 1.0 && clipped {
-                label.push_str(&format!(": diverges ×{}/step", si(cur.growth[k], "", 3)));
+                label.push_str(&format!(" ×{}/step ↑", si(cur.growth[k], "", 3)));
             }
             series.push(Series {
                 label,
@@ -1076,7 +1076,7 @@ fn convergence_figure(s: &Setup, study: &Study, cur: &Current) -> Figure {
             });
         }
         let label = match sweep.study.order {
-            Some(p) => format!("{legend}: slope {}", si(p, "", 3)),
+            Some(p) => format!("{legend}: {}", si(p, "", 3)),
             None => format!("{legend}: no fit"),
         };
         series.push(Series {
@@ -1093,7 +1093,7 @@ fn convergence_figure(s: &Setup, study: &Study, cur: &Current) -> Figure {
     add(
         &study.dp45,
         "DP45 (against the mean step T/steps over tolerances 1e-2 … 1e-10, its 4 finest usable runs; no fit when stability, not accuracy, sets its steps)",
-        "DP45 vs mean step",
+        "DP45 (mean step)",
         DP45_STYLE,
         Some(DP45_MARK),
         s.show[4],
@@ -1109,11 +1109,11 @@ fn convergence_figure(s: &Setup, study: &Study, cur: &Current) -> Figure {
     // Reference slopes 1 and 4 through the geometric middle of the drawn data.
     let xm = (x_range.0 * x_range.1).sqrt();
     let ym = (ylo * yhi).sqrt();
-    for (p, label) in [(1.0, "reference slopes 1, 4"), (4.0, "")] {
+    for p in [1.0, 4.0] {
         let (a, b) = (x_range.0, x_range.1);
         let line = |h: f64| ym * 0.1 * (h / xm).powf(p);
         series.push(Series {
-            label: label.into(),
+            label: String::new(),
             points: (0..=40)
                 .map(|i| {
                     let h = a * (b / a).powf(i as f64 / 40.0);
@@ -1138,8 +1138,14 @@ fn convergence_figure(s: &Setup, study: &Study, cur: &Current) -> Figure {
             });
         }
     }
+    markers.push(Marker {
+        label: format!("h = {}", si(cur.h, "s", 3)),
+        at: (cur.h * 1.1, y_range.0 * 30.0),
+        shape: MarkerShape::Label,
+        color: 5,
+    });
     series.push(Series {
-        label: format!("current h = {}", si(cur.h, "s", 3)),
+        label: String::new(),
         points: vec![(cur.h, y_range.0), (cur.h, y_range.1)],
         style: LineStyle {
             color: 5,
@@ -1188,7 +1194,7 @@ fn stability_figure(s: &Setup, cur: &Current, regions: &[Vec<(f64, f64)>; 3]) ->
             continue;
         }
         series.push(Series {
-            label: format!("|R| = 1, {}", FIXED[k].legend),
+            label: FIXED[k].legend.into(),
             points: r.clone(),
             style: LineStyle {
                 width: 2.0,
@@ -1248,7 +1254,7 @@ fn stability_figure(s: &Setup, cur: &Current, regions: &[Vec<(f64, f64)>; 3]) ->
         // The path z = h'λ for 0 < h' ≤ h, along which z moves as h grows.
         series.push(Series {
             label: if i == 0 {
-                "z = hλ as h grows".into()
+                "hλ as h grows".into()
             } else {
                 String::new()
             },
@@ -1415,7 +1421,7 @@ impl Demo for Integrators {
                 PlotSpec {
                     key: "response",
                     title: "Numerical solutions and the exact x(t)",
-                    aspect: 1.9,
+                    aspect: 1.6,
                 },
                 PlotSpec {
                     key: "error",
@@ -1425,7 +1431,7 @@ impl Demo for Integrators {
                 PlotSpec {
                     key: "convergence",
                     title: "Convergence: max error against step h",
-                    aspect: 1.4,
+                    aspect: 1.25,
                 },
                 PlotSpec {
                     key: "stability",
