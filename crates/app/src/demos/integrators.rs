@@ -1221,7 +1221,8 @@ fn stability_figure(s: &Setup, cur: &Current, regions: &[Vec<(f64, f64)>; 3]) ->
     let (w, hgt) = (x.1 - x.0, y.1 - y.0);
     if w < 1.3 * hgt {
         let pad = 0.5 * (1.3 * hgt - w);
-        x = (x.0 - pad * 0.8, x.1 + pad * 0.2);
+        // Most of the widening goes right, where the legend sits.
+        x = (x.0 - pad * 0.2, x.1 + pad * 1.8);
     } else {
         let pad = 0.5 * (w / 1.3 - hgt);
         y = (y.0 - pad, y.1 + pad);
