@@ -8,6 +8,7 @@ use serde::Serialize;
 
 pub mod analogy;
 pub mod flutter;
+pub mod integrators;
 pub mod nonlinear;
 pub mod quarter_car;
 pub mod quarter_car_2dof;
@@ -100,6 +101,7 @@ pub const IDS: &[&str] = &[
     "rlc",
     "analogy",
     "resonance",
+    "integrators",
     "flutter",
     "nonlinear",
     "quarter-car-2dof",
@@ -116,6 +118,7 @@ pub fn create(id: &str) -> Option<Box<dyn Demo>> {
         "flutter" => Some(Box::new(flutter::Flutter::default())),
         "nonlinear" => Some(Box::new(nonlinear::Nonlinear::default())),
         "quarter-car-2dof" => Some(Box::new(quarter_car_2dof::QuarterCar2Dof::default())),
+        "integrators" => Some(Box::new(integrators::Integrators::new())),
         _ => None,
     }
 }
