@@ -6,7 +6,9 @@ use crate::params::Params;
 use crate::spec::DemoSpec;
 use serde::Serialize;
 
+pub mod design;
 pub mod regimes;
+pub mod uncertainty;
 
 /// One computed readout, ready for the page.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -87,12 +89,14 @@ pub trait Demo {
 }
 
 /// Ids of every demo, in menu order.
-pub const IDS: &[&str] = &["regimes"];
+pub const IDS: &[&str] = &["regimes", "design", "uncertainty"];
 
 /// A new instance of the demo `id`, or `None` if there is no such demo.
 pub fn create(id: &str) -> Option<Box<dyn Demo>> {
     match id {
         "regimes" => Some(Box::new(regimes::Regimes)),
+        "design" => Some(Box::new(design::DesignSpace::default())),
+        "uncertainty" => Some(Box::new(uncertainty::Uncertainty::default())),
         _ => None,
     }
 }
