@@ -82,6 +82,18 @@ impl Stopwatch {
     }
 }
 
+/// `v` with its unit; accelerations stay in m/s² (no "mm/s²").
+fn fmt_unit(v: f64, unit: &str, sig: usize) -> String {
+    if unit == "m/s²" {
+        format!("{} m/s²", significant(v, sig))
+    } else {
+        si(v, unit, sig)
+    }
+}
+
+/// Map axes are in kN/m and kN·s/m so the tick labels stay short.
+const KILO: f64 = 1e3;
+
 /// A compute-time readout in milliseconds (the unit the key names).
 pub(crate) fn ms_readout(key: &'static str, ms: f64) -> Readout {
     if ms.is_finite() {
@@ -129,6 +141,21 @@ impl Metric {
             Metric::AccelRms => ("RMS body acceleration", "m/s²", 1.0),
             Metric::PeakTransmissibility => ("peak transmissibility", "", 1.0),
         }
+    }
+
+    /// Short name for the plot title.
+    fn short(self) -> &'static str {
+        match self {
+            Metric::SettlingTime => "Settling time",
+            Metric::PeakRebound => "Peak rebound",
+            Metric::AccelRms => "RMS acceleration",
+            Metric::PeakTransmissibility => "Peak transmissibility",
+        }
+    }
+
+    /// Whether the colours follow the logarithm (metrics spanning decades).
+    fn log_colour(self) -> bool {
+        !matches!(self, Metric::PeakRebound)
     }
 
     fn values(self, maps: &KcMaps) -> &[f64] {
@@ -219,24 +246,28 @@ fn centres_into(lo: f64, hi: f64, n: usize, out: &mut Vec<f64>) {
     out.extend((0..n).map(|i| lo + (i as f64 + 0.5) * d));
 }
 
-/// `(lo, hi)` as "10–60 kN/m" (shared prefix, trailing zeros dropped).
+/// `(lo, hi)` as "10–60 kN/m": both ends in the unit prefix of `hi`, trailing zeros dropped.
 fn span_text(lo: f64, hi: f64, unit: &str) -> String {
-    let split = |v: f64| {
-        let t = si(v, unit, 3);
-        let (num, u) = t.split_once(' ').map_or((t.as_str(), ""), |(n, u)| (n, u));
-        let num = if num.contains('.') {
-            num.trim_end_matches('0').trim_end_matches('.')
-        } else {
-            num
-        };
-        (num.to_string(), u.to_string())
+    let shown = si(hi, unit, 3);
+    let full_unit = shown.split_once(' ').map_or("", |(_, u)| u).to_string();
+    let prefix = full_unit.strip_suffix(unit).unwrap_or("");
+    let scale = match prefix {
+        "G" => 1e9,
+        "M" => 1e6,
+        "k" => 1e3,
+        "m" => 1e-3,
+        "µ" => 1e-6,
+        _ => 1.0,
     };
-    let ((ln, lu), (hn, hu)) = (split(lo), split(hi));
-    if lu == hu {
-        format!("{ln}–{hn} {hu}")
-    } else {
-        format!("{ln} {lu} – {hn} {hu}")
-    }
+    let trim = |v: f64| {
+        let t = significant(v / scale, 3);
+        if t.contains('.') {
+            t.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            t
+        }
+    };
+    format!("{}–{} {}", trim(lo), trim(hi), full_unit)
 }
 
 impl DesignSpace {
@@ -274,18 +305,25 @@ impl DesignSpace {
         let key = inp.key;
         let (name, unit, factor) = inp.metric.describe();
         let raw = inp.metric.values(&self.maps);
-        let values: Vec<f64> = raw.iter().map(|v| v * factor).collect();
-        let scale = finite_extent(values.iter().copied()).unwrap_or((0.0, 1.0));
-        let best = values
+        let range = finite_extent(raw.iter().map(|v| v * factor)).unwrap_or((0.0, 1.0));
+        let log = inp.metric.log_colour() && range.0 > 0.0;
+        let colour = |v: f64| if log { (v * factor).ln() } else { v * factor };
+        let values: Vec<f64> = raw.iter().map(|&v| colour(v)).collect();
+        let scale = if log {
+            (range.0.ln(), range.1.ln())
+        } else {
+            range
+        };
+        let best = raw
             .iter()
             .enumerate()
             .filter(|(_, v)| v.is_finite())
             .min_by(|a, b| a.1.total_cmp(b.1))
-            .map(|(i, &v)| (i, v));
+            .map(|(i, &v)| (i, v * factor));
         let (k0, k1) = key.k;
         let (c0, c1) = key.c;
-        let x_hi = k1 + RIGHT_STRIP * (k1 - k0);
-        let y_hi = c1 + TOP_STRIP * (c1 - c0);
+        let x_hi = (k1 + RIGHT_STRIP * (k1 - k0)) / KILO;
+        let y_hi = (c1 + TOP_STRIP * (c1 - c0)) / KILO;
         let mut series = Vec::with_capacity(ISO_ZETAS.len());
         let mut markers = Vec::with_capacity(ISO_ZETAS.len() + 2);
         for (j, &zeta) in ISO_ZETAS.iter().enumerate() {
@@ -307,16 +345,17 @@ impl DesignSpace {
                 .iso_k
                 .iter()
                 .zip(&self.iso_c)
-                .map(|(&k, &c)| (k, c.clamp(c0, c1)))
+                .map(|(&k, &c)| (k / KILO, c.clamp(c0, c1) / KILO))
                 .collect();
-            let end = points.last().copied().unwrap_or((kb, c1));
+            let end = points.last().copied().unwrap_or((kb / KILO, c1 / KILO));
             // Label in the blank strip where the line leaves the map (alternating heights
             // on the top strip so neighbours do not collide).
-            let at = if end.0 >= k1 * (1.0 - 1e-9) {
-                (k1 + 0.012 * (k1 - k0), end.1 + 0.03 * (c1 - c0))
+            let (dk, dc) = ((k1 - k0) / KILO, (c1 - c0) / KILO);
+            let at = if kb >= k1 * (1.0 - 1e-9) {
+                (k1 / KILO + 0.012 * dk, end.1 + 0.03 * dc)
             } else {
                 let lift = if j % 2 == 0 { 0.085 } else { 0.045 };
-                (end.0 - 0.03 * (k1 - k0), c1 + lift * (c1 - c0))
+                (end.0 - 0.03 * dk, c1 / KILO + lift * dc)
             };
             markers.push(Marker {
                 label: format!("ζ={zeta}"),
@@ -325,11 +364,8 @@ impl DesignSpace {
                 color: 6,
             });
             series.push(Series {
-                label: if series.is_empty() {
-                    "iso-ζ lines".into()
-                } else {
-                    String::new()
-                },
+                // Labelled on the plot itself; a legend box would cover the map.
+                label: String::new(),
                 points,
                 style: LineStyle {
                     color: 1,
@@ -342,14 +378,16 @@ impl DesignSpace {
         if let Some((i, v)) = best {
             if let Some((bk, bc)) = self.design_at(i) {
                 markers.push(Marker {
-                    label: "best".into(),
-                    at: (bk, bc),
+                    // Explained in the caption: a label here collides with the iso-ζ labels
+                    // (the best cell is usually on an edge).
+                    label: String::new(),
+                    at: (bk / KILO, bc / KILO),
                     shape: MarkerShape::Cross,
                     color: 6,
                 });
                 best_text = format!(
                     "lowest {} at k = {}, c = {}",
-                    si(v, unit, 3),
+                    fmt_unit(v, unit, 3),
                     si(bk, "N/m", 3),
                     si(bc, "N·s/m", 3)
                 );
@@ -359,12 +397,12 @@ impl DesignSpace {
         if inside(inp.k, k0, k1) && inside(inp.c, c0, c1) {
             markers.push(Marker {
                 label: "selected".into(),
-                at: (inp.k, inp.c),
+                at: (inp.k / KILO, inp.c / KILO),
                 shape: MarkerShape::Dot,
                 color: 6,
             });
         }
-        let shown = |v: f64| si(v, unit, 3);
+        let shown = |v: f64| fmt_unit(v, unit, 3);
         let selected_text = match (sel.zeta, sel.settling_time) {
             (Some(z), Some(t)) => format!(
                 "selected design ζ = {} settles in {}",
@@ -381,7 +419,8 @@ impl DesignSpace {
         };
         let description = format!(
             "{} over k {} and c {} ({} × {} grid, m = {}): {}; {}{}. Colour from dark purple \
-             ({}) to yellow ({}). Dashed iso-ζ lines for ζ = 0.2, 0.3, 0.5, 0.7 and 1.",
+             ({}) to yellow ({}){}. Dashed iso-ζ lines for ζ = 0.2, 0.3, 0.5, 0.7 and 1; × marks the lowest \
+             cell, ● the selected design.",
             capitalise(name),
             span_text(k0, k1, "N/m"),
             span_text(c0, c1, "N·s/m"),
@@ -391,8 +430,9 @@ impl DesignSpace {
             best_text,
             selected_text,
             outside,
-            shown(scale.0),
-            shown(scale.1),
+            shown(range.0),
+            shown(range.1),
+            if log { " on a logarithmic scale" } else { "" },
         );
         let legend_unit = if unit.is_empty() {
             String::new()
@@ -407,20 +447,20 @@ impl DesignSpace {
                 nx: key.n,
                 ny: key.n,
                 values,
-                x_edges: (k0, k1),
-                y_edges: (c0, c1),
+                x_edges: (k0 / KILO, k1 / KILO),
+                y_edges: (c0 / KILO, c1 / KILO),
                 scale,
-                label: format!("{name}{legend_unit}"),
+                label: format!("{}{name}{legend_unit}", if log { "log of " } else { "" }),
             }),
             ..Figure::plot(
                 format!(
-                    "{}: purple {} → yellow {}",
-                    capitalise(name),
-                    shown(scale.0),
-                    shown(scale.1)
+                    "{}: {} → {}",
+                    inp.metric.short(),
+                    shown(range.0),
+                    shown(range.1)
                 ),
-                Axis::linear("spring rate k", "N/m", (k0, x_hi)),
-                Axis::linear("damper rate c", "N·s/m", (c0, y_hi)),
+                Axis::linear("spring rate k", "kN/m", (k0 / KILO, x_hi)),
+                Axis::linear("damper rate c", "kN·s/m", (c0 / KILO, y_hi)),
             )
         }
     }
@@ -502,14 +542,14 @@ impl DesignSpace {
                  with {} RMS acceleration, to the smoothest, {} with {}. {}",
                 front_len,
                 si(a.0, "s", 3),
-                si(a.1, "m/s²", 3),
-                si(b.1, "m/s²", 3),
+                fmt_unit(a.1, "m/s²", 3),
+                fmt_unit(b.1, "m/s²", 3),
                 si(b.0, "s", 3),
                 match sel_pt {
                     Some((t, a)) => format!(
                         "The selected design settles in {} with {}.",
                         si(t, "s", 3),
-                        si(a, "m/s²", 3)
+                        fmt_unit(a, "m/s²", 3)
                     ),
                     None => "The selected design has no settling time.".into(),
                 }
@@ -595,13 +635,9 @@ fn response_figure(inp: &Inputs, sel: &Selected, best: Option<(f64, f64)>) -> Fi
             },
         });
     }
-    if let (Some(sys), Some((k, c))) = (best_sys, best) {
+    if let Some(sys) = best_sys {
         series.push(Series {
-            label: format!(
-                "fastest on grid (k = {}, c = {})",
-                si(k, "N/m", 3),
-                si(c, "N·s/m", 3)
-            ),
+            label: "fastest on the grid".into(),
             points: curve(&sys),
             style: LineStyle {
                 color: 2,
@@ -628,7 +664,9 @@ fn response_figure(inp: &Inputs, sel: &Selected, best: Option<(f64, f64)>) -> Fi
         }
     }
     let ys = series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
-    let y = padded(finite_extent(ys).unwrap_or((-X0, X0)), 0.08);
+    let (lo, hi) = padded(finite_extent(ys).unwrap_or((-X0, X0)), 0.08);
+    // Headroom above the curves for the legend box.
+    let y = (lo, hi + 0.55 * (hi - lo));
     let description = match (sel.zeta, sel.settling_time, sel.overshoot) {
         (Some(z), Some(t), Some(o)) => format!(
             "Selected design (ζ = {}) released from {}: rebounds {} and stays within {} \
@@ -639,7 +677,12 @@ fn response_figure(inp: &Inputs, sel: &Selected, best: Option<(f64, f64)>) -> Fi
             si(100.0 * inp.band.fraction(), "%", 2),
             si(t, "s", 3),
             match best_ts {
-                Some(tb) => format!("; the fastest grid design settles in {}", si(tb, "s", 3)),
+                Some(tb) => format!(
+                    "; the fastest design on the grid (k = {}, c = {}) settles in {}",
+                    best.map_or(String::new(), |b| si(b.0, "N/m", 3)),
+                    best.map_or(String::new(), |b| si(b.1, "N·s/m", 3)),
+                    si(tb, "s", 3)
+                ),
                 None => String::new(),
             }
         ),
@@ -800,7 +843,7 @@ impl Demo for DesignSpace {
                 PlotSpec {
                     key: "response",
                     title: "Selected design: free response x(t)",
-                    aspect: 2.0,
+                    aspect: 1.35,
                 },
             ],
             presets: vec![
@@ -867,7 +910,14 @@ impl Demo for DesignSpace {
             Readout::number("zeta", sel.zeta, "", 3),
             Readout::number("settling_time", sel.settling_time, "s", 4),
             Readout::number("overshoot", sel.overshoot, "%", 3),
-            Readout::number("accel_rms", sel.accel_rms, "m/s²", 3),
+            match sel.accel_rms.filter(|v| v.is_finite()) {
+                Some(a) => Readout {
+                    key: "accel_rms",
+                    text: fmt_unit(a, "m/s²", 3),
+                    data_value: format!("{a}"),
+                },
+                None => Readout::number("accel_rms", None, "m/s²", 3),
+            },
             Readout {
                 key: "grid_size",
                 text: format!("{n} × {n} = {cells}"),
@@ -895,6 +945,7 @@ impl Demo for DesignSpace {
             "map" => {
                 let (k0, k1) = key.k;
                 let (c0, c1) = key.c;
+                let (x, y) = (x * KILO, y * KILO);
                 if !(x >= k0 && x <= k1 && y >= c0 && y <= c1) {
                     return Vec::new();
                 }
@@ -1012,13 +1063,10 @@ mod tests {
         let mut d = DesignSpace::default();
         run(&mut d, "");
         assert_eq!(
-            d.pick("map", 31_234.0, 4_321.4),
+            d.pick("map", 31.234, 4.3214),
             vec![("k", 31_230.0), ("c", 4_321.0)]
         );
-        assert!(
-            d.pick("map", 70_000.0, 4_000.0).is_empty(),
-            "outside the map"
-        );
+        assert!(d.pick("map", 70.0, 4.0).is_empty(), "outside the map");
         assert!(d.pick("response", 1.0, 0.0).is_empty());
         assert!(d.front.len() > 3);
         let (ts, acc) = (&d.maps.settling_time, &d.maps.accel_rms);
@@ -1039,7 +1087,10 @@ mod tests {
         let map = &f.figures[0];
         assert_eq!(map.series.len(), 5);
         for (s, zeta) in map.series.iter().zip(ISO_ZETAS) {
-            let (k, c) = s.points[s.points.len() / 2];
+            let (k, c) = (
+                s.points[s.points.len() / 2].0 * KILO,
+                s.points[s.points.len() / 2].1 * KILO,
+            );
             assert!((c / (2.0 * (k * 300.0f64).sqrt()) - zeta).abs() < 1e-9);
         }
         assert!(map.markers.iter().any(|m| m.label == "ζ=0.7"));
