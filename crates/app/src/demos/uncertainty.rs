@@ -27,6 +27,29 @@ const SAMPLES: usize = 500;
 /// Histogram bins.
 const BINS: usize = 40;
 
+/// `v` to `sig` significant digits without trailing zeros ("10", "0.6").
+fn short(v: f64, sig: usize) -> String {
+    let t = significant(v, sig);
+    if t.contains('.') && !t.contains('e') {
+        t.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        t
+    }
+}
+
+/// A count with thin-space thousands separators ("100 000").
+fn count_text(n: usize) -> String {
+    let digits = n.to_string();
+    let mut out = String::with_capacity(digits.len() + 4);
+    for (i, ch) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push('\u{2009}');
+        }
+        out.push(ch);
+    }
+    out
+}
+
 /// Which parameter group is analysed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum System {
@@ -300,7 +323,7 @@ fn ranges(inp: &Inputs) -> Ranges {
                     .and_then(|s| s.damping_ratio())
                     .map_or_else(String::new, |z| format!(" (ζ = {})", significant(z, 3)))
             };
-            let pct = significant(100.0 * dm, 3);
+            let pct = short(100.0 * dm, 3);
             // ζ ∝ m^−½: the heavy end has the lowest ζ.
             let heavy = m * (1.0 + dm);
             let light = m * (1.0 - dm);
@@ -437,7 +460,8 @@ impl Uncertainty {
                 color: 6,
             });
         }
-        let ymax = top * 1.15;
+        // Headroom above the bars for the legend box.
+        let ymax = top * 1.5;
         let vline = |x: f64| vec![(x, 0.0), (x, ymax)];
         let spec_lines: Vec<f64> = match h {
             HistOf::Zeta => vec![inp.zeta_window.0, inp.zeta_window.1],
@@ -490,8 +514,8 @@ impl Uncertainty {
         let spec_text = match h {
             HistOf::Zeta => format!(
                 " The spec window ζ {}–{} is marked; {} of draws meet the whole spec.",
-                significant(inp.zeta_window.0, 3),
-                significant(inp.zeta_window.1, 3),
+                short(inp.zeta_window.0, 3),
+                short(inp.zeta_window.1, 3),
                 si(yield_pct, "%", 3)
             ),
             HistOf::SettlingTime => {
@@ -503,7 +527,7 @@ impl Uncertainty {
             Some((lo, hi)) => format!(
                 "Histogram of {name} over {} {dist} draws: from {} to {}, 5th percentile {}, \
                  95th percentile {}.{spec_text}",
-                draws,
+                count_text(draws),
                 si(lo, unit, 4),
                 si(hi, unit, 4),
                 si(p5, unit, 4),
@@ -562,10 +586,33 @@ fn band_figure(inp: &Inputs, r: &Ranges) -> Figure {
             width: 2.5,
         },
     ];
-    let mut series = Vec::with_capacity(3);
-    for ((sys, (_, label)), style) in systems.iter().zip(&r.band).zip(styles) {
+    let mut series = Vec::with_capacity(5);
+    let h = SettlingBand::FREE_DEFAULT.fraction() * x0;
+    for (sign, label) in [(1.0, "5 % settling band"), (-1.0, "")] {
+        series.push(Series {
+            label: label.into(),
+            points: vec![(0.0, sign * h), (t_end, sign * h)],
+            style: LineStyle {
+                color: 6,
+                dash: Dash::Dotted,
+                width: 1.2,
+            },
+        });
+    }
+    let mut markers = Vec::with_capacity(3);
+    for (((sys, (_, label)), style), ts) in systems.iter().zip(&r.band).zip(styles).zip(&times) {
         let Some(sys) = sys else { continue };
         let resp = FreeResponse::new(*sys, x0, 0.0);
+        if let Some(t) = ts.filter(|&t| t <= t_end) {
+            // Where each curve enters the band for good (colours match the curves; the
+            // times are in the caption).
+            markers.push(Marker {
+                label: String::new(),
+                at: (t, resp.displacement(t)),
+                shape: MarkerShape::Cross,
+                color: style.color,
+            });
+        }
         let points = (0..SAMPLES)
             .map(|i| {
                 let t = t_end * i as f64 / (SAMPLES - 1) as f64;
@@ -579,15 +626,17 @@ fn band_figure(inp: &Inputs, r: &Ranges) -> Figure {
         });
     }
     let ys = series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
-    let y = padded(finite_extent(ys).unwrap_or((-x0, x0)), 0.08);
+    let (lo, hi) = padded(finite_extent(ys).unwrap_or((-x0, x0)), 0.08);
+    // Headroom for the legend box.
+    let y = (lo, hi + 0.3 * (hi - lo));
     let fmt_t = |t: Option<f64>| t.map_or("never".to_string(), |t| si(t, "s", 3));
     let (what, ignored) = match inp.system {
         System::Suspension => (
             format!(
-                "Free response from {} with the sprung mass at −{} %, nominal and +{} %",
+                "Free response from {} with the sprung mass at +{} %, nominal and −{} %",
                 si(X0_CAR, "m", 2),
-                significant(100.0 * inp.key.tolerances[0], 3),
-                significant(100.0 * inp.key.tolerances[0], 3)
+                short(100.0 * inp.key.tolerances[0], 3),
+                short(100.0 * inp.key.tolerances[0], 3)
             ),
             "The RLC sliders are ignored.",
         ),
@@ -603,7 +652,7 @@ fn band_figure(inp: &Inputs, r: &Ranges) -> Figure {
         |(lo, hi)| format!("ζ spans {}–{}", significant(lo, 3), significant(hi, 3)),
     );
     let description = format!(
-        "{what}: {zeta_text}; 5 % settling times {}, {} and {}. {ignored}",
+        "{what}: {zeta_text}; 5 % settling times (crosses) {}, {} and {}. {ignored}",
         fmt_t(times.first().copied().flatten()),
         fmt_t(times.get(1).copied().flatten()),
         fmt_t(times.get(2).copied().flatten()),
@@ -611,6 +660,7 @@ fn band_figure(inp: &Inputs, r: &Ranges) -> Figure {
     Figure {
         description,
         series,
+        markers,
         origin_lines: true,
         ..Figure::plot(
             "Band of free responses over the tolerance",
@@ -874,7 +924,12 @@ mod tests {
         assert!((value(&f, "Q_max") - 1.1f64.sqrt() / 2.0).abs() < 1e-12);
         assert_eq!(value(&f, "draws"), 10_000.0);
         let band = &f.figures[0];
-        assert_eq!(band.series.len(), 3);
+        assert_eq!(
+            band.series.len(),
+            5,
+            "three masses and the band's two edges"
+        );
+        assert_eq!(band.markers.len(), 3, "where each settles");
         assert!(
             band.description.contains("RLC sliders are ignored"),
             "{}",
