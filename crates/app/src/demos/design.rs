@@ -656,7 +656,7 @@ fn response_figure(inp: &Inputs, sel: &Selected, best: Option<(f64, f64)>) -> Fi
         if let Some(t) = sel.settling_time.filter(|&t| t <= t_end) {
             let x = FreeResponse::new(*sys, X0, 0.0).displacement(t);
             markers.push(Marker {
-                label: format!("settled {}", si(t, "s", 3)),
+                label: "settled".into(),
                 at: (t, x),
                 shape: MarkerShape::Cross,
                 color: 1,
@@ -669,12 +669,12 @@ fn response_figure(inp: &Inputs, sel: &Selected, best: Option<(f64, f64)>) -> Fi
     let y = (lo, hi + 0.55 * (hi - lo));
     let description = match (sel.zeta, sel.settling_time, sel.overshoot) {
         (Some(z), Some(t), Some(o)) => format!(
-            "Selected design (ζ = {}) released from {}: rebounds {} and stays within {} \
+            "Selected design (ζ = {}) released from {}: rebounds {} and stays within {} % \
              after {}{}.",
             significant(z, 3),
-            si(X0, "m", 3),
+            si(X0, "m", 2),
             si(o, "%", 3),
-            si(100.0 * inp.band.fraction(), "%", 2),
+            inp.key.band,
             si(t, "s", 3),
             match best_ts {
                 Some(tb) => format!(
@@ -705,7 +705,7 @@ impl Demo for DesignSpace {
     fn spec(&self) -> DemoSpec {
         DemoSpec {
             id: "design",
-            title: "Design space: spring and damper rates",
+            title: "Design space (k, c)",
             summary: "Every cell of the map is one quarter car (sprung mass m on spring k and \
                       damper c), coloured by the chosen metric: settling time and peak rebound \
                       of a release from rest, RMS body acceleration on a random ISO 8608 road \
