@@ -676,7 +676,7 @@ impl Demo for Uncertainty {
             |key, label, default| ParamSpec::linear(key, label, "", "%", (0.0, 30.0, 0.5), default);
         DemoSpec {
             id: "uncertainty",
-            title: "Tolerances and robustness",
+            title: "Tolerance analysis",
             summary: "Real parts are not their nominal values. Choose the system: the quarter \
                       car (sprung mass m, spring k and the damper set for ζ at nominal mass; \
                       the mass varies by ±dm as the car is loaded) or the series RLC loop \
