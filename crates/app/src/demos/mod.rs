@@ -7,6 +7,7 @@ use crate::spec::DemoSpec;
 use serde::Serialize;
 
 pub mod analogy;
+pub mod design;
 pub mod flutter;
 pub mod integrators;
 pub mod nonlinear;
@@ -15,6 +16,7 @@ pub mod quarter_car_2dof;
 pub mod regimes;
 pub mod resonance;
 pub mod rlc;
+pub mod uncertainty;
 
 /// One computed readout, ready for the page.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -105,6 +107,8 @@ pub const IDS: &[&str] = &[
     "flutter",
     "nonlinear",
     "quarter-car-2dof",
+    "design",
+    "uncertainty",
 ];
 
 /// A new instance of the demo `id`, or `None` if there is no such demo.
@@ -119,6 +123,8 @@ pub fn create(id: &str) -> Option<Box<dyn Demo>> {
         "nonlinear" => Some(Box::new(nonlinear::Nonlinear::default())),
         "quarter-car-2dof" => Some(Box::new(quarter_car_2dof::QuarterCar2Dof::default())),
         "integrators" => Some(Box::new(integrators::Integrators::new())),
+        "design" => Some(Box::new(design::DesignSpace::default())),
+        "uncertainty" => Some(Box::new(uncertainty::Uncertainty::default())),
         _ => None,
     }
 }

@@ -1,0 +1,251 @@
+// End to end: the (k, c) design-space demo. Presets through the URL contract with readouts
+// checked against closed forms computed here, every control moved from the keyboard,
+// picking designs by clicking the map and the Pareto front, and the sweep's compute time.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { serve } from './support/server.mjs';
+import { launch, open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+
+let server;
+let browser;
+
+before(async () => {
+  server = await serve();
+  browser = await launch();
+});
+
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+const DEFAULTS = { m: 300, metric: 0, band: 5, road: 1, k_min: 10000, k_max: 60000, c_min: 500, c_max: 8000, k: 24000, c: 2000, n: 100 };
+const PLOTS = ['map', 'pareto', 'response'];
+const X0 = 0.06;
+
+// Closed forms, for checking the page (tests only).
+const zetaOf = (m, k, c) => c / (2 * Math.sqrt(k * m));
+
+/** Free response of m x'' + c x' + k x = 0 from (x0, 0), any damping > 0. */
+function freeResponse(m, c, k, x0) {
+  const a = c / (2 * m);
+  const wn2 = k / m;
+  const d = a * a - wn2;
+  if (d < -1e-12 * wn2) {
+    const wd = Math.sqrt(-d);
+    return (t) => x0 * Math.exp(-a * t) * (Math.cos(wd * t) + (a / wd) * Math.sin(wd * t));
+  }
+  if (d > 1e-12 * wn2) {
+    const mu = Math.sqrt(d);
+    return (t) => x0 * Math.exp(-a * t) * (Math.cosh(mu * t) + (a / mu) * Math.sinh(mu * t));
+  }
+  return (t) => x0 * Math.exp(-a * t) * (1 + a * t);
+}
+
+/** Last time |x| = band·x0, by fine sampling then bisection (accurate to ~1e-10 s). */
+function settlingTime(m, c, k, band, tEnd = 40) {
+  const x = freeResponse(m, c, k, X0);
+  const h = band * X0;
+  const dt = 2e-5;
+  let last = -1;
+  for (let i = 0; i * dt <= tEnd; i++) if (Math.abs(x(i * dt)) > h) last = i;
+  let lo = last * dt;
+  let hi = lo + dt;
+  for (let j = 0; j < 60; j++) {
+    const mid = (lo + hi) / 2;
+    if (Math.abs(x(mid)) > h) lo = mid;
+    else hi = mid;
+  }
+  return (lo + hi) / 2;
+}
+
+/** RMS body acceleration on an ISO 8608 road (class index 0..3) at 20 m/s, cutoff 10 Hz. */
+function accelRms(m, c, k, road) {
+  const gd = [16e-6, 64e-6, 256e-6, 1024e-6][road];
+  const q = 2 * Math.PI ** 2 * gd * 0.01 * 20;
+  const wc = 2 * Math.PI * 10;
+  const num = wc * wc * (c * c * (k + c * wc) + m * k * k);
+  const den = 2 * m * c * (k + c * wc + m * wc * wc);
+  return Math.sqrt((q * num) / den);
+}
+
+const num = async (page, key) => Number(await readout(page, key));
+const close = (a, b, rel, what) => assert.ok(Math.abs(a - b) <= rel * Math.max(Math.abs(b), 1e-300), `${what}: ${a} vs ${b}`);
+
+async function checkDesignReadouts(page, p) {
+  const zeta = zetaOf(p.m, p.k, p.c);
+  close(await num(page, 'k'), p.k, 1e-12, 'k');
+  close(await num(page, 'c'), p.c, 1e-12, 'c');
+  close(await num(page, 'zeta'), zeta, 1e-12, 'zeta');
+  if (zeta < 1) {
+    // Release from rest: peak rebound e^{−πζ/√(1−ζ²)}.
+    close(await num(page, 'overshoot'), 100 * Math.exp((-Math.PI * zeta) / Math.sqrt(1 - zeta * zeta)), 1e-9, 'overshoot');
+  }
+  close(await num(page, 'settling_time'), settlingTime(p.m, p.c, p.k, p.band / 100), 1e-7, 'settling_time');
+  close(await num(page, 'accel_rms'), accelRms(p.m, p.c, p.k, p.road), 1e-9, 'accel_rms');
+  assert.equal(await num(page, 'grid_size'), p.n * p.n);
+  const ms = await num(page, 'compute_time');
+  assert.ok(ms > 0 && ms < 1000, `compute time ${ms} ms`);
+}
+
+const PRESETS = [
+  ['settling', { m: 300, metric: 0, k: 24000, c: 2000 }],
+  ['laden', { m: 500, metric: 0, k: 24000, c: 2000 }],
+  ['comfort', { metric: 2, road: 2, m: 300 }],
+  ['rebound', { metric: 1, m: 300, k: 24000, c: 3760 }],
+  ['fine', { n: 160, metric: 0 }],
+];
+
+const query = (values) => Object.entries(values).map(([k, v]) => `${k}=${v}`).join('&');
+
+for (const [name, values] of PRESETS) {
+  test(`preset "${name}" from the URL: readouts match the closed forms and every plot is drawn`, async () => {
+    const { page, errors, context } = await open(browser, `${server.url}?demo=design&${query(values)}`);
+    const p = { ...DEFAULTS, ...values };
+    await checkDesignReadouts(page, p);
+    for (const plot of PLOTS) {
+      const [ink] = await canvasFingerprint(page, plot);
+      assert.ok(ink > 3000, `${plot} has ink (${ink} px)`);
+    }
+    const [mapInk] = await canvasFingerprint(page, 'map');
+    assert.ok(mapInk > 60000, `the heat map fills its plot (${mapInk} px)`);
+    const desc = await page.textContent('#desc-map');
+    assert.match(desc, /over k 10–60 kN\/m and c 0\.5–8 kN·s\/m/);
+    assert.match(desc, new RegExp(`\\(${p.n} × ${p.n} grid`));
+    await page.screenshot({ path: `${SHOTS}design-${name}-1280.png`, fullPage: true });
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+}
+
+/** Everything observable: readouts and the three canvases. */
+async function state(page) {
+  const values = await page.$$eval('[data-readout]', (els) => els.map((e) => `${e.dataset.readout}=${e.dataset.value}`).join('&'));
+  const prints = [];
+  for (const plot of PLOTS) prints.push((await canvasFingerprint(page, plot)).join(':'));
+  return { values, prints };
+}
+
+const urlValue = (page, key) => page.evaluate((k) => new URLSearchParams(location.search).get(k), key);
+
+test('every slider moves from the keyboard and changes readouts or pixels', async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=design&${query(DEFAULTS)}`);
+  // key → [expected value after one ArrowRight, the plot that must change, whether the
+  // selected design's readouts change (the map's range only moves the map)]
+  const sliders = {
+    m: [301, 'map', true],
+    band: [5.5, 'response', true],
+    k_min: [10500, 'map', false],
+    k_max: [60500, 'map', false],
+    c_min: [550, 'map', false],
+    c_max: [8100, 'map', false],
+    k: [24100, 'response', true],
+    c: [2010, 'response', true],
+    n: [101, 'map', true],
+  };
+  const p = { ...DEFAULTS };
+  for (const [key, [next, plot, moves]] of Object.entries(sliders)) {
+    const before = await state(page);
+    await page.focus(`#p-${key}`);
+    await page.keyboard.press('ArrowRight');
+    await waitForUrlParam(page, key, String(next));
+    p[key] = next;
+    const after = await state(page);
+    const i = PLOTS.indexOf(plot);
+    assert.notEqual(after.prints[i], before.prints[i], `${key}: ${plot} redrawn`);
+    if (moves) assert.notEqual(after.values, before.values, `${key}: readouts follow`);
+    await checkDesignReadouts(page, p);
+  }
+  // The choices.
+  for (const [key, value, plot] of [
+    ['metric', 2, 'map'],
+    ['road', 3, 'pareto'],
+    ['metric', 3, 'map'],
+    ['metric', 1, 'map'],
+  ]) {
+    const before = await state(page);
+    await page.selectOption(`#p-${key}`, String(value));
+    await waitForUrlParam(page, key, String(value));
+    p[key] = value;
+    const after = await state(page);
+    const i = PLOTS.indexOf(plot);
+    assert.notEqual(after.prints[i], before.prints[i], `${key}=${value}: ${plot} redrawn`);
+    await checkDesignReadouts(page, p);
+  }
+  assert.match(await page.textContent('#desc-map'), /^Peak rebound over/);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('clicking the map selects that design; clicking the front selects a front design', async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=design`);
+  const before = await canvasFingerprint(page, 'response');
+  await page.locator('canvas[data-plot="map"]').scrollIntoViewIfNeeded();
+  const box = await page.locator('canvas[data-plot="map"]').boundingBox();
+  await page.mouse.click(box.x + box.width * 0.35, box.y + box.height * 0.45);
+  await page.waitForFunction(() => document.querySelector('[data-readout="k"]').dataset.value !== '24000');
+  const k = await num(page, 'k');
+  const c = await num(page, 'c');
+  assert.ok(k > 10000 && k < 60000 && c > 500 && c < 8000, `picked (${k}, ${c}) inside the map`);
+  await waitForUrlParam(page, 'k', String(k));
+  assert.equal(await urlValue(page, 'c'), String(c));
+  await checkDesignReadouts(page, { ...DEFAULTS, k, c });
+  assert.notDeepEqual(await canvasFingerprint(page, 'response'), before);
+  // A click on the Pareto plot moves the selection onto the front.
+  await page.locator('canvas[data-plot="pareto"]').scrollIntoViewIfNeeded();
+  const pbox = await page.locator('canvas[data-plot="pareto"]').boundingBox();
+  await page.mouse.click(pbox.x + pbox.width * 0.3, pbox.y + pbox.height * 0.6);
+  await page.waitForFunction((kk) => Number(document.querySelector('[data-readout="k"]').dataset.value) !== kk, k);
+  const k2 = await num(page, 'k');
+  const c2 = await num(page, 'c');
+  await checkDesignReadouts(page, { ...DEFAULTS, k: k2, c: c2 });
+  // Front designs are cell centres of the 100 × 100 grid.
+  const ik = (k2 - 10000) / 500 - 0.5;
+  const ic = (c2 - 500) / 75 - 0.5;
+  assert.ok(Math.abs(ik - Math.round(ik)) < 1e-6 && Math.abs(ic - Math.round(ic)) < 1e-6, `front design on the grid (${k2}, ${c2})`);
+  assert.match(await page.textContent('#desc-pareto'), /^Pareto front of \d+ non-dominated designs/);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('the full 100 × 100 sweep is fast in the browser while the mass moves', async (t) => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=design`);
+  const times = [];
+  const frames = [];
+  await page.focus('#p-m');
+  for (let i = 1; i <= 8; i++) {
+    const t0 = await page.evaluate(() => performance.now());
+    await page.keyboard.press('ArrowRight');
+    await waitForUrlParam(page, 'm', String(300 + i));
+    frames.push((await page.evaluate(() => performance.now())) - t0);
+    times.push(await num(page, 'compute_time'));
+  }
+  times.sort((a, b) => a - b);
+  const median = times[Math.floor(times.length / 2)];
+  t.diagnostic(`sweep compute time in the browser: median ${median.toFixed(2)} ms, all ${times.map((x) => x.toFixed(1)).join(', ')}`);
+  // The budget is 16 ms; the shared test machine gets headroom.
+  assert.ok(median < 32, `median sweep ${median} ms`);
+  // Whole-event timing (sweep + drawing 10 000 cells + the other plots), for the report.
+  const ev = await page.evaluate(async () => {
+    const range = document.querySelector('#p-m');
+    const frame = () => new Promise((r) => requestAnimationFrame(() => r(performance.now())));
+    const out = [];
+    for (let i = 0; i < 10; i++) {
+      await frame();
+      let start = 0;
+      requestAnimationFrame(() => {
+        start = performance.now();
+      });
+      range.value = String(320 + i);
+      range.dispatchEvent(new Event('input', { bubbles: true }));
+      out.push((await frame()) - start);
+    }
+    return out.sort((a, b) => a - b);
+  });
+  t.diagnostic(`mass slider event (sweep + draw): median ${ev[5].toFixed(1)} ms`);
+  await page.setViewportSize({ width: 360, height: 740 });
+  await page.waitForTimeout(300);
+  await page.screenshot({ path: `${SHOTS}design-360.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+  await context.close();
+});
