@@ -18,6 +18,8 @@ use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
 pub struct Measured<B> {
     inner: B,
     context: CanvasRenderingContext2d,
+    /// Whether `context` is the drawing target, so bitmaps can go straight to it.
+    draws_on_context: bool,
 }
 
 /// A plotters backend drawing onto an HTML canvas.
@@ -36,7 +38,11 @@ impl Canvas {
     pub fn new(canvas: &HtmlCanvasElement) -> Option<Self> {
         let context = context_of(canvas)?;
         let inner = CanvasBackend::with_canvas_object(canvas.clone())?;
-        Some(Self { inner, context })
+        Some(Self {
+            inner,
+            context,
+            draws_on_context: true,
+        })
     }
 }
 
@@ -47,6 +53,7 @@ impl<B: DrawingBackend> Measured<B> {
         Some(Self {
             inner,
             context: context_of(measure)?,
+            draws_on_context: false,
         })
     }
 }
@@ -155,6 +162,27 @@ impl<B: DrawingBackend> DrawingBackend for Measured<B> {
         size: (u32, u32),
         src: &[u8],
     ) -> Result<(), B::ErrorType> {
-        self.inner.blit_bitmap(pos, size, src)
+        if !self.draws_on_context {
+            return self.inner.blit_bitmap(pos, size, src);
+        }
+        // One putImageData instead of a fillRect per pixel (the default).
+        let (w, h) = size;
+        let n = (w as usize) * (h as usize);
+        if src.len() < n * 3 || n == 0 {
+            return Ok(());
+        }
+        let mut rgba = Vec::with_capacity(n * 4);
+        for px in src.chunks_exact(3).take(n) {
+            rgba.extend_from_slice(&[px[0], px[1], px[2], 255]);
+        }
+        if let Ok(image) =
+            web_sys::ImageData::new_with_u8_clamped_array_and_sh(wasm_bindgen::Clamped(&rgba), w, h)
+        {
+            // A failed put leaves the plot without its colour map; never worth a panic.
+            let _ = self
+                .context
+                .put_image_data(&image, f64::from(pos.0), f64::from(pos.1));
+        }
+        Ok(())
     }
 }

@@ -7,7 +7,7 @@ use crate::demos::{self, Demo, Frame};
 use crate::export;
 use crate::i18n::{tr, Lang};
 use crate::params::{resolve_query, Notice, Params};
-use crate::render::{render, PlotGeometry};
+use crate::render::{render, render_with, PlotGeometry, Raster};
 use crate::spec::DemoSpec;
 use crate::theme::Theme;
 use plotters::prelude::{IntoDrawingArea, SVGBackend};
@@ -425,8 +425,14 @@ impl Session {
             let Some(backend) = Canvas::new(canvas) else {
                 continue;
             };
-            let geo =
-                render(&backend.into_drawing_area(), fig, &theme(dark), scale).map_err(js_err)?;
+            let geo = render_with(
+                &backend.into_drawing_area(),
+                fig,
+                &theme(dark),
+                scale,
+                Raster::Bitmap,
+            )
+            .map_err(js_err)?;
             if let Some(slot) = self.geometry.get_mut(i) {
                 *slot = Some(geo);
             }
@@ -585,7 +591,14 @@ impl Session {
         } else {
             1.0
         };
-        render(&backend.into_drawing_area(), fig, &theme(dark), scale).map_err(js_err)?;
+        render_with(
+            &backend.into_drawing_area(),
+            fig,
+            &theme(dark),
+            scale,
+            Raster::Bitmap,
+        )
+        .map_err(js_err)?;
         Ok(())
     }
 }
