@@ -44,7 +44,7 @@ const MAX_MARKS: usize = 60;
 const LEVELS: usize = 10;
 /// Steps one method may spend on the whole study (summed over its step sizes); finer step
 /// sizes beyond this budget are skipped, which keeps a ζ/ωₙ/T/x₀ drag fast.
-const STUDY_BUDGET: usize = 60_000;
+const STUDY_BUDGET: usize = 24_000;
 /// Coarsest study step, as `h₀·max|λ|`.
 const COARSEST_H_LAMBDA: f64 = 1.0;
 /// Fewest common check points of the study.
@@ -56,7 +56,7 @@ const DP45_FIT_POINTS: usize = 4;
 /// Smallest ratio of largest to smallest mean step for a DP45 fit.
 const DP45_MIN_SPAN: f64 = 1.5;
 /// Step budget of one DP45 run.
-const DP45_MAX_STEPS: usize = 20_000;
+const DP45_MAX_STEPS: usize = 8_000;
 /// Errors below this fraction of x₀ are rounding: left out of the fit.
 const FIT_FLOOR: f64 = 1e-10;
 /// Errors above this fraction of x₀ are not yet asymptotic (or unstable): left out.
