@@ -195,7 +195,6 @@ const ENGLISH: &[&str] = &[
     "mechanical",
     "mode",
     "model",
-    "natural",
     "negative",
     "negatively",
     "nonlinear",
