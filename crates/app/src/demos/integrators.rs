@@ -1274,21 +1274,15 @@ fn stability_figure(s: &Setup, cur: &Current, regions: &[Vec<(f64, f64)>; 3]) ->
     }
     let zs = if same {
         format!("z = hλ = {}", si(z[0].re, "", 3))
-    } else {
+    } else if z[0].im.abs() > 0.0 {
         format!(
-            "z = hλ = {} {} {}i",
+            "z = hλ = {} ± {}i",
             si(z[0].re, "", 3),
-            if z[0].im.abs() > 0.0 { "±" } else { "and" },
-            si(
-                if z[0].im.abs() > 0.0 {
-                    z[0].im.abs()
-                } else {
-                    z[1].re
-                },
-                "",
-                3
-            )
+            si(z[0].im.abs(), "", 3)
         )
+    } else {
+        // Two real poles: no imaginary unit.
+        format!("z = hλ = {} and {}", si(z[0].re, "", 3), si(z[1].re, "", 3))
     };
     let mut words = Vec::new();
     for (name, &k) in names.iter().zip(&index) {
