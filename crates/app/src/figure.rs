@@ -160,7 +160,7 @@ pub struct Heatmap {
     pub y_edges: (f64, f64),
     /// Colour scale `(low, high)`; values outside are clamped.
     pub scale: (f64, f64),
-    /// What the colour means, with unit, for the legend (e.g. "settling time [s]").
+    /// What the colour means, with unit, for the legend (e.g. "settling time \[s\]").
     pub label: String,
 }
 

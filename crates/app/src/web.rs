@@ -457,7 +457,7 @@ impl Session {
         out
     }
 
-    /// Draws the schematic at time `t` [s]; returns its text alternative.
+    /// Draws the schematic at time `t` \[s\]; returns its text alternative.
     #[wasm_bindgen(js_name = drawSchematic)]
     pub fn draw_schematic(&self, t: f64, scale: f64, dark: bool) -> Result<String, JsError> {
         let (Some(canvas), Some(mut fig)) = (
@@ -479,7 +479,7 @@ impl Session {
         Ok(fig.description)
     }
 
-    /// The main response at time `t` [s], normalised to about −1…1 (for sonification).
+    /// The main response at time `t` \[s\], normalised to about −1…1 (for sonification).
     pub fn sonify(&self, t: f64) -> Option<f64> {
         self.demo.sonify(&self.params, t).filter(|v| v.is_finite())
     }

@@ -2,7 +2,7 @@
 //! damper, Coulomb friction and bump stops, integrated with RK4 and drawn against the
 //! linear model from the same initial state (all maths in [`zeta_solver::nonlinear`]).
 //!
-//! Cost per update is bounded: [`STEPS`] RK4 steps into buffers kept between updates.
+//! Cost per update is bounded: `STEPS` RK4 steps into buffers kept between updates.
 //! Coulomb friction is the solver's smooth `F_c·tanh(x'/v_ε)`; this demo picks
 //! `v_ε = max(1 mm/s, F_c·h/m)` so that one step `h` never exceeds the friction layer's time
 //! constant `m·v_ε/F_c` (RK4 stays stable and the "stuck" mass creeps by at most a few mm).

@@ -3,9 +3,9 @@
 //! [`zeta_solver::two_dof`]). Plots: body, wheel and road motion; body acceleration; tyre
 //! deflection; and the frequency responses with the two modes, body bounce and wheel hop.
 //!
-//! Cost per update is bounded: at most [`MAX_STEPS`] RK4 steps into buffers kept between
-//! updates, a random road of [`ROAD_COMPONENTS`] sinusoids rebuilt only when its class, speed
-//! or seed changes, and a [`FRF_POINTS`]-point frequency sweep into a reused buffer.
+//! Cost per update is bounded: at most `MAX_STEPS` RK4 steps into buffers kept between
+//! updates, a random road of `ROAD_COMPONENTS` sinusoids rebuilt only when its class, speed
+//! or seed changes, and a `FRF_POINTS`-point frequency sweep into a reused buffer.
 
 use super::{Demo, Frame, Readout};
 use crate::figure::{
@@ -493,7 +493,7 @@ impl QuarterCar2Dof {
     }
 
     /// RK4 from rest over `[0, t_end]` into the reused buffers (step ≤ a thirtieth of the
-    /// fastest period, at most [`MAX_STEPS`] steps); fills the road height at every grid
+    /// fastest period, at most `MAX_STEPS` steps); fills the road height at every grid
     /// point and returns the run's metrics.
     ///
     /// A random road costs one sine per component per evaluation, and RK4 evaluates it four
