@@ -208,6 +208,32 @@ fn px(v: f64, scale: f64) -> u32 {
     (v * scale).round().max(1.0) as u32
 }
 
+/// A tick label: at most 6 significant digits, no rounding tails (`0.30000000000000004` →
+/// `0.3`), trailing zeros dropped, and the language's decimal separator.
+pub fn tick_label(v: f64, decimal_comma: bool) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return "0".to_string();
+    }
+    let s = crate::format::significant(v, 6);
+    let s = match s.split_once('e') {
+        Some((mantissa, exp)) => format!("{}e{exp}", trim_zeros(mantissa)),
+        None => trim_zeros(&s).to_string(),
+    };
+    if decimal_comma {
+        s.replace('.', ",")
+    } else {
+        s
+    }
+}
+
+fn trim_zeros(s: &str) -> &str {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        s
+    }
+}
+
 /// Splits a series at points that cannot be drawn (non-finite, or ≤ 0 on a log axis) and
 /// clamps the rest into the (slightly widened) plot area, so a diverging curve is drawn to
 /// the edge instead of off the canvas. The flag says whether anything was clamped.
@@ -281,6 +307,8 @@ where
         .axis_style(fg.stroke_width(px(1.0, scale)))
         .x_labels(6)
         .y_labels(6)
+        .x_label_formatter(&|v| tick_label(*v, theme.decimal_comma))
+        .y_label_formatter(&|v| tick_label(*v, theme.decimal_comma))
         .draw()
         .map_err(err)?;
 
@@ -766,6 +794,18 @@ mod tests {
             (a as f64 / b as f64 - 1.0).abs() < 0.1,
             "left and right halves equal: {a} {b}"
         );
+    }
+
+    #[test]
+    fn tick_labels_are_short_and_follow_the_language() {
+        assert_eq!(tick_label(0.1 + 0.2, false), "0.3");
+        assert_eq!(tick_label(2.0, false), "2");
+        assert_eq!(tick_label(-0.05, false), "-0.05");
+        assert_eq!(tick_label(1.000_000_000_000_000_2e-6, false), "1e-6");
+        assert_eq!(tick_label(1e-7, false), "1e-7");
+        assert_eq!(tick_label(24_000.0, false), "24000");
+        assert_eq!(tick_label(0.25, true), "0,25");
+        assert_eq!(tick_label(0.0, true), "0");
     }
 
     #[test]

@@ -15,12 +15,15 @@ pub struct Theme {
     pub grid_minor: RGBColor,
     /// Series colours, indexed by `LineStyle::color` (wrapping).
     pub palette: [RGBColor; 7],
+    /// Whether tick labels use a decimal comma (the page's language decides).
+    pub decimal_comma: bool,
 }
 
 impl Theme {
     /// Dark text on white. Okabe–Ito colours, with yellow swapped for a darker amber so every
     /// line keeps ≥ 3:1 contrast on white.
     pub const LIGHT: Theme = Theme {
+        decimal_comma: false,
         background: RGBColor(255, 255, 255),
         foreground: RGBColor(33, 37, 41),
         grid: RGBColor(206, 212, 218),
@@ -38,6 +41,7 @@ impl Theme {
 
     /// Light text on near-black, with the palette lightened for contrast.
     pub const DARK: Theme = Theme {
+        decimal_comma: false,
         background: RGBColor(24, 26, 31),
         foreground: RGBColor(230, 233, 237),
         grid: RGBColor(70, 76, 86),

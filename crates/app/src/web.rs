@@ -305,10 +305,10 @@ pub struct Session {
 }
 
 fn theme(dark: bool) -> Theme {
-    if dark {
-        Theme::DARK
-    } else {
-        Theme::LIGHT
+    let base = if dark { Theme::DARK } else { Theme::LIGHT };
+    Theme {
+        decimal_comma: lang() == Lang::Es,
+        ..base
     }
 }
 
