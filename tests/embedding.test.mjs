@@ -165,7 +165,7 @@ test('the share dialog builds the link and iframe snippet with a live preview', 
   await page.waitForFunction(() => (document.querySelector('iframe.share-preview').getAttribute('src') || '').includes('lock=wn'));
   await page.screenshot({ path: `${SHOTS}share-dialog.png` });
   await page.click('.share-close');
-  assert.equal(await page.locator('dialog#share-dialog').count(), 0);
+  await page.locator('dialog#share-dialog').waitFor({ state: 'detached' });
   assert.deepEqual(errors, []);
   await context.close();
 });
