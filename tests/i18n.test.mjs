@@ -57,6 +57,8 @@ test('notices about bad URL values are translated too', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&lang=es&zeta=abc&wn=99`);
   const text = await page.textContent('#notices');
   assert.match(text, /no es un número; se usa el valor por defecto/);
+  assert.match(text, /coeficiente de amortiguamiento \(zeta\)/);
+  assert.match(text, /frecuencia natural \(wn\)/);
   assert.match(text, /está fuera de/);
   assert.deepEqual(errors, []);
   await context.close();

@@ -2,6 +2,9 @@
 
 use plotters::style::RGBColor;
 
+/// The English clipped-plot note (translated by the page's language catalogue).
+pub const CLIPPED_NOTE: &str = "clipped: some values lie beyond the axes";
+
 /// Plot colours for one theme.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Theme {
@@ -17,6 +20,8 @@ pub struct Theme {
     pub palette: [RGBColor; 7],
     /// Whether tick labels use a decimal comma (the page's language decides).
     pub decimal_comma: bool,
+    /// The note drawn on a plot whose curves leave the axes, in the page's language.
+    pub clipped_note: &'static str,
 }
 
 impl Theme {
@@ -24,6 +29,7 @@ impl Theme {
     /// line keeps ≥ 3:1 contrast on white.
     pub const LIGHT: Theme = Theme {
         decimal_comma: false,
+        clipped_note: CLIPPED_NOTE,
         background: RGBColor(255, 255, 255),
         foreground: RGBColor(33, 37, 41),
         grid: RGBColor(206, 212, 218),
@@ -42,6 +48,7 @@ impl Theme {
     /// Light text on near-black, with the palette lightened for contrast.
     pub const DARK: Theme = Theme {
         decimal_comma: false,
+        clipped_note: CLIPPED_NOTE,
         background: RGBColor(24, 26, 31),
         foreground: RGBColor(230, 233, 237),
         grid: RGBColor(70, 76, 86),

@@ -306,10 +306,29 @@ pub struct Session {
 
 fn theme(dark: bool) -> Theme {
     let base = if dark { Theme::DARK } else { Theme::LIGHT };
+    let note = match tr(lang(), crate::theme::CLIPPED_NOTE) {
+        std::borrow::Cow::Borrowed(s) => s,
+        // The note is a whole-string catalogue entry; an owned result means no entry.
+        std::borrow::Cow::Owned(_) => crate::theme::CLIPPED_NOTE,
+    };
     Theme {
         decimal_comma: lang() == Lang::Es,
+        clipped_note: note,
         ..base
     }
+}
+
+/// A notice in the page's language: its message, with the parameter's label too.
+fn translate_notice(spec: &DemoSpec, n: &mut Notice) {
+    let l = lang();
+    if l == Lang::En {
+        return;
+    }
+    let mut msg = n.message.clone();
+    if let Some(p) = spec.param(&n.key) {
+        msg = msg.replace(p.label, &tr(l, p.label));
+    }
+    n.message = tr(l, &msg).into_owned();
 }
 
 fn js_err(e: impl std::fmt::Display) -> JsError {
@@ -348,7 +367,7 @@ impl Session {
         let (params, mut notices) = resolve_query(&self.spec, query);
         self.params = params;
         for n in &mut notices {
-            n.message = tr(lang(), &n.message).into_owned();
+            translate_notice(&self.spec, n);
         }
         to_js(&notices)
     }
@@ -359,7 +378,7 @@ impl Session {
         match self.params.set_raw(&self.spec, key, raw) {
             Some((value, mut notice)) => {
                 if let Some(n) = &mut notice {
-                    n.message = tr(lang(), &n.message).into_owned();
+                    translate_notice(&self.spec, n);
                 }
                 to_js(&SetResult { value, notice })
             }
