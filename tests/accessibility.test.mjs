@@ -118,3 +118,20 @@ test('reduced motion: autoplay=1 does not start the animation', async () => {
   assert.deepEqual([...errors, ...normal.errors], []);
   await normal.context.close();
 });
+
+test('touch: a tap on a plot shows the values under the finger; sliders move by touch', async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=regimes`, { hasTouch: true, isMobile: true, viewport: { width: 360, height: 740 } });
+  const plot = page.locator('canvas[data-plot="response"]');
+  await plot.scrollIntoViewIfNeeded();
+  const box = await plot.boundingBox();
+  await page.touchscreen.tap(box.x + box.width * 0.5, box.y + box.height * 0.5);
+  await page.waitForSelector('[data-plot-wrap="response"] .probe:not([hidden])');
+  assert.match(await page.textContent('[data-plot-wrap="response"] .probe'), /time t = /);
+  const slider = page.locator('#p-zeta');
+  await slider.scrollIntoViewIfNeeded();
+  const s = await slider.boundingBox();
+  await page.touchscreen.tap(s.x + s.width * 0.9, s.y + s.height / 2);
+  await page.waitForFunction(() => Number(document.querySelector('[data-readout="zeta"]').dataset.value) > 2);
+  assert.deepEqual(errors, []);
+  await context.close();
+});

@@ -374,7 +374,9 @@ function wireProbes() {
     });
     canvas.addEventListener('pointermove', show);
     canvas.addEventListener('pointerdown', show);
-    canvas.addEventListener('pointerleave', () => {
+    canvas.addEventListener('pointerleave', (ev) => {
+      // A finger "leaves" as it lifts: keep a touch read-out until the next touch.
+      if (ev.pointerType !== 'mouse') return;
       tip.hidden = true;
       drawTime();
     });
