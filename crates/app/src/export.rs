@@ -139,7 +139,7 @@ pub fn probe(fig: &Figure, geo: &PlotGeometry, px: f64, py: f64) -> Option<Probe
             points.push(ProbePoint {
                 px: ppx,
                 py: ppy,
-                color: s.style.color,
+                color: s.style.ink.index(),
                 text: format!("{} = {}", s.label, si(sy, fig.y.unit, 4)),
             });
         }
@@ -155,6 +155,7 @@ pub fn probe(fig: &Figure, geo: &PlotGeometry, px: f64, py: f64) -> Option<Probe
 mod tests {
     use super::*;
     use crate::figure::{Axis, LineStyle, Series};
+    use crate::plot::Ink;
 
     fn fig() -> Figure {
         let pts = |k: f64| (0..5).map(|i| (i as f64 * 0.5, k * i as f64)).collect();
@@ -163,12 +164,12 @@ mod tests {
                 Series {
                     label: "a, b".into(),
                     points: pts(1.0),
-                    style: LineStyle::solid(0, 1.0),
+                    style: LineStyle::solid(Ink::Blue, 1.0),
                 },
                 Series {
                     label: "c".into(),
                     points: pts(2.0),
-                    style: LineStyle::solid(1, 1.0),
+                    style: LineStyle::solid(Ink::Vermillion, 1.0),
                 },
             ],
             ..Figure::plot(

@@ -3,6 +3,8 @@
 //! A demo builds [`Figure`]s; [`crate::render`] draws them on any plotters backend (the
 //! canvas in the browser, an SVG string in native tests and exports).
 
+pub use crate::plot::Ink;
+
 /// Axis mapping.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum AxisScale {
@@ -33,6 +35,16 @@ impl Axis {
             unit,
             range: sane_range(range, AxisScale::Linear),
             scale: AxisScale::Linear,
+        }
+    }
+
+    /// A logarithmic axis; the range is made positive.
+    pub fn log(label: impl Into<String>, unit: &'static str, range: (f64, f64)) -> Self {
+        Self {
+            label: label.into(),
+            unit,
+            range: sane_range(range, AxisScale::Log),
+            scale: AxisScale::Log,
         }
     }
 
@@ -82,8 +94,8 @@ pub enum Dash {
 /// How a series is drawn.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LineStyle {
-    /// Index into the theme's colour-blind-safe palette.
-    pub color: usize,
+    /// Colour, from the theme's colour-blind-safe palette.
+    pub ink: Ink,
     /// Dash pattern.
     pub dash: Dash,
     /// Stroke width in CSS pixels.
@@ -91,12 +103,41 @@ pub struct LineStyle {
 }
 
 impl LineStyle {
-    /// A solid line of palette colour `color`.
-    pub const fn solid(color: usize, width: f64) -> Self {
+    /// A solid line, `width` CSS px.
+    pub const fn solid(ink: Ink, width: f64) -> Self {
         Self {
-            color,
+            ink,
             dash: Dash::Solid,
             width,
+        }
+    }
+
+    /// A line of long dashes, `width` CSS px.
+    pub const fn dashed(ink: Ink, width: f64) -> Self {
+        Self {
+            ink,
+            dash: Dash::Dashed,
+            width,
+        }
+    }
+
+    /// A dotted line, `width` CSS px.
+    pub const fn dotted(ink: Ink, width: f64) -> Self {
+        Self {
+            ink,
+            dash: Dash::Dotted,
+            width,
+        }
+    }
+}
+
+impl Series {
+    /// A series with a legend entry (`label` empty for none).
+    pub fn new(label: impl Into<String>, points: Vec<(f64, f64)>, style: LineStyle) -> Self {
+        Self {
+            label: label.into(),
+            points,
+            style,
         }
     }
 }
@@ -132,8 +173,34 @@ pub struct Marker {
     pub at: (f64, f64),
     /// Shape.
     pub shape: MarkerShape,
-    /// Palette colour index.
-    pub color: usize,
+    /// Colour.
+    pub ink: Ink,
+}
+
+impl Marker {
+    /// A `×` at `at`, e.g. a pole.
+    pub fn cross(label: impl Into<String>, at: (f64, f64), ink: Ink) -> Self {
+        Self::new(label, at, MarkerShape::Cross, ink)
+    }
+
+    /// A filled circle at `at`, e.g. a design point.
+    pub fn dot(label: impl Into<String>, at: (f64, f64), ink: Ink) -> Self {
+        Self::new(label, at, MarkerShape::Dot, ink)
+    }
+
+    /// A label alone at `at`, e.g. a name on a schematic.
+    pub fn text(label: impl Into<String>, at: (f64, f64), ink: Ink) -> Self {
+        Self::new(label, at, MarkerShape::Label, ink)
+    }
+
+    fn new(label: impl Into<String>, at: (f64, f64), shape: MarkerShape, ink: Ink) -> Self {
+        Self {
+            label: label.into(),
+            at,
+            shape,
+            ink,
+        }
+    }
 }
 
 /// How a figure is framed.
@@ -201,6 +268,43 @@ impl Figure {
             origin_lines: false,
             heatmap: None,
         }
+    }
+
+    /// A drawing (schematic) over these axes: no grid, equal scales.
+    pub fn schematic(title: impl Into<String>, x: Axis, y: Axis) -> Self {
+        Self {
+            kind: FigureKind::Schematic,
+            ..Self::plot(title, x, y)
+        }
+    }
+
+    /// The figure with its text alternative set.
+    pub fn described(mut self, description: impl Into<String>) -> Self {
+        self.description = description.into();
+        self
+    }
+
+    /// The figure with one more series.
+    pub fn with_line(
+        mut self,
+        label: impl Into<String>,
+        points: Vec<(f64, f64)>,
+        style: LineStyle,
+    ) -> Self {
+        self.series.push(Series::new(label, points, style));
+        self
+    }
+
+    /// The figure with one more marker.
+    pub fn with_marker(mut self, marker: Marker) -> Self {
+        self.markers.push(marker);
+        self
+    }
+
+    /// The figure with reference lines through the origin.
+    pub fn with_origin_lines(mut self) -> Self {
+        self.origin_lines = true;
+        self
     }
 
     /// Whether any series or marker point is finite and inside the axes.

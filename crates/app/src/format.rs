@@ -1,5 +1,8 @@
 //! Formatting numbers for readouts: significant digits and engineering prefixes.
 
+// Number formatting needs the decimal exponent of a value.
+#![allow(clippy::disallowed_methods)]
+
 /// Formats `v` with `sig` significant digits and an SI prefix for `unit`
 /// (`0.0012 s` → `1.20 ms`). Dimensionless values and percentages get no prefix.
 pub fn si(v: f64, unit: &str, sig: usize) -> String {

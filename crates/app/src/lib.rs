@@ -7,12 +7,14 @@
 //! Native builds (for `cargo test`) contain everything but the wasm bindings in `web`;
 //! figures are then drawn into SVG strings instead of canvases.
 
+pub mod declare;
 pub mod demos;
 pub mod export;
 pub mod figure;
 pub mod format;
 pub mod i18n;
 pub mod params;
+pub mod plot;
 pub mod render;
 pub mod schematic;
 pub mod spec;

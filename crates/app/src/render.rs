@@ -3,6 +3,9 @@
 //! Sizes are given in CSS pixels and multiplied by `scale` (the screen's
 //! `devicePixelRatio`) so text and lines look the same on every screen, and crisp.
 
+// Drawing: pixel geometry, tick placement and text metrics, not model maths.
+#![allow(clippy::disallowed_methods)]
+
 use crate::figure::{AxisScale, Dash, Figure, FigureKind, LineStyle, MarkerShape, Series};
 use crate::theme::Theme;
 use plotters::coord::ranged1d::{AsRangedCoord, Ranged, ValueFormatter};
@@ -508,7 +511,7 @@ where
     let mut legend: Vec<(&str, LineStyle)> = Vec::new();
     let mut clipped = false;
     for s in &fig.series {
-        let color = theme.color(s.style.color);
+        let color = theme.color(s.style.ink.index());
         let style = color.stroke_width(px(s.style.width, scale));
         let (segs, cut) = segments(s, fig);
         clipped |= cut;
@@ -541,7 +544,7 @@ where
     }
 
     for m in &fig.markers {
-        let color = theme.color(m.color);
+        let color = theme.color(m.ink.index());
         let (x, y) = m.at;
         if !(x.is_finite() && y.is_finite()) {
             continue;
@@ -635,7 +638,7 @@ fn draw_legend<DB: DrawingBackend>(
         let y = y0 + pad + line_h * i as i32 + line_h / 2;
         let x = x0 + pad;
         let stroke = theme
-            .color(style.color)
+            .color(style.ink.index())
             .stroke_width(px(style.width, scale));
         let pieces: &[(i32, i32)] = match style.dash {
             Dash::Solid => &[(0, 24)],
@@ -661,19 +664,20 @@ fn draw_legend<DB: DrawingBackend>(
 mod tests {
     use super::*;
     use crate::figure::{Axis, Marker};
+    use crate::plot::Ink;
 
     fn sample() -> Figure {
         Figure {
             series: vec![Series {
                 label: "x(t)".into(),
                 points: vec![(0.0, 0.0), (0.5, f64::NAN), (0.6, 1e300), (1.0, -0.5)],
-                style: LineStyle::solid(0, 2.0),
+                style: LineStyle::solid(Ink::Blue, 2.0),
             }],
             markers: vec![Marker {
                 label: "p".into(),
                 at: (0.5, 0.5),
                 shape: MarkerShape::Cross,
-                color: 1,
+                ink: Ink::Vermillion,
             }],
             origin_lines: true,
             ..Figure::plot(

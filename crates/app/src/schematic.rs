@@ -2,16 +2,20 @@
 //! and a series RLC loop. Coordinates are abstract drawing units; the renderer keeps the
 //! two axes at equal scale.
 
+// Drawing: the shapes of springs, coils and road profiles.
+#![allow(clippy::disallowed_methods)]
+
 use crate::figure::{Axis, Dash, Figure, FigureKind, LineStyle, Marker, MarkerShape, Series};
+use crate::plot::Ink;
 
-const INK: usize = 6;
+const INK: Ink = Ink::Black;
 
-fn line(points: Vec<(f64, f64)>, color: usize, width: f64) -> Series {
+fn line(points: Vec<(f64, f64)>, color: Ink, width: f64) -> Series {
     Series {
         label: String::new(),
         points,
         style: LineStyle {
-            color,
+            ink: color,
             dash: Dash::Solid,
             width,
         },
@@ -23,7 +27,7 @@ fn label(text: &str, at: (f64, f64)) -> Marker {
         label: text.to_string(),
         at,
         shape: MarkerShape::Label,
-        color: INK,
+        ink: INK,
     }
 }
 
@@ -113,18 +117,18 @@ pub fn mass_spring_damper(x: f64, u: f64, labels: &MassLabels<'_>, description: 
         ));
     }
     fig.series
-        .push(line(spring(-0.5, base_y, bottom, 5, 0.18), 0, 2.5));
+        .push(line(spring(-0.5, base_y, bottom, 5, 0.18), Ink::Blue, 2.5));
     for part in damper(0.5, base_y, bottom, 0.16) {
-        fig.series.push(line(part, 1, 2.5));
+        fig.series.push(line(part, Ink::Vermillion, 2.5));
     }
     fig.series
-        .push(line(rect((0.0, mass_c), 1.7, mass_h), 2, 3.0));
+        .push(line(rect((0.0, mass_c), 1.7, mass_h), Ink::Green, 3.0));
     // Rest position of the mass, for reference.
     fig.series.push(Series {
         label: String::new(),
         points: vec![(1.0, 2.4), (1.5, 2.4)],
         style: LineStyle {
-            color: INK,
+            ink: INK,
             dash: Dash::Dashed,
             width: 1.0,
         },
@@ -158,7 +162,7 @@ pub fn rlc_loop(current: f64, charge: f64, description: String) -> Figure {
         top.push((-0.8 + 1.6 * k as f64 / 48.0, 1.0 + 0.18 * th.sin().abs()));
     }
     top.extend([(0.8, 1.0), (1.4, 1.0)]);
-    fig.series.push(line(top, 0, 2.5));
+    fig.series.push(line(top, Ink::Blue, 2.5));
     // Right: resistor zigzag from (1.4, 1) down to (1.4, −1).
     let mut right = vec![(1.4, 1.0), (1.4, 0.6)];
     for k in 0..8 {
@@ -166,25 +170,29 @@ pub fn rlc_loop(current: f64, charge: f64, description: String) -> Figure {
         right.push((if k % 2 == 0 { 1.55 } else { 1.25 }, y));
     }
     right.extend([(1.4, -0.6), (1.4, -1.0)]);
-    fig.series.push(line(right, 1, 2.5));
+    fig.series.push(line(right, Ink::Vermillion, 2.5));
     // Bottom wire and left side with the capacitor plates.
+    fig.series.push(line(
+        vec![(1.4, -1.0), (-1.4, -1.0), (-1.4, -0.12)],
+        Ink::Black,
+        2.5,
+    ));
     fig.series
-        .push(line(vec![(1.4, -1.0), (-1.4, -1.0), (-1.4, -0.12)], 6, 2.5));
+        .push(line(vec![(-1.4, 1.0), (-1.4, 0.12)], Ink::Black, 2.5));
     fig.series
-        .push(line(vec![(-1.4, 1.0), (-1.4, 0.12)], 6, 2.5));
+        .push(line(vec![(-1.75, 0.12), (-1.05, 0.12)], Ink::Green, 3.5));
     fig.series
-        .push(line(vec![(-1.75, 0.12), (-1.05, 0.12)], 2, 3.5));
-    fig.series
-        .push(line(vec![(-1.75, -0.12), (-1.05, -0.12)], 2, 3.5));
+        .push(line(vec![(-1.75, -0.12), (-1.05, -0.12)], Ink::Green, 3.5));
     // Current arrow along the bottom wire; its length and direction follow i.
     let len = 1.6 * i;
     if len.abs() > 0.02 {
         let head = if len > 0.0 { -0.15 } else { 0.15 };
         let tip = (-len / 2.0, -1.3);
-        fig.series.push(line(vec![(len / 2.0, -1.3), tip], 3, 3.0));
+        fig.series
+            .push(line(vec![(len / 2.0, -1.3), tip], Ink::Purple, 3.0));
         fig.series.push(line(
             vec![(tip.0 + head, -1.2), tip, (tip.0 + head, -1.4)],
-            3,
+            Ink::Purple,
             3.0,
         ));
     }

@@ -208,6 +208,9 @@ pub struct DemoSpec {
     pub readouts: Vec<ReadoutSpec>,
     /// Plots in display order.
     pub plots: Vec<PlotSpec>,
+    /// Key of the primary plot: the one that answers the sliders most directly, kept in
+    /// view beside the controls and shown first in the embed view. Empty means the first.
+    pub primary_plot: &'static str,
     /// One-click configurations.
     pub presets: Vec<Preset>,
     /// An optional reference table.
@@ -217,6 +220,15 @@ pub struct DemoSpec {
 }
 
 impl DemoSpec {
+    /// The primary plot's key: the declared one, else the first plot's.
+    pub fn primary(&self) -> &'static str {
+        if self.primary_plot.is_empty() {
+            self.plots.first().map_or("", |p| p.key)
+        } else {
+            self.primary_plot
+        }
+    }
+
     /// The parameter with this key.
     pub fn param(&self, key: &str) -> Option<&ParamSpec> {
         self.params.iter().find(|p| p.key == key)

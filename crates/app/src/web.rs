@@ -132,6 +132,7 @@ fn translate_spec(spec: &DemoSpec, l: Lang) -> TranslatedSpec {
                 .collect(),
             highlight_readout: tb.highlight_readout,
         }),
+        primary_plot: spec.primary(),
         schematic: spec.schematic,
     }
 }
@@ -192,6 +193,7 @@ struct TranslatedSpec {
     #[serde(serialize_with = "presets_as_objects")]
     presets: Vec<(String, Vec<(&'static str, f64)>)>,
     table: Option<TranslatedTable>,
+    primary_plot: &'static str,
     schematic: bool,
 }
 
@@ -257,8 +259,7 @@ struct DemoEntry {
 /// `[{id, title}]` of every demo, in menu order.
 #[wasm_bindgen(js_name = demoList)]
 pub fn demo_list() -> Result<JsValue, JsError> {
-    let list: Vec<DemoEntry> = demos::IDS
-        .iter()
+    let list: Vec<DemoEntry> = demos::ids()
         .filter_map(|id| demos::create(id).map(|d| d.spec()))
         .map(|s| DemoEntry {
             id: s.id,

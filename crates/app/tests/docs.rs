@@ -13,7 +13,7 @@ const END: &str = "<!-- params:end -->";
 
 fn generated() -> String {
     let mut out = String::new();
-    for id in demos::IDS {
+    for id in demos::ids() {
         let spec = demos::create(id).unwrap().spec();
         writeln!(out, "\n### `{}` — {}\n", spec.id, spec.title).unwrap();
         writeln!(out, "| key | quantity | unit | range | default |").unwrap();

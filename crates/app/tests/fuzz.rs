@@ -53,7 +53,7 @@ proptest! {
     /// gives readouts without NaN or infinity.
     #[test]
     fn every_demo_accepts_any_query(q in query(), which in 0usize..64) {
-        let id = demos::IDS[which % demos::IDS.len()];
+        let id = demos::ids().nth(which % demos::ids().len()).unwrap();
         let mut demo = demos::create(id).unwrap();
         let spec = demo.spec();
         let (params, notices): (Params, _) = resolve_query(&spec, &q);
@@ -81,7 +81,7 @@ proptest! {
     /// panics and never shows NaN (the registry test covers the ends of each range).
     #[test]
     fn every_demo_survives_random_parameters(which in 0usize..64, fractions in prop::collection::vec(0.0f64..=1.0, 32)) {
-        let id = demos::IDS[which % demos::IDS.len()];
+        let id = demos::ids().nth(which % demos::ids().len()).unwrap();
         let mut demo = demos::create(id).unwrap();
         let spec = demo.spec();
         let mut params = Params::defaults(&spec);

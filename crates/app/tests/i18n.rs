@@ -477,7 +477,7 @@ fn is_symbolic(s: &str) -> bool {
 #[test]
 fn every_static_spec_string_has_a_whole_spanish_entry() {
     let mut missing = BTreeSet::new();
-    for id in demos::IDS {
+    for id in demos::ids() {
         let spec = demos::create(id).unwrap().spec();
         for s in static_strings(&spec) {
             if has_whole(Lang::Es, s) {
@@ -505,7 +505,7 @@ fn every_generated_string_translates_without_english_left() {
     let dump = std::env::var_os("ZETA_I18N_DUMP").is_some();
     let mut problems = BTreeSet::new();
     let mut seen = BTreeSet::new();
-    for id in demos::IDS {
+    for id in demos::ids() {
         let mut demo = demos::create(id).unwrap();
         let spec = demo.spec();
         for (case, params) in cases(&spec) {
@@ -538,7 +538,7 @@ fn spanish_whole_values_survive_a_second_translation() {
     // The page may translate a string twice (e.g. a label reused inside a figure); a
     // Spanish value must come back unchanged, not be corrupted by an English phrase.
     let mut changed = BTreeSet::new();
-    for id in demos::IDS {
+    for id in demos::ids() {
         let spec = demos::create(id).unwrap().spec();
         for s in static_strings(&spec) {
             let es = tr(Lang::Es, s);

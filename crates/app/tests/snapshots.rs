@@ -38,7 +38,10 @@ fn series_digest(s: &Series) -> Value {
     let last = finite.last().copied().unwrap_or((f64::NAN, f64::NAN));
     json!({
         "label": s.label,
-        "style": format!("{:?}", s.style),
+        "style": format!(
+            "LineStyle {{ color: {}, dash: {:?}, width: {:?} }}",
+            s.style.ink.index(), s.style.dash, s.style.width
+        ),
         "points": s.points.len(),
         "finite": finite.len(),
         "first": [num(first.0, 9), num(first.1, 9)],
@@ -70,7 +73,7 @@ fn figure_digest(f: &Figure) -> Value {
             "label": m.label,
             "at": [num(m.at.0, 9), num(m.at.1, 9)],
             "shape": format!("{:?}", m.shape),
-            "color": m.color,
+            "color": m.ink.index(),
         })).collect::<Vec<_>>(),
         "heatmap": f.heatmap.as_ref().map(|h| {
             let finite: Vec<f64> = h.values.iter().copied().filter(|v| v.is_finite()).collect();
@@ -140,7 +143,7 @@ fn every_demo_at_its_defaults_and_presets() {
     settings.set_prepend_module_to_snapshot(false);
     settings.set_omit_expression(true);
     settings.bind(|| {
-        for id in demos::IDS {
+        for id in demos::ids() {
             let mut demo = demos::create(id).expect("registered demo");
             let spec = demo.spec();
             let mut states = vec![state(
@@ -161,12 +164,14 @@ fn every_demo_at_its_defaults_and_presets() {
                 let mut fresh = demos::create(id).expect("registered demo");
                 states.push(state(fresh.as_mut(), preset.label, &query, &params));
             }
+            let mut spec_json = serde_json::to_value(&spec).expect("spec serialises");
+            spec_json["primary_plot"] = json!(spec.primary());
             let doc = json!({
                 "id": id,
-                "spec": serde_json::to_value(&spec).expect("spec serialises"),
+                "spec": spec_json,
                 "states": states,
             });
-            insta::assert_snapshot!(*id, serde_json::to_string_pretty(&doc).expect("json"));
+            insta::assert_snapshot!(id, serde_json::to_string_pretty(&doc).expect("json"));
         }
     });
 }

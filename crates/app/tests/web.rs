@@ -65,7 +65,7 @@ fn regimes_draws_its_curve_and_poles_onto_canvases() {
 
 #[wasm_bindgen_test]
 fn every_demo_draws_every_plot() {
-    for id in demos::IDS {
+    for id in demos::ids() {
         let mut s = Session::new(id).unwrap();
         let spec = demos::create(id).unwrap().spec();
         let canvases: Vec<_> = spec

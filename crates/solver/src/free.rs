@@ -109,6 +109,24 @@ impl FreeResponse {
         (m - self.alpha * self.v0) * c + (self.v0 * self.d - self.alpha * m) * s
     }
 
+    /// The decay envelope `A·e^{−αt}` of an oscillating response (`ζ < 1`), with
+    /// `A = √(x0² + ((v0 + α·x0)/ω_d)²)` and `ω_d = √(ω_n² − α²)` \[rad/s\]: the response
+    /// touches `±` this curve once per half period. `None` when the response does not
+    /// oscillate (`ζ ≥ 1`).
+    pub fn envelope(&self, t: f64) -> Option<f64> {
+        Some(self.envelope_amplitude()? * (-self.alpha * t).exp())
+    }
+
+    /// The amplitude `A` of [`FreeResponse::envelope`] at `t = 0`, in the unit of `x0`;
+    /// `None` when the response does not oscillate.
+    pub fn envelope_amplitude(&self) -> Option<f64> {
+        (self.d < 0.0).then(|| {
+            let wd = (-self.d).sqrt();
+            let s = (self.v0 + self.alpha * self.x0) / wd;
+            (self.x0 * self.x0 + s * s).sqrt()
+        })
+    }
+
     /// State `[x, x']` at `t`.
     pub fn state(&self, t: f64) -> [f64; 2] {
         let (c, s) = damped_basis(self.alpha, self.d, t);
@@ -234,6 +252,24 @@ mod tests {
         assert!(x.is_finite() && x > 0.0 && x <= 1.0);
         let tail = r.displacement(1e8);
         assert!(tail.is_finite() && tail < 1.0);
+    }
+
+    #[test]
+    fn the_envelope_bounds_the_response_and_touches_it() {
+        let sys = SecondOrder::from_natural(3.0, 0.2).unwrap();
+        let r = FreeResponse::new(sys, 0.05, 0.4);
+        let mut touched = 0;
+        for i in 0..4000 {
+            let t = i as f64 * 1e-3;
+            let (x, e) = (r.displacement(t), r.envelope(t).unwrap());
+            assert!(x.abs() <= e * (1.0 + 1e-12));
+            if (x.abs() - e).abs() < 1e-4 * e {
+                touched += 1;
+            }
+        }
+        assert!(touched > 0);
+        let over = FreeResponse::new(SecondOrder::from_natural(3.0, 1.5).unwrap(), 0.05, 0.0);
+        assert_eq!(over.envelope(1.0), None);
     }
 
     #[test]

@@ -27,6 +27,7 @@ pub mod flutter;
 pub mod forced;
 pub mod free;
 pub mod frf;
+pub mod grid;
 pub mod integrate;
 pub mod metrics;
 pub mod model;

@@ -3,11 +3,15 @@
 //! grid of spring and damper rates, recomputed live as the sprung mass moves, with iso-ζ
 //! lines, the Pareto front of comfort against settling, and the chosen design's response.
 
+// Not yet reshaped: still does maths the solver should do (issue "one shape").
+#![allow(clippy::disallowed_methods)]
+
 use super::{Demo, Frame, Readout};
 use crate::figure::{finite_extent, padded, Axis, Dash, Figure, Heatmap, LineStyle, Marker};
 use crate::figure::{MarkerShape, Series};
 use crate::format::{si, significant};
 use crate::params::Params;
+use crate::plot::Ink;
 use crate::spec::{DemoSpec, ParamSpec, PlotSpec, Preset, ReadoutSpec};
 use zeta_solver::design::pareto::pareto_front_into;
 use zeta_solver::design::sweep::{
@@ -361,14 +365,14 @@ impl DesignSpace {
                 label: format!("ζ={zeta}"),
                 at,
                 shape: MarkerShape::Label,
-                color: 6,
+                ink: Ink::Black,
             });
             series.push(Series {
                 // Labelled on the plot itself; a legend box would cover the map.
                 label: String::new(),
                 points,
                 style: LineStyle {
-                    color: 1,
+                    ink: Ink::Vermillion,
                     dash: Dash::Dashed,
                     width: 2.0,
                 },
@@ -383,7 +387,7 @@ impl DesignSpace {
                     label: String::new(),
                     at: (bk / KILO, bc / KILO),
                     shape: MarkerShape::Cross,
-                    color: 6,
+                    ink: Ink::Black,
                 });
                 best_text = format!(
                     "lowest {} at k = {}, c = {}",
@@ -399,7 +403,7 @@ impl DesignSpace {
                 label: "selected".into(),
                 at: (inp.k / KILO, inp.c / KILO),
                 shape: MarkerShape::Dot,
-                color: 6,
+                ink: Ink::Black,
             });
         }
         let shown = |v: f64| fmt_unit(v, unit, 3);
@@ -514,7 +518,7 @@ impl DesignSpace {
                 label: format!("k = {}, c varied", si(kcol, "N/m", 3)),
                 points,
                 style: LineStyle {
-                    color: 2,
+                    ink: Ink::Green,
                     dash: Dash::Dotted,
                     width: 2.0,
                 },
@@ -525,7 +529,7 @@ impl DesignSpace {
         series.push(Series {
             label: "Pareto front".into(),
             points: pts,
-            style: LineStyle::solid(0, 2.5),
+            style: LineStyle::solid(Ink::Blue, 2.5),
         });
         let mut markers = Vec::new();
         if let Some(p) = sel_pt {
@@ -533,7 +537,7 @@ impl DesignSpace {
                 label: "selected".into(),
                 at: p,
                 shape: MarkerShape::Dot,
-                color: 1,
+                ink: Ink::Vermillion,
             });
         }
         let description = match ends {
@@ -629,7 +633,7 @@ fn response_figure(inp: &Inputs, sel: &Selected, best: Option<(f64, f64)>) -> Fi
             label: label.into(),
             points: vec![(0.0, sign * h), (t_end, sign * h)],
             style: LineStyle {
-                color: 6,
+                ink: Ink::Black,
                 dash: Dash::Dotted,
                 width: 1.2,
             },
@@ -640,7 +644,7 @@ fn response_figure(inp: &Inputs, sel: &Selected, best: Option<(f64, f64)>) -> Fi
             label: "fastest on the grid".into(),
             points: curve(&sys),
             style: LineStyle {
-                color: 2,
+                ink: Ink::Green,
                 dash: Dash::Dashed,
                 width: 2.0,
             },
@@ -651,7 +655,7 @@ fn response_figure(inp: &Inputs, sel: &Selected, best: Option<(f64, f64)>) -> Fi
         series.push(Series {
             label: "selected design".into(),
             points: curve(sys),
-            style: LineStyle::solid(0, 2.5),
+            style: LineStyle::solid(Ink::Blue, 2.5),
         });
         if let Some(t) = sel.settling_time.filter(|&t| t <= t_end) {
             let x = FreeResponse::new(*sys, X0, 0.0).displacement(t);
@@ -659,7 +663,7 @@ fn response_figure(inp: &Inputs, sel: &Selected, best: Option<(f64, f64)>) -> Fi
                 label: "settled".into(),
                 at: (t, x),
                 shape: MarkerShape::Cross,
-                color: 1,
+                ink: Ink::Vermillion,
             });
         }
     }
@@ -846,6 +850,7 @@ impl Demo for DesignSpace {
                     aspect: 1.35,
                 },
             ],
+            primary_plot: "",
             presets: vec![
                 Preset {
                     label: "Settling-time map, 300 kg, ζ ≈ 0.37",

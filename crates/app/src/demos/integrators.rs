@@ -19,10 +19,14 @@
 //! - Symplectic Euler is not a scalar map `R(z)`: its stability comes from the spectral
 //!   radius of its 2×2 step matrix and is described in words, not drawn as a region.
 
+// Not yet reshaped: still does maths the solver should do (issue "one shape").
+#![allow(clippy::disallowed_methods)]
+
 use super::{Demo, Frame, Readout};
 use crate::figure::{Axis, AxisScale, Dash, Figure, LineStyle, Marker, MarkerShape, Series};
 use crate::format::si;
 use crate::params::Params;
+use crate::plot::Ink;
 use crate::spec::{DemoSpec, ParamSpec, PlotSpec, Preset, ReadoutSpec, Table};
 use zeta_solver::integrate::analysis::{
     convergence_study, error_norms, fit_order, symplectic_euler_spectral_radius,
@@ -98,7 +102,7 @@ const FIXED: [Fixed; 4] = [
         stable_key: "stable_euler",
         growth_key: "growth_euler",
         style: LineStyle {
-            color: 1,
+            ink: Ink::Vermillion,
             dash: Dash::Dashed,
             width: 2.0,
         },
@@ -113,7 +117,7 @@ const FIXED: [Fixed; 4] = [
         stable_key: "stable_symplectic_euler",
         growth_key: "growth_symplectic_euler",
         style: LineStyle {
-            color: 3,
+            ink: Ink::Purple,
             dash: Dash::Dashed,
             width: 1.5,
         },
@@ -128,7 +132,7 @@ const FIXED: [Fixed; 4] = [
         stable_key: "stable_heun",
         growth_key: "growth_heun",
         style: LineStyle {
-            color: 4,
+            ink: Ink::Orange,
             dash: Dash::Dotted,
             width: 2.5,
         },
@@ -143,7 +147,7 @@ const FIXED: [Fixed; 4] = [
         stable_key: "stable_rk4",
         growth_key: "growth_rk4",
         style: LineStyle {
-            color: 0,
+            ink: Ink::Blue,
             dash: Dash::Solid,
             width: 1.8,
         },
@@ -153,12 +157,12 @@ const FIXED: [Fixed; 4] = [
 ];
 
 const EXACT_STYLE: LineStyle = LineStyle {
-    color: 6,
+    ink: Ink::Black,
     dash: Dash::Solid,
     width: 3.5,
 };
 const DP45_STYLE: LineStyle = LineStyle {
-    color: 2,
+    ink: Ink::Green,
     dash: Dash::Dotted,
     width: 2.0,
 };
@@ -680,7 +684,7 @@ impl Integrators {
                 markers.extend(
                     strided(sol.t.len(), every)
                         .filter(|&i| inside(sol.y[i][0]))
-                        .map(|i| mark(shape, f.style.color, (sol.t[i], sol.y[i][0]))),
+                        .map(|i| mark(shape, f.style.ink, (sol.t[i], sol.y[i][0]))),
                 );
             }
             let mut label = f.legend.to_string();
@@ -718,9 +722,7 @@ impl Integrators {
                     markers.extend(
                         strided(steps.t.len(), every)
                             .filter(|&i| inside(steps.y[i][0]))
-                            .map(|i| {
-                                mark(DP45_MARK, DP45_STYLE.color, (steps.t[i], steps.y[i][0]))
-                            }),
+                            .map(|i| mark(DP45_MARK, DP45_STYLE.ink, (steps.t[i], steps.y[i][0]))),
                     );
                 }
             }
@@ -779,7 +781,7 @@ impl Integrators {
                     strided(sol.t.len(), every)
                         .map(|i| (sol.t[i], errs(i)))
                         .filter(|p| p.1.is_finite() && p.1 <= clip)
-                        .map(|p| mark(shape, f.style.color, p)),
+                        .map(|p| mark(shape, f.style.ink, p)),
                 );
             }
             parts.push(error_words(f.name, &pts, cur.growth[k]));
@@ -809,7 +811,7 @@ impl Integrators {
                 strided(pts.len(), every)
                     .map(|i| pts[i])
                     .filter(|p| p.1.is_finite())
-                    .map(|p| mark(DP45_MARK, DP45_STYLE.color, p)),
+                    .map(|p| mark(DP45_MARK, DP45_STYLE.ink, p)),
             );
             parts.push(error_words("DP45", &pts, 1.0));
             series.push(Series {
@@ -891,12 +893,12 @@ fn bucket_max(len: usize, point: impl Fn(usize) -> (f64, f64)) -> Vec<(f64, f64)
         .collect()
 }
 
-fn mark(shape: MarkerShape, color: usize, at: (f64, f64)) -> Marker {
+fn mark(shape: MarkerShape, color: Ink, at: (f64, f64)) -> Marker {
     Marker {
         label: String::new(),
         at,
         shape,
-        color,
+        ink: color,
     }
 }
 
@@ -1065,14 +1067,14 @@ fn convergence_figure(s: &Setup, study: &Study, cur: &Current) -> Figure {
             markers.extend(
                 pts.iter()
                     .filter(|p| p.1 <= clip)
-                    .map(|&p| mark(shape, style.color, p)),
+                    .map(|&p| mark(shape, style.ink, p)),
             );
         }
         if let Some((lo, hi, c, p)) = fit_line(&sweep.study) {
             series.push(Series {
                 label: String::new(),
                 points: vec![(lo, c * lo.powf(p)), (hi, c * hi.powf(p))],
-                style: LineStyle::solid(style.color, 1.0),
+                style: LineStyle::solid(style.ink, 1.0),
             });
         }
         let label = match sweep.study.order {
@@ -1122,7 +1124,7 @@ fn convergence_figure(s: &Setup, study: &Study, cur: &Current) -> Figure {
                 .filter(|q| q.1 >= y_range.0 && q.1 <= y_range.1)
                 .collect(),
             style: LineStyle {
-                color: 6,
+                ink: Ink::Black,
                 dash: Dash::Dotted,
                 width: 1.2,
             },
@@ -1134,7 +1136,7 @@ fn convergence_figure(s: &Setup, study: &Study, cur: &Current) -> Figure {
                 label: format!("slope {p}"),
                 at: (h_at, line(h_at)),
                 shape: MarkerShape::Label,
-                color: 6,
+                ink: Ink::Black,
             });
         }
     }
@@ -1142,13 +1144,13 @@ fn convergence_figure(s: &Setup, study: &Study, cur: &Current) -> Figure {
         label: format!("h = {}", si(cur.h, "s", 3)),
         at: (cur.h * 1.1, y_range.0 * 30.0),
         shape: MarkerShape::Label,
-        color: 5,
+        ink: Ink::Sky,
     });
     series.push(Series {
         label: String::new(),
         points: vec![(cur.h, y_range.0), (cur.h, y_range.1)],
         style: LineStyle {
-            color: 5,
+            ink: Ink::Sky,
             dash: Dash::Dashed,
             width: 1.2,
         },
@@ -1250,7 +1252,7 @@ fn stability_figure(s: &Setup, cur: &Current, regions: &[Vec<(f64, f64)>; 3]) ->
             },
             at,
             shape: MarkerShape::Cross,
-            color: 6,
+            ink: Ink::Black,
         });
         // The path z = h'λ for 0 < h' ≤ h, along which z moves as h grows.
         series.push(Series {
@@ -1266,7 +1268,7 @@ fn stability_figure(s: &Setup, cur: &Current, regions: &[Vec<(f64, f64)>; 3]) ->
                 })
                 .collect(),
             style: LineStyle {
-                color: 5,
+                ink: Ink::Sky,
                 dash: Dash::Dotted,
                 width: 1.5,
             },
@@ -1434,6 +1436,7 @@ impl Demo for Integrators {
                     aspect: 1.3,
                 },
             ],
+            primary_plot: "",
             presets: vec![
                 Preset {
                     label: "Lightly damped, h = 0.3 s",

@@ -1,10 +1,10 @@
 //! The demo registry. Each demo lives in its own file and implements [`Demo`]; adding one
-//! is one new file and one line in [`IDS`] and [`create`].
+//! is one new file and one line in the registry (`REGISTRY`).
 
+use crate::declare::Declaration;
 use crate::figure::Figure;
 use crate::params::Params;
 use crate::spec::DemoSpec;
-use serde::Serialize;
 
 pub mod analogy;
 pub mod design;
@@ -18,45 +18,10 @@ pub mod resonance;
 pub mod rlc;
 pub mod uncertainty;
 
-/// One computed readout, ready for the page.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Readout {
-    /// Key from the demo's [`crate::spec::ReadoutSpec`].
-    pub key: &'static str,
-    /// Formatted text with unit, e.g. `"8.944 rad/s"`; `"—"` when undefined.
-    pub text: String,
-    /// The `data-value` attribute: the number in SI units (percent where the name says so)
-    /// in Rust's shortest round-trip form, the text for text readouts, or empty when undefined.
-    pub data_value: String,
-}
+#[cfg(test)]
+pub(crate) mod testing;
 
-impl Readout {
-    /// A numeric readout (`None` when the quantity is undefined for this system).
-    pub fn number(key: &'static str, value: Option<f64>, unit: &str, sig: usize) -> Self {
-        match value.filter(|v| v.is_finite()) {
-            Some(v) => Self {
-                key,
-                text: crate::format::si(v, unit, sig),
-                data_value: format!("{v}"),
-            },
-            None => Self {
-                key,
-                text: "—".to_string(),
-                data_value: String::new(),
-            },
-        }
-    }
-
-    /// A text readout.
-    pub fn text(key: &'static str, text: impl Into<String>) -> Self {
-        let text = text.into();
-        Self {
-            key,
-            data_value: text.clone(),
-            text,
-        }
-    }
-}
+pub use crate::declare::Readout;
 
 /// What one update produces: readouts and one figure per declared plot, in order.
 #[derive(Debug, Clone, PartialEq)]
@@ -96,37 +61,136 @@ pub trait Demo {
     }
 }
 
-/// Ids of every demo, in menu order.
-pub const IDS: &[&str] = &[
-    "regimes",
-    "quarter-car",
-    "rlc",
-    "analogy",
-    "resonance",
-    "integrators",
-    "flutter",
-    "nonlinear",
-    "quarter-car-2dof",
-    "design",
-    "uncertainty",
+/// A demo in the one shape every demo has: a declaration (parameters and readouts as
+/// tables), a model step that turns typed parameters into plain results by calling the
+/// solver, and figures built from those results. [`Typed`] adapts it to [`Demo`].
+pub trait Model: 'static {
+    /// The typed parameters, filled from the declaration's parameter table.
+    type Params: Default;
+    /// What one model step computes: plain numbers and series, no drawing.
+    type Results;
+
+    /// The declaration: parameters, readouts, plots, presets, text.
+    fn declare() -> Declaration<Self::Params, Self::Results>;
+
+    /// The model step: solver calls only. `None` when the parameters describe no valid
+    /// system (unreachable with validated values; the page then shows every readout as
+    /// undefined rather than panicking).
+    fn step(&mut self, p: &Self::Params) -> Option<Self::Results>;
+
+    /// One figure per declared plot, in order, from the results.
+    fn figures(&self, p: &Self::Params, r: &Self::Results) -> Vec<Figure>;
+
+    /// Time span \[s\] of the animation, for demos with a schematic.
+    fn time_span(&self, _p: &Self::Params, _r: &Self::Results) -> Option<(f64, f64)> {
+        None
+    }
+
+    /// The schematic at time `t` \[s\].
+    fn schematic(&self, _p: &Self::Params, _t: f64) -> Option<Figure> {
+        None
+    }
+
+    /// Parameters the last step derived from others (see [`Demo::derived_params`]).
+    fn derived_params(&self) -> Vec<(&'static str, f64)> {
+        Vec::new()
+    }
+
+    /// A click at data point `(x, y)` of plot `plot` (see [`Demo::pick`]).
+    fn pick(&mut self, _plot: &str, _x: f64, _y: f64) -> Vec<(&'static str, f64)> {
+        Vec::new()
+    }
+
+    /// The main response at `t`, normalised to about −1…1 (see [`Demo::sonify`]).
+    fn sonify(&self, _p: &Self::Params, _t: f64) -> Option<f64> {
+        None
+    }
+}
+
+/// A [`Model`] with its declaration, as a [`Demo`] the registry can hold.
+pub struct Typed<M: Model> {
+    model: M,
+    decl: Declaration<M::Params, M::Results>,
+}
+
+impl<M: Model> Typed<M> {
+    /// Wraps `model` with its declaration.
+    pub fn new(model: M) -> Self {
+        Self {
+            model,
+            decl: M::declare(),
+        }
+    }
+}
+
+impl<M: Model> Demo for Typed<M> {
+    fn spec(&self) -> DemoSpec {
+        self.decl.spec()
+    }
+
+    fn update(&mut self, params: &Params) -> Frame {
+        let p = self.decl.read(params);
+        match self.model.step(&p) {
+            Some(r) => Frame {
+                readouts: self.decl.readouts(&r),
+                figures: self.model.figures(&p, &r),
+                time_span: self.model.time_span(&p, &r),
+            },
+            None => self.decl.undefined_frame(),
+        }
+    }
+
+    fn schematic(&self, params: &Params, t: f64) -> Option<Figure> {
+        self.model.schematic(&self.decl.read(params), t)
+    }
+
+    fn derived_params(&self) -> Vec<(&'static str, f64)> {
+        self.model.derived_params()
+    }
+
+    fn pick(&mut self, plot: &str, x: f64, y: f64) -> Vec<(&'static str, f64)> {
+        self.model.pick(plot, x, y)
+    }
+
+    fn sonify(&self, params: &Params, t: f64) -> Option<f64> {
+        self.model.sonify(&self.decl.read(params), t)
+    }
+}
+
+/// Makes a fresh demo.
+type Factory = fn() -> Box<dyn Demo>;
+
+/// Every demo, in menu order: the one list. The id here must equal the declaration's
+/// (checked by the registry test).
+const REGISTRY: &[(&str, Factory)] = &[
+    ("regimes", || Box::new(Typed::new(regimes::Regimes))),
+    ("quarter-car", || Box::new(quarter_car::QuarterCar::new())),
+    ("rlc", || Box::new(rlc::Rlc)),
+    ("analogy", || Box::new(analogy::Analogy)),
+    ("resonance", || Box::new(resonance::Resonance::default())),
+    ("integrators", || Box::new(integrators::Integrators::new())),
+    ("flutter", || Box::new(flutter::Flutter::default())),
+    ("nonlinear", || Box::new(nonlinear::Nonlinear::default())),
+    ("quarter-car-2dof", || {
+        Box::new(quarter_car_2dof::QuarterCar2Dof::default())
+    }),
+    ("design", || Box::new(design::DesignSpace::default())),
+    ("uncertainty", || {
+        Box::new(uncertainty::Uncertainty::default())
+    }),
 ];
+
+/// Ids of every demo, in menu order.
+pub fn ids() -> impl ExactSizeIterator<Item = &'static str> {
+    REGISTRY.iter().map(|(id, _)| *id)
+}
 
 /// A new instance of the demo `id`, or `None` if there is no such demo.
 pub fn create(id: &str) -> Option<Box<dyn Demo>> {
-    match id {
-        "regimes" => Some(Box::new(regimes::Regimes)),
-        "quarter-car" => Some(Box::new(quarter_car::QuarterCar::new())),
-        "rlc" => Some(Box::new(rlc::Rlc)),
-        "resonance" => Some(Box::new(resonance::Resonance::default())),
-        "analogy" => Some(Box::new(analogy::Analogy)),
-        "flutter" => Some(Box::new(flutter::Flutter::default())),
-        "nonlinear" => Some(Box::new(nonlinear::Nonlinear::default())),
-        "quarter-car-2dof" => Some(Box::new(quarter_car_2dof::QuarterCar2Dof::default())),
-        "integrators" => Some(Box::new(integrators::Integrators::new())),
-        "design" => Some(Box::new(design::DesignSpace::default())),
-        "uncertainty" => Some(Box::new(uncertainty::Uncertainty::default())),
-        _ => None,
-    }
+    REGISTRY
+        .iter()
+        .find(|(k, _)| *k == id)
+        .map(|(_, make)| make())
 }
 
 #[cfg(test)]
@@ -136,12 +200,12 @@ mod tests {
 
     #[test]
     fn every_demo_is_consistent_and_draws_finite_figures_from_its_defaults() {
-        let mut ids = HashSet::new();
-        for id in IDS {
+        let mut seen = HashSet::new();
+        for id in ids() {
             let mut demo = create(id).unwrap();
             let spec = demo.spec();
-            assert_eq!(spec.id, *id);
-            assert!(ids.insert(spec.id), "duplicate id {id}");
+            assert_eq!(spec.id, id);
+            assert!(seen.insert(spec.id), "duplicate id {id}");
             let mut keys = HashSet::new();
             for p in &spec.params {
                 assert!(keys.insert(p.key), "{id}: duplicate key {}", p.key);
@@ -199,7 +263,7 @@ mod tests {
 
     #[test]
     fn every_demo_survives_its_parameter_extremes() {
-        for id in IDS {
+        for id in ids() {
             let mut demo = create(id).unwrap();
             let spec = demo.spec();
             for p in &spec.params {

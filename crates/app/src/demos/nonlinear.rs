@@ -7,12 +7,16 @@
 //! `v_ε = max(1 mm/s, F_c·h/m)` so that one step `h` never exceeds the friction layer's time
 //! constant `m·v_ε/F_c` (RK4 stays stable and the "stuck" mass creeps by at most a few mm).
 
+// Not yet reshaped: still does maths the solver should do (issue "one shape").
+#![allow(clippy::disallowed_methods)]
+
 use super::{Demo, Frame, Readout};
 use crate::figure::{
     finite_extent, padded, Axis, Dash, Figure, LineStyle, Marker, MarkerShape, Series,
 };
 use crate::format::si;
 use crate::params::Params;
+use crate::plot::Ink;
 use crate::schematic::{mass_spring_damper, MassLabels};
 use crate::spec::{DemoSpec, ParamSpec, PlotSpec, Preset, ReadoutSpec, Table};
 use zeta_solver::integrate::{IntegrationError, Solution, Stats};
@@ -275,6 +279,7 @@ impl Demo for Nonlinear {
                     aspect: 1.25,
                 },
             ],
+            primary_plot: "",
             presets: vec![
                 preset("Linear (all off)", &[]),
                 preset(
@@ -555,7 +560,7 @@ impl Nonlinear {
                     label,
                     points: vec![(0.0, sign * cfg.stop_gap), (t_end, sign * cfg.stop_gap)],
                     style: LineStyle {
-                        color: 3,
+                        ink: Ink::Purple,
                         dash: Dash::Dotted,
                         width: 1.5,
                     },
@@ -566,7 +571,7 @@ impl Nonlinear {
             label: "linear model".into(),
             points: lin,
             style: LineStyle {
-                color: 1,
+                ink: Ink::Vermillion,
                 dash: Dash::Dashed,
                 width: 2.0,
             },
@@ -574,14 +579,14 @@ impl Nonlinear {
         series.push(Series {
             label: "nonlinear (RK4)".into(),
             points: nl,
-            style: LineStyle::solid(0, 2.5),
+            style: LineStyle::solid(Ink::Blue, 2.5),
         });
         if let Some(st) = self.sticking {
             markers.push(Marker {
                 label: "sticks".into(),
                 at: (st.t, st.x),
                 shape: MarkerShape::Dot,
-                color: 2,
+                ink: Ink::Green,
             });
         }
         let worst = cmp
@@ -669,7 +674,7 @@ impl Nonlinear {
                     label: "linear model".into(),
                     points: lin,
                     style: LineStyle {
-                        color: 1,
+                        ink: Ink::Vermillion,
                         dash: Dash::Dashed,
                         width: 2.0,
                     },
@@ -677,7 +682,7 @@ impl Nonlinear {
                 Series {
                     label: "nonlinear (RK4)".into(),
                     points: nl,
-                    style: LineStyle::solid(0, 2.0),
+                    style: LineStyle::solid(Ink::Blue, 2.0),
                 },
             ],
             markers: start
@@ -685,7 +690,7 @@ impl Nonlinear {
                     label: "start".into(),
                     at: p,
                     shape: MarkerShape::Dot,
-                    color: 6,
+                    ink: Ink::Black,
                 })
                 .into_iter()
                 .collect(),
@@ -771,7 +776,7 @@ fn spring_figure(model: &NonlinearModel, max_travel: f64) -> Figure {
                 label: "linear k·x".into(),
                 points: lin,
                 style: LineStyle {
-                    color: 1,
+                    ink: Ink::Vermillion,
                     dash: Dash::Dashed,
                     width: 2.0,
                 },
@@ -779,7 +784,7 @@ fn spring_figure(model: &NonlinearModel, max_travel: f64) -> Figure {
             Series {
                 label: "k·x + k₃·x³ + stops".into(),
                 points: nl,
-                style: LineStyle::solid(0, 2.5),
+                style: LineStyle::solid(Ink::Blue, 2.5),
             },
         ],
         origin_lines: true,
@@ -838,7 +843,7 @@ fn damper_figure(model: &NonlinearModel, cmp: &Comparison) -> Figure {
                 label: "linear c̄·v".into(),
                 points: lin,
                 style: LineStyle {
-                    color: 1,
+                    ink: Ink::Vermillion,
                     dash: Dash::Dashed,
                     width: 2.0,
                 },
@@ -846,7 +851,7 @@ fn damper_figure(model: &NonlinearModel, cmp: &Comparison) -> Figure {
             Series {
                 label: "damper + friction".into(),
                 points: nl,
-                style: LineStyle::solid(0, 2.5),
+                style: LineStyle::solid(Ink::Blue, 2.5),
             },
         ],
         origin_lines: true,

@@ -3,10 +3,14 @@
 //! and the plots show the current `i = q'` and the capacitor voltage `v_C = q/C`, each with
 //! the critically damped response of the same L and C for comparison.
 
+// Not yet reshaped: still does maths the solver should do (issue "one shape").
+#![allow(clippy::disallowed_methods)]
+
 use super::{Demo, Frame, Readout};
 use crate::figure::{finite_extent, padded, Axis, Dash, Figure, LineStyle, Series};
 use crate::format::si;
 use crate::params::Params;
+use crate::plot::Ink;
 use crate::schematic::rlc_loop;
 use crate::spec::{DemoSpec, ParamSpec, PlotSpec, Preset, ReadoutSpec};
 use zeta_solver::metrics::{free::FreeMetrics, SettlingBand};
@@ -132,6 +136,7 @@ impl Demo for Rlc {
                     aspect: 1.35,
                 },
             ],
+            primary_plot: "",
             presets: [
                 ("Lossless LC, R = 0", 0.0),
                 ("Ringing, R = 2 Ω", 2.0),
@@ -305,7 +310,7 @@ fn plot(
                 label: label.to_string(),
                 points,
                 style: LineStyle {
-                    color: 2,
+                    ink: Ink::Green,
                     dash: Dash::Dotted,
                     width: 1.5,
                 },
@@ -317,7 +322,7 @@ fn plot(
             label: format!("critical R = {}", ohms(crit.b())),
             points: sample(&crit),
             style: LineStyle {
-                color: 1,
+                ink: Ink::Vermillion,
                 dash: Dash::Dashed,
                 width: 2.0,
             },
@@ -343,7 +348,7 @@ fn plot(
     series.push(Series {
         label: format!("R = {}", ohms(c.r)),
         points: own,
-        style: LineStyle::solid(0, 3.0),
+        style: LineStyle::solid(Ink::Blue, 3.0),
     });
     let (title, label, unit) = match signal {
         Signal::Current => ("Current i(t)", "current i", "A"),

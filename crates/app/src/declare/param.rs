@@ -1,0 +1,123 @@
+//! Parameters declared together with the field of the typed parameter struct they fill.
+
+use crate::spec::{ChoiceOption, ParamSpec};
+
+/// A choice parameter's options as a typed enum: the page shows `label`, the URL carries
+/// `key`, the model step receives the variant.
+pub trait Choice: Copy + PartialEq + 'static {
+    /// Every option in menu order: (variant, URL key, label). Never empty.
+    const OPTIONS: &'static [(Self, &'static str, &'static str)];
+
+    /// The variant at menu position `i` (the last one past the end).
+    fn from_index(i: usize) -> Self {
+        let last = Self::OPTIONS.len().saturating_sub(1);
+        Self::OPTIONS[i.min(last)].0
+    }
+
+    /// The menu position of `self`.
+    fn index(self) -> usize {
+        Self::OPTIONS
+            .iter()
+            .position(|(v, _, _)| *v == self)
+            .unwrap_or(0)
+    }
+
+    /// The URL key of `self`.
+    fn key(self) -> &'static str {
+        Self::OPTIONS[self.index()].1
+    }
+
+    /// The label of `self`.
+    fn label(self) -> &'static str {
+        Self::OPTIONS[self.index()].2
+    }
+}
+
+/// Fills one field of the typed parameter struct `P` from a validated value.
+type Setter<P> = Box<dyn Fn(&mut P, f64)>;
+
+/// One declared parameter: its spec, and how its validated value fills the typed struct `P`.
+pub struct Param<P> {
+    spec: ParamSpec,
+    set: Setter<P>,
+}
+
+impl<P: 'static> Param<P> {
+    /// A linear slider over `range = (min, max, step)`.
+    pub fn linear(
+        key: &'static str,
+        label: &'static str,
+        symbol: &'static str,
+        unit: &'static str,
+        range: (f64, f64, f64),
+        default: f64,
+        set: fn(&mut P, f64),
+    ) -> Self {
+        Self {
+            spec: ParamSpec::linear(key, label, symbol, unit, range, default),
+            set: Box::new(set),
+        }
+    }
+
+    /// A logarithmic slider over `range = (min, max, step)`, `min > 0`.
+    pub fn log(
+        key: &'static str,
+        label: &'static str,
+        symbol: &'static str,
+        unit: &'static str,
+        range: (f64, f64, f64),
+        default: f64,
+        set: fn(&mut P, f64),
+    ) -> Self {
+        Self {
+            spec: ParamSpec::log(key, label, symbol, unit, range, default),
+            set: Box::new(set),
+        }
+    }
+
+    /// A checkbox, on or off by default.
+    pub fn toggle(key: &'static str, label: &'static str, on: bool, set: fn(&mut P, bool)) -> Self {
+        Self {
+            spec: ParamSpec::toggle(key, label, on),
+            set: Box::new(move |p, v| set(p, v != 0.0)),
+        }
+    }
+
+    /// A drop-down list of the options of `C`.
+    pub fn choice<C: Choice>(
+        key: &'static str,
+        label: &'static str,
+        default: C,
+        set: fn(&mut P, C),
+    ) -> Self {
+        let options: Vec<(&'static str, &'static str)> =
+            C::OPTIONS.iter().map(|&(_, k, l)| (k, l)).collect();
+        Self {
+            spec: ParamSpec::choice(key, label, &options, default.index()),
+            set: Box::new(move |p, v| set(p, C::from_index(v.max(0.0) as usize))),
+        }
+    }
+
+    /// The same parameter with its symbol set (e.g. a choice shown with a symbol).
+    pub fn with_symbol(mut self, symbol: &'static str) -> Self {
+        self.spec.symbol = symbol;
+        self
+    }
+}
+
+impl<P> Param<P> {
+    /// What the page builds the control from.
+    pub fn spec(&self) -> &ParamSpec {
+        &self.spec
+    }
+
+    /// Fills this parameter's field of `p` with the validated value `v`.
+    pub fn apply(&self, p: &mut P, v: f64) {
+        (self.set)(p, v)
+    }
+
+    /// Options, for a choice.
+    pub fn options(&self) -> &[ChoiceOption] {
+        &self.spec.options
+    }
+}

@@ -1,0 +1,189 @@
+//! `regimes`: free response of `x'' + 2ζωₙ·x' + ωₙ²·x = 0` in every damping regime, with
+//! the two poles in the s-plane, a table of the regimes and an animated mass on a spring.
+//!
+//! The shape every demo follows: this file declares the demo (parameters and readouts as
+//! tables) and holds its model step (solver calls only); `figures.rs` builds the plots from
+//! the results; `text.rs` holds the prose.
+
+mod figures;
+mod text;
+
+use super::Model;
+use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::figure::Figure;
+use crate::spec::{PlotSpec, Preset};
+use zeta_solver::metrics::{free::FreeMetrics, SettlingBand};
+use zeta_solver::{Complex, FreeResponse, Regime, SecondOrder};
+
+/// Periods of the undamped oscillation shown.
+const PERIODS: f64 = 4.0;
+
+/// The damping-regimes demo. Stateless: everything follows from the parameters.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct Regimes;
+
+/// Typed parameters, filled from the declaration.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct P {
+    /// Natural frequency ωₙ \[rad/s\].
+    wn: f64,
+    /// Damping ratio ζ \[-\].
+    zeta: f64,
+    /// Initial displacement x₀ \[m\].
+    x0: f64,
+    /// Initial velocity v₀ \[m/s\].
+    v0: f64,
+}
+
+/// What one step computes.
+pub struct Results {
+    sys: SecondOrder,
+    response: FreeResponse,
+    regime: Regime,
+    poles: [Complex; 2],
+    /// Plotted window \[s\]: [`PERIODS`] undamped periods.
+    t_end: f64,
+    /// Settling, rebound and crossings of the free response, where it settles.
+    metrics: Option<FreeMetrics>,
+    /// How far the response can reach \[m\] (see [`P::reach`]).
+    reach: f64,
+}
+
+impl P {
+    fn system(&self) -> Option<SecondOrder> {
+        SecondOrder::from_natural(self.wn, self.zeta).ok()
+    }
+
+    /// The larger of |x₀| and |v₀|/ωₙ \[m\]: how far the response can reach, to normalise by.
+    fn reach(&self) -> f64 {
+        self.x0.abs().max(self.v0.abs() / self.wn).max(1e-9)
+    }
+}
+
+impl Model for Regimes {
+    type Params = P;
+    type Results = Results;
+
+    fn declare() -> Declaration<P, Results> {
+        Declaration {
+            equation_mathml: text::EQUATION,
+            params: vec![
+                Param::linear(
+                    "wn",
+                    "natural frequency",
+                    "ωₙ",
+                    "rad/s",
+                    (0.5, 20.0, 0.01),
+                    6.0,
+                    |p, v| p.wn = v,
+                ),
+                Param::linear(
+                    "zeta",
+                    "damping ratio",
+                    "ζ",
+                    "",
+                    (-0.5, 3.0, 0.01),
+                    0.3,
+                    |p, v| p.zeta = v,
+                ),
+                Param::linear(
+                    "x0",
+                    "initial displacement",
+                    "x₀",
+                    "m",
+                    (-0.1, 0.1, 0.001),
+                    0.06,
+                    |p, v| p.x0 = v,
+                ),
+                Param::linear(
+                    "v0",
+                    "initial velocity",
+                    "v₀",
+                    "m/s",
+                    (-2.0, 2.0, 0.01),
+                    0.0,
+                    |p, v| p.v0 = v,
+                ),
+            ],
+            readouts: vec![
+                ReadoutDef::text("regime", "regime", |r| r.regime.key().to_string()),
+                ReadoutDef::number("wn", "natural frequency ωₙ", "rad/s", 4, |r| {
+                    r.sys.natural_frequency()
+                }),
+                ReadoutDef::number("zeta", "damping ratio ζ", "", 3, |r| r.sys.damping_ratio()),
+                ReadoutDef::number("wd", "damped frequency ω_d", "rad/s", 4, |r| {
+                    r.sys.damped_frequency()
+                }),
+                ReadoutDef::number("pole_re", "pole real part", "1/s", 4, |r| {
+                    Some(r.poles[0].re)
+                }),
+                ReadoutDef::number("pole_im", "pole imaginary part", "rad/s", 4, |r| {
+                    Some(r.poles[0].im)
+                }),
+            ],
+            plots: vec![
+                PlotSpec {
+                    key: "response",
+                    title: figures::RESPONSE_TITLE,
+                    aspect: 1.9,
+                },
+                PlotSpec {
+                    key: "poles",
+                    title: figures::POLES_TITLE,
+                    aspect: 1.25,
+                },
+            ],
+            primary_plot: "response",
+            presets: [
+                ("Undamped ζ = 0", 0.0),
+                ("Underdamped ζ = 0.2", 0.2),
+                ("Critically damped ζ = 1", 1.0),
+                ("Overdamped ζ = 2", 2.0),
+                ("Negative damping ζ = −0.1", -0.1),
+            ]
+            .into_iter()
+            .map(|(label, z)| Preset {
+                label,
+                values: vec![("zeta", z), ("x0", 0.06), ("v0", 0.0)],
+            })
+            .collect(),
+            table: Some(text::regime_table()),
+            schematic: true,
+            ..Declaration::new("regimes", "Damping regimes", text::SUMMARY)
+        }
+    }
+
+    fn step(&mut self, p: &P) -> Option<Results> {
+        let sys = p.system()?;
+        let t_end = PERIODS * std::f64::consts::TAU / sys.natural_frequency().unwrap_or(1.0);
+        Some(Results {
+            sys,
+            response: FreeResponse::new(sys, p.x0, p.v0),
+            regime: sys.regime(),
+            poles: sys.poles(),
+            t_end,
+            metrics: FreeMetrics::exact(&sys, p.x0, p.v0, SettlingBand::FREE_DEFAULT),
+            reach: p.reach(),
+        })
+    }
+
+    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
+        vec![figures::response(r), figures::poles(r)]
+    }
+
+    fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {
+        Some((0.0, r.t_end))
+    }
+
+    fn schematic(&self, p: &P, t: f64) -> Option<Figure> {
+        let response = FreeResponse::new(p.system()?, p.x0, p.v0);
+        Some(figures::schematic(response.displacement(t), p.reach(), t))
+    }
+
+    fn sonify(&self, p: &P, t: f64) -> Option<f64> {
+        Some(FreeResponse::new(p.system()?, p.x0, p.v0).displacement(t) / p.reach())
+    }
+}
+
+#[cfg(test)]
+mod tests;
