@@ -1,0 +1,49 @@
+// The native snapshot tests (crates/app/tests/snapshots.rs, insta) record every demo's
+// readouts at its defaults and presets. The end-to-end tests read those files and check
+// that the page shows the same values, instead of recomputing physics in JavaScript.
+import { readFileSync } from 'node:fs';
+import assert from 'node:assert/strict';
+
+const DIR = new URL('../../crates/app/tests/snapshots/', import.meta.url);
+
+/** The recorded document of demo `id`: {id, spec, states: [{name, query, readouts, …}]}. */
+export function golden(id) {
+  const text = readFileSync(new URL(`${id}.snap`, DIR), 'utf8');
+  // An insta file: a `---` header block, then the snapshot body.
+  const body = text.split(/^---$/m).slice(2).join('---');
+  return JSON.parse(body);
+}
+
+/** The recorded state named `name` ('defaults' or a preset's label) of demo `id`. */
+export function goldenState(id, name = 'defaults') {
+  const state = golden(id).states.find((s) => s.name === name);
+  assert.ok(state, `${id}: no recorded state ${name}`);
+  return state;
+}
+
+/**
+ * Asserts that every readout on the page equals the recorded one: text readouts exactly,
+ * numbers to the 12 significant digits recorded. Readouts that measure time are skipped.
+ */
+export async function assertReadoutsMatch(page, state) {
+  const shown = await page.$$eval('[data-readout]', (els) =>
+    els.map((e) => ({ key: e.dataset.readout, value: e.dataset.value })),
+  );
+  const byKey = new Map(shown.map((r) => [r.key, r.value]));
+  for (const r of state.readouts) {
+    if ('measured' in r) continue;
+    assert.ok(byKey.has(r.key), `${state.name}: readout ${r.key} is on the page`);
+    const value = byKey.get(r.key);
+    const expected = r.value;
+    const n = Number(expected);
+    if (expected !== '' && Number.isFinite(n) && /e/.test(expected)) {
+      const got = Number(value);
+      assert.ok(
+        Math.abs(got - n) <= 1e-11 * Math.max(1, Math.abs(n)),
+        `${state.name}: ${r.key} shows ${value}, recorded ${expected}`,
+      );
+    } else {
+      assert.equal(value, expected, `${state.name}: ${r.key}`);
+    }
+  }
+}
