@@ -11,6 +11,7 @@ pub mod design;
 pub mod flutter;
 pub mod integrators;
 pub mod nonlinear;
+pub mod paper;
 pub mod quarter_car;
 pub mod quarter_car_2dof;
 pub mod regimes;
@@ -59,6 +60,11 @@ pub trait Demo {
     fn sonify(&self, _params: &Params, _t: f64) -> Option<f64> {
         None
     }
+    /// The guided tour of the last [`Demo::update`], for the page that checks the paper
+    /// (`paper`): exhibits with links and claims with verdicts. `None` for other demos.
+    fn tour(&self) -> Option<paper::Tour> {
+        None
+    }
 }
 
 /// A demo in the one shape every demo has: a declaration (parameters and readouts as
@@ -105,12 +111,18 @@ pub trait Model: 'static {
     fn sonify(&self, _p: &Self::Params, _t: f64) -> Option<f64> {
         None
     }
+
+    /// A guided tour with checked claims (see [`Demo::tour`]).
+    fn tour(&self, _p: &Self::Params, _r: &Self::Results) -> Option<paper::Tour> {
+        None
+    }
 }
 
 /// A [`Model`] with its declaration, as a [`Demo`] the registry can hold.
 pub struct Typed<M: Model> {
     model: M,
     decl: Declaration<M::Params, M::Results>,
+    tour: Option<paper::Tour>,
 }
 
 impl<M: Model> Typed<M> {
@@ -119,6 +131,7 @@ impl<M: Model> Typed<M> {
         Self {
             model,
             decl: M::declare(),
+            tour: None,
         }
     }
 }
@@ -131,12 +144,18 @@ impl<M: Model> Demo for Typed<M> {
     fn update(&mut self, params: &Params) -> Frame {
         let p = self.decl.read(params);
         match self.model.step(&p) {
-            Some(r) => Frame {
-                readouts: self.decl.readouts(&r),
-                figures: self.model.figures(&p, &r),
-                time_span: self.model.time_span(&p, &r),
-            },
-            None => self.decl.undefined_frame(),
+            Some(r) => {
+                self.tour = self.model.tour(&p, &r);
+                Frame {
+                    readouts: self.decl.readouts(&r),
+                    figures: self.model.figures(&p, &r),
+                    time_span: self.model.time_span(&p, &r),
+                }
+            }
+            None => {
+                self.tour = None;
+                self.decl.undefined_frame()
+            }
         }
     }
 
@@ -154,6 +173,10 @@ impl<M: Model> Demo for Typed<M> {
 
     fn sonify(&self, params: &Params, t: f64) -> Option<f64> {
         self.model.sonify(&self.decl.read(params), t)
+    }
+
+    fn tour(&self) -> Option<paper::Tour> {
+        self.tour.clone()
     }
 }
 
@@ -178,6 +201,7 @@ const REGISTRY: &[(&str, Factory)] = &[
     ("uncertainty", || {
         Box::new(uncertainty::Uncertainty::default())
     }),
+    ("paper", || Box::new(Typed::new(paper::Paper))),
 ];
 
 /// Ids of every demo, in menu order.

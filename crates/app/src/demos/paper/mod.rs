@@ -1,0 +1,124 @@
+//! `paper`: "The paper, checked" — a guided tour of the paper Zeta Lab was built from
+//! (Ihenacho, Samuel, Okechukwu et al., "Modelling and Simulation of Engineering Design, A
+//! Second-Order Differential Equations in Mechanical and Electrical Systems", 2026): each
+//! figure and table with a live thumbnail drawn by the demo that reproduces it and a link
+//! to that exact state, and each quantitative claim with the value the app computes and a
+//! verdict, confirmed or differs, with the reason.
+//!
+//! The model step runs the linked demos through the registry, so a value in the tour is
+//! the very readout the link opens.
+
+mod text;
+mod tour;
+mod verdict;
+
+pub use verdict::{ClaimView, ExhibitView, Tour, Verdict};
+
+use super::Model;
+use crate::declare::{Declaration, ReadoutDef};
+use crate::figure::{Axis, Figure, Marker};
+use crate::plot::Ink;
+use crate::spec::PlotSpec;
+use tour::{CLAIMS, EXHIBITS};
+
+/// The tour. Stateless: the paper does not change.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct Paper;
+
+/// No parameters: the tour is the paper's own configuration.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct P;
+
+/// The checked tour and the thumbnails.
+pub struct Results {
+    tour: Tour,
+    thumbnails: Vec<Figure>,
+}
+
+impl Results {
+    fn count(&self, verdict: Verdict) -> Option<f64> {
+        Some(
+            self.tour
+                .claims
+                .iter()
+                .filter(|c| c.verdict == verdict)
+                .count() as f64,
+        )
+    }
+}
+
+/// The thumbnail of exhibit `id`: its demo's plot, or the demo's primary plot.
+fn thumbnail(e: &tour::Exhibit) -> Figure {
+    let drawn = crate::demos::create(e.demo).and_then(|d| {
+        let spec = d.spec();
+        let key = if e.plot.is_empty() {
+            spec.primary()
+        } else {
+            e.plot
+        };
+        let i = spec.plots.iter().position(|p| p.key == key)?;
+        verdict::run(e.demo, e.query)?.figures.into_iter().nth(i)
+    });
+    match drawn {
+        Some(fig) => fig,
+        None => Figure::schematic(
+            e.place,
+            Axis::linear("", "", (0.0, 1.0)),
+            Axis::linear("", "", (0.0, 1.0)),
+        )
+        .with_marker(Marker::text(text::UNAVAILABLE, (0.5, 0.5), Ink::Black))
+        .described(text::UNAVAILABLE),
+    }
+}
+
+impl Model for Paper {
+    type Params = P;
+    type Results = Results;
+
+    fn declare() -> Declaration<P, Results> {
+        Declaration {
+            readouts: vec![
+                ReadoutDef::number("claims", "claims checked", "", 2, |r| {
+                    Some(r.tour.claims.len() as f64)
+                }),
+                ReadoutDef::number("confirmed", "claims confirmed", "", 2, |r| {
+                    r.count(Verdict::Confirmed)
+                }),
+                ReadoutDef::number("differs", "claims that differ", "", 2, |r| {
+                    r.count(Verdict::Differs)
+                }),
+            ],
+            plots: EXHIBITS
+                .iter()
+                .map(|e| PlotSpec {
+                    key: e.id,
+                    title: e.place,
+                    aspect: 1.6,
+                })
+                .collect(),
+            primary_plot: "fig1a",
+            ..Declaration::new("paper", "The paper, checked", text::SUMMARY)
+        }
+    }
+
+    fn step(&mut self, _p: &P) -> Option<Results> {
+        Some(Results {
+            tour: Tour {
+                exhibits: EXHIBITS.iter().map(verdict::exhibit).collect(),
+                claims: CLAIMS.iter().filter_map(verdict::judge).collect(),
+            },
+            thumbnails: EXHIBITS.iter().map(thumbnail).collect(),
+        })
+    }
+
+    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
+        r.thumbnails.clone()
+    }
+
+    fn tour(&self, _p: &P, r: &Results) -> Option<Tour> {
+        Some(r.tour.clone())
+    }
+}
+
+#[cfg(test)]
+mod tests;

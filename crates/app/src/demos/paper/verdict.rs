@@ -1,0 +1,231 @@
+//! Checks each claim against the demo that reproduces it. The computed value is the
+//! linked demo's own readout (so the link shows exactly the number the tour states), or a
+//! solver computation where the claim is about a formula or a slope.
+
+use super::tour::{Check, ClaimDef, Exhibit};
+use crate::demos::{create, Frame};
+use crate::format::si;
+use crate::params::resolve_query;
+use serde::Serialize;
+use zeta_solver::integrate::analysis::{fit_order, max_error};
+use zeta_solver::integrate::{Euler, FixedStep, Linear2};
+use zeta_solver::search::maximise;
+use zeta_solver::{frf, FreeResponse, SecondOrder};
+
+/// Whether the app confirms a claim.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Verdict {
+    /// The computed value agrees with the paper.
+    Confirmed,
+    /// It does not; the reason says why.
+    Differs,
+}
+
+/// One checked claim, as the page shows it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ClaimView {
+    /// Stable id (`data-claim`).
+    pub id: &'static str,
+    /// Section, figure or table.
+    pub place: &'static str,
+    /// What the paper says, paraphrased.
+    pub says: &'static str,
+    /// Link to the demo state that shows the value (a query string starting `?demo=`).
+    pub link: String,
+    /// The paper's value, formatted.
+    pub claimed: String,
+    /// The app's value, formatted.
+    pub computed: String,
+    /// Confirmed or differs.
+    pub verdict: Verdict,
+    /// One sentence: why.
+    pub reason: String,
+}
+
+/// One figure or table of the paper with the link that reproduces it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ExhibitView {
+    /// Stable id, also the key of its thumbnail plot.
+    pub id: &'static str,
+    /// Figure or table number.
+    pub place: &'static str,
+    /// What it shows, paraphrased.
+    pub shows: &'static str,
+    /// Link to the demo state that reproduces it.
+    pub link: String,
+}
+
+/// The whole tour: what the page lists beside the thumbnails.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Tour {
+    /// Figures and tables in the paper's order.
+    pub exhibits: Vec<ExhibitView>,
+    /// Claims in the paper's order.
+    pub claims: Vec<ClaimView>,
+}
+
+/// `?demo=<demo>&<query>`.
+pub(super) fn link(demo: &str, query: &str) -> String {
+    if query.is_empty() {
+        format!("?demo={demo}")
+    } else {
+        format!("?demo={demo}&{query}")
+    }
+}
+
+/// Demo `demo` updated once at `query`, as the page shows it when the link is opened.
+pub(super) fn run(demo: &str, query: &str) -> Option<Frame> {
+    let mut d = create(demo)?;
+    let (params, _) = resolve_query(&d.spec(), query);
+    Some(d.update(&params))
+}
+
+/// Readout `key` of `frame`: its value and the text the demo shows for it.
+fn readout(frame: &Frame, key: &str) -> Option<(f64, String)> {
+    let r = frame.readouts.iter().find(|r| r.key == key)?;
+    Some((r.data_value.parse().ok()?, r.text.clone()))
+}
+
+/// The exhibit's entry in the tour.
+pub(super) fn exhibit(e: &Exhibit) -> ExhibitView {
+    ExhibitView {
+        id: e.id,
+        place: e.place,
+        shows: e.shows,
+        link: link(e.demo, e.query),
+    }
+}
+
+/// The slope of log(max error) against log(h) for forward Euler over the paper's step
+/// `h` and five halvings, on the system of `query` (ζ, ωₙ, x₀, T from the integrators demo's
+/// defaults unless the query sets them). Returns `(slope, smallest h, largest h)`.
+fn euler_slope(frame_query: &str) -> Option<(f64, f64, f64)> {
+    let spec = create("integrators")?.spec();
+    let (p, _) = resolve_query(&spec, frame_query);
+    let get = |k: &str| p.pairs().find(|(key, _)| *key == k).map(|(_, v)| v);
+    let (zeta, wn, h, t_end, x0) = (get("zeta")?, get("wn")?, get("h")?, get("T")?, get("x0")?);
+    let sys = SecondOrder::from_natural(wn, zeta).ok()?;
+    let exact = FreeResponse::new(sys, x0, 0.0);
+    let steps: Vec<f64> = (0..6).map(|k| h / f64::from(1u32 << k)).collect();
+    let points: Vec<(f64, f64)> = steps
+        .iter()
+        .filter_map(|&hk| {
+            let sol = Euler
+                .solve(&Linear2::free(sys), [x0, 0.0], 0.0, t_end, hk)
+                .ok()?;
+            let e = max_error(&sol, |t| exact.state(t));
+            (e.is_finite() && e > 0.0).then_some((hk, e))
+        })
+        .collect();
+    let slope = fit_order(&points)?;
+    Some((slope, *steps.last()?, h))
+}
+
+/// Checks one claim; `None` only if its demo is missing from the registry.
+pub(super) fn judge(def: &ClaimDef) -> Option<ClaimView> {
+    let frame = run(def.demo, def.query)?;
+    // The paper's numbers carry two or three digits.
+    let fmt = |v: f64| si(v, def.unit, 3);
+    let (claimed, computed, agrees, mut reason) = match def.check {
+        Check::Near {
+            readout: key,
+            claimed,
+            tol,
+        } => {
+            let (v, shown) = readout(&frame, key)?;
+            let agrees = (v - claimed).abs() <= tol;
+            let relation = if agrees {
+                "within the rounding of"
+            } else {
+                "not"
+            };
+            let why = format!(
+                "The demo computes {shown}, {relation} the paper's {} (tolerance ±{}).",
+                fmt(claimed),
+                si(tol, def.unit, 2)
+            );
+            (fmt(claimed), shown, agrees, why)
+        }
+        Check::Below {
+            readout: key,
+            bound,
+        } => {
+            let (v, shown) = readout(&frame, key)?;
+            let agrees = v < bound;
+            let relation = if agrees { "below" } else { "above" };
+            let why = format!(
+                "The demo computes {shown}, which is {relation} the paper's bound of {}.",
+                fmt(bound)
+            );
+            (format!("< {}", fmt(bound)), shown, agrees, why)
+        }
+        Check::Range {
+            lo,
+            hi,
+            claimed,
+            tol,
+        } => {
+            let ((a, a_text), (b, b_text)) = (readout(&frame, lo)?, readout(&frame, hi)?);
+            let agrees = (a - claimed.0).abs() <= tol && (b - claimed.1).abs() <= tol;
+            let computed = format!("{a_text} to {b_text}");
+            let relation = if agrees {
+                ", as the paper says"
+            } else {
+                ", not the paper's range"
+            };
+            let why = format!("The demo computes {computed}{relation}.");
+            let claimed = format!("{} to {}", fmt(claimed.0), fmt(claimed.1));
+            (claimed, computed, agrees, why)
+        }
+        Check::PeakFormula { zeta, tol } => {
+            let formula = frf::peak(zeta)?.ratio;
+            let (found, _) = maximise(|r| frf::magnitude(r, zeta), 0.0, 2.0)?;
+            let agrees = (found - formula).abs() <= tol;
+            let why = format!(
+                "The maximum of |H(r)| found by search lies at r = {}, where the formula gives {}.",
+                si(found, "", 6),
+                si(formula, "", 6)
+            );
+            (si(formula, "", 6), si(found, "", 6), agrees, why)
+        }
+        Check::Slope { claimed, tol } => {
+            let (slope, h_min, h_max) = euler_slope(def.query)?;
+            let agrees = (slope - claimed).abs() <= tol;
+            let why = format!(
+                "Over the paper's step h = {} and five halvings (down to {}), the fitted slope is {}.",
+                si(h_max, "s", 3),
+                si(h_min, "s", 3),
+                si(slope, "", 3)
+            );
+            (fmt(claimed), si(slope, "", 3), agrees, why)
+        }
+    };
+    if let Some(ctx) = &def.context {
+        let other;
+        let source = if ctx.query.is_empty() {
+            &frame
+        } else {
+            other = run(def.demo, ctx.query)?;
+            &other
+        };
+        if let Some((_, shown)) = readout(source, ctx.readout) {
+            reason.push(' ');
+            reason.push_str(&ctx.sentence.replacen("{}", &shown, 1));
+        }
+    }
+    Some(ClaimView {
+        id: def.id,
+        place: def.place,
+        says: def.says,
+        link: link(def.demo, def.query),
+        claimed,
+        computed,
+        verdict: if agrees {
+            Verdict::Confirmed
+        } else {
+            Verdict::Differs
+        },
+        reason,
+    })
+}
