@@ -29,6 +29,8 @@ pub struct ClaimView {
     pub id: &'static str,
     /// Section, figure or table.
     pub place: &'static str,
+    /// The exhibit it is read beside (empty: after the last one).
+    pub beside: &'static str,
     /// What the paper says, paraphrased.
     pub says: &'static str,
     /// Link to the demo state that shows the value (a query string starting `?demo=`).
@@ -217,6 +219,7 @@ pub(super) fn judge(def: &ClaimDef) -> Option<ClaimView> {
     Some(ClaimView {
         id: def.id,
         place: def.place,
+        beside: def.beside,
         says: def.says,
         link: link(def.demo, def.query),
         claimed,
