@@ -2,6 +2,7 @@
 // Serves under any base path (e.g. '/course/demos/') to prove the site is relocatable,
 // listens on 127.0.0.1 at a free port, and answers only GET/HEAD inside the folder.
 import { createServer } from 'node:http';
+import { brotliCompressSync, constants as zlib } from 'node:zlib';
 import { readFile, stat } from 'node:fs/promises';
 import { extname, join, normalize, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -21,8 +22,12 @@ const TYPES = {
   '.ico': 'image/x-icon',
 };
 
-/** Starts a server for `root` under `base`; resolves to {url, close()}. */
-export async function serve({ root = DIST, base = '/', headers = {} } = {}) {
+/**
+ * Starts a server for `root` under `base`; resolves to {url, close()}. With `brotli`, a
+ * request that accepts `br` gets the body brotli-compressed, as a real static host sends it.
+ */
+export async function serve({ root = DIST, base = '/', headers = {}, brotli = false } = {}) {
+  const compressed = new Map();
   const server = createServer(async (req, res) => {
     try {
       const url = new URL(req.url, 'http://localhost');
@@ -39,10 +44,19 @@ export async function serve({ root = DIST, base = '/', headers = {} } = {}) {
       }
       const info = await stat(file);
       if (!info.isFile()) throw new Error('not a file');
-      const body = await readFile(file);
+      let body = await readFile(file);
+      const extra = {};
+      if (brotli && /\bbr\b/.test(req.headers['accept-encoding'] || '')) {
+        if (!compressed.has(file)) {
+          compressed.set(file, brotliCompressSync(body, { params: { [zlib.BROTLI_PARAM_QUALITY]: 11 } }));
+        }
+        body = compressed.get(file);
+        extra['content-encoding'] = 'br';
+      }
       res.writeHead(200, {
         'content-type': TYPES[extname(file)] || 'application/octet-stream',
         'cache-control': 'no-store',
+        ...extra,
         ...headers,
       });
       res.end(req.method === 'HEAD' ? undefined : body);

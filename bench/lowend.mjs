@@ -1,0 +1,116 @@
+// Low-end benchmark: the school Chromebook and the phone, stood in for as Lighthouse's
+// mobile emulation does (DevTools Protocol): CPU slowed 4×, a 360 × 740 window at device
+// pixel ratio 2, and for loading "Slow 4G" (150 ms round trip, 1.6 Mbit/s down) with the
+// site served brotli-compressed and a cold cache.
+// For every demo: every slider moved EVENTS times (input handler + the frame that redraws)
+// as p50/p95, the longest main-thread task seen while sliding, the time to the first plot
+// after navigation, and the bytes transferred before it. Prints Markdown tables.
+// Usage: node bench/lowend.mjs [events-per-slider]   (after scripts/build.sh)
+import { serve } from '../tests/support/server.mjs';
+import { launch } from '../tests/support/browser.mjs';
+
+const EVENTS = Math.max(10, Number(process.argv[2]) || 40);
+const CPU_SLOWDOWN = 4;
+const SLOW_4G = { offline: false, latency: 150, downloadThroughput: (1.6 * 1024 * 1024) / 8, uploadThroughput: (750 * 1024) / 8 };
+
+function quantile(sorted, q) {
+  if (!sorted.length) return NaN;
+  const i = (sorted.length - 1) * q;
+  const lo = Math.floor(i);
+  const hi = Math.ceil(i);
+  return sorted[lo] + (sorted[hi] - sorted[lo]) * (i - lo);
+}
+
+/** Runs in the page: moves each slider `n` times; per event, handler + redraw frame. */
+async function slideInPage(n) {
+  const longest = { ms: 0 };
+  const obs = new PerformanceObserver((list) => {
+    for (const e of list.getEntries()) longest.ms = Math.max(longest.ms, e.duration);
+  });
+  obs.observe({ type: 'longtask', buffered: false });
+  const ranges = [...document.querySelectorAll('input[type=range][data-key]')].filter((r) => !r.disabled);
+  const frame = () => new Promise((r) => requestAnimationFrame(() => r(performance.now())));
+  const times = [];
+  for (const range of ranges) {
+    const min = Number(range.min);
+    const max = Number(range.max);
+    for (let i = 0; i < n; i++) {
+      const f = 0.1 + 0.8 * (((i * 7919) % 97) / 96);
+      await frame();
+      let before = 0;
+      requestAnimationFrame(() => {
+        before = performance.now();
+      });
+      const t0 = performance.now();
+      range.value = String(min + f * (max - min));
+      range.dispatchEvent(new Event('input', { bubbles: true }));
+      const handled = performance.now() - t0;
+      const after = await frame();
+      times.push(handled + (after - before));
+    }
+  }
+  await frame();
+  obs.disconnect();
+  return { times, longest: longest.ms, sliders: ranges.length };
+}
+
+async function lowEndPage(browser, { network }) {
+  const context = await browser.newContext({ viewport: { width: 360, height: 740 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true });
+  const page = await context.newPage();
+  const cdp = await context.newCDPSession(page);
+  await cdp.send('Emulation.setCPUThrottlingRate', { rate: CPU_SLOWDOWN });
+  await cdp.send('Network.enable');
+  await cdp.send('Network.setCacheDisabled', { cacheDisabled: true });
+  if (network) await cdp.send('Network.emulateNetworkConditions', SLOW_4G);
+  let bytes = 0;
+  cdp.on('Network.loadingFinished', (e) => {
+    bytes += e.encodedDataLength;
+  });
+  return { context, page, cdp, bytes: () => bytes };
+}
+
+async function main() {
+  const server = await serve({ brotli: true });
+  const browser = await launch();
+  const rows = [];
+  try {
+    const probe = await browser.newPage();
+    await probe.goto(server.url);
+    await probe.waitForSelector('html[data-ready="true"]');
+    const ids = await probe.$$eval('#demo-select option', (os) => os.map((o) => o.value));
+    await probe.close();
+    for (const id of ids) {
+      // Loading: Slow 4G + 4× CPU, cold cache; bytes counted up to the first plot.
+      const load = await lowEndPage(browser, { network: true });
+      const t0 = Date.now();
+      await load.page.goto(`${server.url}?demo=${id}`);
+      await load.page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0, null, { timeout: 60000 });
+      const firstPlot = await load.page.evaluate(() => performance.getEntriesByName('zeta:first-draw')[0].startTime);
+      const bytes = load.bytes();
+      await load.context.close();
+      // Sliding: 4× CPU, no network shaping (the page is loaded).
+      const slide = await lowEndPage(browser, { network: false });
+      await slide.page.goto(`${server.url}?demo=${id}`);
+      await slide.page.waitForSelector('html[data-ready="true"]', { timeout: 60000 });
+      await slide.page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0, null, { timeout: 60000 });
+      const r = await slide.page.evaluate(slideInPage, EVENTS);
+      await slide.context.close();
+      const times = r.times.sort((a, b) => a - b);
+      rows.push({ id, sliders: r.sliders, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), longest: r.longest, firstPlot, bytes, wall: Date.now() - t0 });
+    }
+  } finally {
+    await browser.close();
+    await server.close();
+  }
+  console.log(`\nLow-end (4× CPU, 360 × 740 at DPR 2; loading on Slow 4G, brotli, cold cache; ${EVENTS} events per slider):\n`);
+  console.log('| demo | sliders | events | p50 (ms) | p95 (ms) | longest task (ms) | first plot (ms) | KB before first plot |');
+  console.log('| --- | --- | --- | --- | --- | --- | --- | --- |');
+  for (const r of rows) {
+    console.log(`| ${r.id} | ${r.sliders} | ${r.n} | ${r.p50.toFixed(1)} | ${r.p95.toFixed(1)} | ${r.longest.toFixed(0)} | ${r.firstPlot.toFixed(0)} | ${(r.bytes / 1000).toFixed(0)} |`);
+  }
+}
+
+main().catch((e) => {
+  console.error(e);
+  process.exit(1);
+});
