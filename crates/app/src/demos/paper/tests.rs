@@ -92,3 +92,43 @@ fn every_link_opens_a_registered_demo_without_notices() {
     }
     assert_eq!(t.exhibits.len(), EXHIBITS.len());
 }
+
+#[test]
+fn the_tour_translates_into_spanish_without_english_left() {
+    use crate::i18n::{tr, Lang};
+    let es = tour().translated(|s| tr(Lang::Es, s).into_owned());
+    let english = [
+        "The demo",
+        "paper's",
+        " the ",
+        "Figure",
+        "Table",
+        "Section",
+        "Euler is",
+        "RK4 is",
+        "Over the",
+        "In hertz",
+        "varies as",
+        "instead",
+        "within the",
+        "found by",
+    ];
+    let texts = es.exhibits.iter().flat_map(|e| [&e.place, &e.shows]).chain(
+        es.claims
+            .iter()
+            .flat_map(|c| [&c.place, &c.says, &c.reason]),
+    );
+    for text in texts {
+        for word in english {
+            assert!(!text.contains(word), "untranslated {word:?} in {text:?}");
+        }
+    }
+    // Numbers take the decimal comma; ids and links stay as they are.
+    let euler = es
+        .claims
+        .iter()
+        .find(|c| c.id == "fig4-euler-error")
+        .unwrap();
+    assert!(euler.reason.contains("1,139"), "{}", euler.reason);
+    assert!(euler.link.contains("h=0.3"), "{}", euler.link);
+}

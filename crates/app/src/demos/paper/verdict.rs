@@ -28,11 +28,11 @@ pub struct ClaimView {
     /// Stable id (`data-claim`).
     pub id: &'static str,
     /// Section, figure or table.
-    pub place: &'static str,
+    pub place: String,
     /// The exhibit it is read beside (empty: after the last one).
     pub beside: &'static str,
     /// What the paper says, paraphrased.
-    pub says: &'static str,
+    pub says: String,
     /// Link to the demo state that shows the value (a query string starting `?demo=`).
     pub link: String,
     /// The paper's value, formatted.
@@ -51,9 +51,9 @@ pub struct ExhibitView {
     /// Stable id, also the key of its thumbnail plot.
     pub id: &'static str,
     /// Figure or table number.
-    pub place: &'static str,
+    pub place: String,
     /// What it shows, paraphrased.
-    pub shows: &'static str,
+    pub shows: String,
     /// Link to the demo state that reproduces it.
     pub link: String,
 }
@@ -65,6 +65,36 @@ pub struct Tour {
     pub exhibits: Vec<ExhibitView>,
     /// Claims in the paper's order.
     pub claims: Vec<ClaimView>,
+}
+
+impl Tour {
+    /// The tour with every human string passed through `tr` (the page's language); ids,
+    /// links and verdicts unchanged.
+    pub fn translated(&self, tr: impl Fn(&str) -> String) -> Tour {
+        Tour {
+            exhibits: self
+                .exhibits
+                .iter()
+                .map(|e| ExhibitView {
+                    place: tr(&e.place),
+                    shows: tr(&e.shows),
+                    ..e.clone()
+                })
+                .collect(),
+            claims: self
+                .claims
+                .iter()
+                .map(|c| ClaimView {
+                    place: tr(&c.place),
+                    says: tr(&c.says),
+                    claimed: tr(&c.claimed),
+                    computed: tr(&c.computed),
+                    reason: tr(&c.reason),
+                    ..c.clone()
+                })
+                .collect(),
+        }
+    }
 }
 
 /// `?demo=<demo>&<query>`.
@@ -93,8 +123,8 @@ fn readout(frame: &Frame, key: &str) -> Option<(f64, String)> {
 pub(super) fn exhibit(e: &Exhibit) -> ExhibitView {
     ExhibitView {
         id: e.id,
-        place: e.place,
-        shows: e.shows,
+        place: e.place.to_string(),
+        shows: e.shows.to_string(),
         link: link(e.demo, e.query),
     }
 }
@@ -218,9 +248,9 @@ pub(super) fn judge(def: &ClaimDef) -> Option<ClaimView> {
     }
     Some(ClaimView {
         id: def.id,
-        place: def.place,
+        place: def.place.to_string(),
         beside: def.beside,
-        says: def.says,
+        says: def.says.to_string(),
         link: link(def.demo, def.query),
         claimed,
         computed,
