@@ -7,39 +7,15 @@ import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
 import { serve, DIST } from '../tests/support/server.mjs';
 import { launch } from '../tests/support/browser.mjs';
+import { quantile, installSlider, fraction } from './slide.mjs';
 
 const EVENTS = Math.max(300, Number(process.argv[2]) || 300);
 
-function quantile(sorted, q) {
-  const i = (sorted.length - 1) * q;
-  const lo = Math.floor(i);
-  const hi = Math.ceil(i);
-  return sorted[lo] + (sorted[hi] - sorted[lo]) * (i - lo);
-}
-
 /** Runs in the page: moves sliders `n` times and times each event's work. */
-async function measureInPage(n) {
+async function measureInPage([n, fractions]) {
   const ranges = [...document.querySelectorAll('.controls input[type=range]')];
-  const frame = () => new Promise((r) => requestAnimationFrame(() => r(performance.now())));
   const times = [];
-  for (let i = 0; i < n; i++) {
-    const range = ranges[i % ranges.length];
-    const min = Number(range.min);
-    const max = Number(range.max);
-    const f = 0.1 + 0.8 * (((i * 7919) % 97) / 96);
-    await frame(); // start from a quiet frame
-    // Three callbacks of the same frame, in order: ours (start), the app's redraw, ours (end).
-    let before = 0;
-    requestAnimationFrame(() => {
-      before = performance.now();
-    });
-    const t0 = performance.now();
-    range.value = String(min + f * (max - min));
-    range.dispatchEvent(new Event('input', { bubbles: true }));
-    const handled = performance.now() - t0;
-    const after = await frame();
-    times.push(handled + (after - before));
-  }
+  for (let i = 0; i < n; i++) times.push(await window.__slideOnce(ranges[i % ranges.length], fractions[i]));
   return times;
 }
 
@@ -60,7 +36,9 @@ async function main() {
       await page.waitForSelector('html[data-ready="true"]');
       await page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0);
       const firstDraw = await page.evaluate(() => performance.getEntriesByName('zeta:first-draw')[0].startTime);
-      const times = (await page.evaluate(measureInPage, EVENTS)).sort((a, b) => a - b);
+      await installSlider(page);
+      const fractions = Array.from({ length: EVENTS }, (_, i) => fraction(i));
+      const times = (await page.evaluate(measureInPage, [EVENTS, fractions])).sort((a, b) => a - b);
       rows.push({ id, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), max: times[times.length - 1], firstDraw });
       await context.close();
     }

@@ -8,48 +8,25 @@
 // Usage: node bench/lowend.mjs [events-per-slider]   (after scripts/build.sh)
 import { serve } from '../tests/support/server.mjs';
 import { launch } from '../tests/support/browser.mjs';
+import { quantile, installSlider, fraction } from './slide.mjs';
 
 const EVENTS = Math.max(10, Number(process.argv[2]) || 40);
 const CPU_SLOWDOWN = 4;
 const SLOW_4G = { offline: false, latency: 150, downloadThroughput: (1.6 * 1024 * 1024) / 8, uploadThroughput: (750 * 1024) / 8 };
 
-function quantile(sorted, q) {
-  if (!sorted.length) return NaN;
-  const i = (sorted.length - 1) * q;
-  const lo = Math.floor(i);
-  const hi = Math.ceil(i);
-  return sorted[lo] + (sorted[hi] - sorted[lo]) * (i - lo);
-}
-
 /** Runs in the page: moves each slider `n` times; per event, handler + redraw frame. */
-async function slideInPage(n) {
+async function slideInPage([n, fractions]) {
   const longest = { ms: 0 };
   const obs = new PerformanceObserver((list) => {
     for (const e of list.getEntries()) longest.ms = Math.max(longest.ms, e.duration);
   });
   obs.observe({ type: 'longtask', buffered: false });
   const ranges = [...document.querySelectorAll('input[type=range][data-key]')].filter((r) => !r.disabled);
-  const frame = () => new Promise((r) => requestAnimationFrame(() => r(performance.now())));
   const times = [];
   for (const range of ranges) {
-    const min = Number(range.min);
-    const max = Number(range.max);
-    for (let i = 0; i < n; i++) {
-      const f = 0.1 + 0.8 * (((i * 7919) % 97) / 96);
-      await frame();
-      let before = 0;
-      requestAnimationFrame(() => {
-        before = performance.now();
-      });
-      const t0 = performance.now();
-      range.value = String(min + f * (max - min));
-      range.dispatchEvent(new Event('input', { bubbles: true }));
-      const handled = performance.now() - t0;
-      const after = await frame();
-      times.push(handled + (after - before));
-    }
+    for (let i = 0; i < n; i++) times.push(await window.__slideOnce(range, fractions[i]));
   }
-  await frame();
+  await new Promise((r) => requestAnimationFrame(r));
   obs.disconnect();
   return { times, longest: longest.ms, sliders: ranges.length };
 }
@@ -93,7 +70,9 @@ async function main() {
       await slide.page.goto(`${server.url}?demo=${id}`);
       await slide.page.waitForSelector('html[data-ready="true"]', { timeout: 60000 });
       await slide.page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0, null, { timeout: 60000 });
-      const r = await slide.page.evaluate(slideInPage, EVENTS);
+      await installSlider(slide.page);
+      const fractions = Array.from({ length: EVENTS }, (_, i) => fraction(i));
+      const r = await slide.page.evaluate(slideInPage, [EVENTS, fractions]);
       await slide.context.close();
       const times = r.times.sort((a, b) => a - b);
       rows.push({ id, sliders: r.sliders, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), longest: r.longest, firstPlot, bytes, wall: Date.now() - t0 });
