@@ -166,7 +166,7 @@ const REGISTRY: &[(&str, Factory)] = &[
     ("regimes", || Box::new(Typed::new(regimes::Regimes))),
     ("quarter-car", || Box::new(quarter_car::QuarterCar::new())),
     ("rlc", || Box::new(Typed::new(rlc::Rlc))),
-    ("analogy", || Box::new(analogy::Analogy)),
+    ("analogy", || Box::new(Typed::new(analogy::Analogy))),
     ("resonance", || Box::new(resonance::Resonance::default())),
     ("integrators", || Box::new(integrators::Integrators::new())),
     ("flutter", || Box::new(flutter::Flutter::default())),
