@@ -162,9 +162,13 @@ impl Model for Rlc {
                 ReadoutDef::number("Q", "quality factor Q = 1/(2ζ)", "", 4, |r| {
                     r.sys.quality_factor()
                 }),
-                ReadoutDef::number("bandwidth", "half-power bandwidth R/L", "rad/s", 4, |r| {
-                    r.sys.half_power_bandwidth()
-                }),
+                ReadoutDef::number(
+                    "bandwidth",
+                    "current-resonance half-power bandwidth Δω = R/L",
+                    "rad/s",
+                    4,
+                    |r| r.sys.half_power_bandwidth(),
+                ),
                 ReadoutDef::number("R_crit", "critical resistance 2√(L/C)", "Ω", 4, |r| {
                     r.sys.critical_damping()
                 }),

@@ -12,8 +12,10 @@ pub(super) const SUMMARY: &str =
                       resistance 2√(L/C) the energy sloshes between C and L and the current \
                       rings at ω_d, decaying as e^(−αt), α = R/(2L); at R = 2√(L/C) the \
                       capacitor empties fastest without reversing; above it the discharge is \
-                      slower again. Q = 1/(2ζ) counts the ringing, and R/L is the width of the \
-                      current's resonance. The current is negative while the capacitor \
+                      slower again. Q = 1/(2ζ) counts the ringing, and R/L is the \
+                      half-power bandwidth of the current's resonance: driven by a sine \
+                      voltage, |I|² stays above half its peak over a band exactly R/L rad/s \
+                      wide, for any R. The current is negative while the capacitor \
                       discharges (i = dq/dt).";
 
 pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
