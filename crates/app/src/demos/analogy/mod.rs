@@ -166,6 +166,12 @@ impl Model for Analogy {
                 ReadoutDef::number("k", "spring rate k", "N/m", 4, |r| {
                     Some(r.mech.as_mechanical().2)
                 }),
+                ReadoutDef::number("elastance", "elastance 1/C (≙ k)", "1/F", 4, |r| {
+                    Some(r.elec.c())
+                }),
+                ReadoutDef::number("compliance", "compliance 1/k (≙ C)", "m/N", 4, |r| {
+                    Some(1.0 / r.mech.as_mechanical().2)
+                }),
                 ReadoutDef::number("C", "capacitance C (≙ 1/k)", "F", 4, |r| Some(r.lrc.2)),
                 ReadoutDef::number("x0", "initial displacement x₀", "m", 4, |r| Some(r.x0)),
                 ReadoutDef::number("q0", "initial charge q₀ (≙ x₀)", "C", 4, |r| {

@@ -95,3 +95,34 @@ fn table_rows_have_every_column() {
         assert_eq!(cells.len(), t.columns.len());
     }
 }
+
+#[test]
+fn the_live_table_shows_equal_numbers_in_both_machines() {
+    let table = Analogy::declare().spec().table.unwrap();
+    let live = table.live_cells();
+    assert_eq!(live.len(), 18, "{live:?}");
+    for query in ["", "m=4&c=2&k=25&x0=0.02", "m=0.37&c=13.1&k=731&x0=0.093"] {
+        let f = run(query);
+        for row in [
+            "inertia",
+            "dissipation",
+            "stiffness",
+            "compliance",
+            "coordinate",
+        ] {
+            let keys: Vec<&str> = live
+                .iter()
+                .filter(|(r, _, _)| *r == row)
+                .map(|(_, _, k)| *k)
+                .collect();
+            let [mech, elec] = keys[..] else {
+                panic!("{row}: {keys:?}")
+            };
+            let (a, b) = (number(&f, mech), number(&f, elec));
+            assert!(
+                (a - b).abs() <= 1e-12 * a.abs(),
+                "{query}: {mech} {a} ≠ {elec} {b}"
+            );
+        }
+    }
+}

@@ -24,91 +24,151 @@ pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mo>+</mo><mfrac><mi>q</mi><mi>C</mi></mfrac><mo>=</mo><mi>E</mi><mo>(</mo><mi>t</mi><mo>)</mo>\
 </mrow></math>";
 
-/// The force–voltage analogy as a dictionary (the paper's Table 1).
+/// The force–voltage analogy (the paper's Table 1), live: beside each quantity of either
+/// machine, its current value in this demo (the readout of the same key).
 pub(super) fn analogy_table() -> Table {
+    use crate::live_cell as live;
+    const AT_REST: &str = "0 at release";
     Table {
-        caption: "The force–voltage analogy: a·y″ + b·y′ + c·y = f(t) read two ways",
+        caption: "The force–voltage analogy: a·y″ + b·y′ + c·y = f(t) read two ways, with \
+                  the values of both machines now",
         columns: vec![
             "role in the equation",
             "mechanical",
-            "unit",
+            "value now",
             "electrical",
-            "unit",
+            "value now",
         ],
         rows: vec![
             (
                 "inertia",
-                vec!["inertia a", "mass m", "kg", "inductance L", "H"],
+                vec![
+                    "inertia a",
+                    "mass m [kg]",
+                    live!("m"),
+                    "inductance L [H]",
+                    live!("L"),
+                ],
             ),
             (
                 "dissipation",
                 vec![
                     "dissipation b",
-                    "damping coefficient c",
-                    "N·s/m",
-                    "resistance R",
-                    "Ω",
+                    "damping coefficient c [N·s/m]",
+                    live!("c"),
+                    "resistance R [Ω]",
+                    live!("R"),
                 ],
             ),
             (
                 "stiffness",
                 vec![
                     "stiffness c",
-                    "spring rate k",
-                    "N/m",
-                    "elastance 1/C (capacitance C)",
-                    "1/F (F)",
+                    "spring rate k [N/m]",
+                    live!("k"),
+                    "elastance 1/C [1/F]",
+                    live!("elastance"),
+                ],
+            ),
+            (
+                "compliance",
+                vec![
+                    "compliance 1/c",
+                    "compliance 1/k [m/N]",
+                    live!("compliance"),
+                    "capacitance C [F]",
+                    live!("C"),
                 ],
             ),
             (
                 "drive",
-                vec!["drive f(t)", "force F", "N", "voltage E", "V"],
+                vec![
+                    "drive f(t)",
+                    "force F [N]",
+                    "0: released from rest",
+                    "voltage E [V]",
+                    "0: no source in the loop",
+                ],
             ),
             (
                 "coordinate",
-                vec!["coordinate y", "displacement x", "m", "charge q", "C"],
+                vec![
+                    "coordinate y, initially y₀",
+                    "displacement x, initially x₀ [m]",
+                    live!("x0"),
+                    "charge q, initially q₀ [C]",
+                    live!("q0"),
+                ],
             ),
             (
                 "rate",
-                vec!["rate y′", "velocity v = ẋ", "m/s", "current i = q̇", "A"],
+                vec![
+                    "rate y′",
+                    "velocity v = ẋ [m/s]",
+                    AT_REST,
+                    "current i = q̇ [A]",
+                    AT_REST,
+                ],
             ),
             (
                 "natural frequency",
                 vec![
-                    "natural frequency",
-                    "ωₙ = √(k/m)",
-                    "rad/s",
-                    "ω₀ = 1/√(LC)",
-                    "rad/s",
+                    "natural frequency √(c/a)",
+                    "ωₙ = √(k/m) [rad/s]",
+                    live!("wn"),
+                    "ω₀ = 1/√(LC) [rad/s]",
+                    live!("w0"),
                 ],
             ),
             (
                 "damping ratio",
-                vec!["damping ratio ζ", "c/(2√(mk))", "—", "(R/2)·√(C/L)", "—"],
+                vec![
+                    "damping ratio ζ = b/(2√(ac))",
+                    "ζ = c/(2√(mk))",
+                    live!("zeta"),
+                    "ζ = (R/2)·√(C/L)",
+                    live!("zeta"),
+                ],
+            ),
+            (
+                "quality factor",
+                vec![
+                    "quality factor Q = √(ac)/b",
+                    "Q = √(mk)/c",
+                    live!("Q"),
+                    "Q = √(L/C)/R",
+                    live!("Q"),
+                ],
             ),
             (
                 "potential energy",
                 vec![
                     "stored by the stiffness",
-                    "spring ½kx²",
-                    "J",
-                    "capacitor ½q²/C",
-                    "J",
+                    "spring ½kx², at release ½kx₀² [J]",
+                    live!("energy"),
+                    "capacitor ½q²/C, at release ½q₀²/C [J]",
+                    live!("energy"),
                 ],
             ),
             (
                 "kinetic energy",
                 vec![
                     "stored by the inertia",
-                    "mass ½mv²",
-                    "J",
-                    "inductor ½Li²",
-                    "J",
+                    "mass ½mv² [J]",
+                    AT_REST,
+                    "inductor ½Li² [J]",
+                    AT_REST,
                 ],
             ),
             (
                 "power lost",
-                vec!["dissipated power", "c·v²", "W", "R·i²", "W"],
+                vec![
+                    "dissipated power",
+                    "damper c·v² [W]",
+                    AT_REST,
+                    "resistor R·i² [W]",
+                    AT_REST,
+                ],
             ),
         ],
         // No row matches a regime name: the table is a fixed dictionary, not a
