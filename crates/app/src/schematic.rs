@@ -1,11 +1,24 @@
 //! Schematic drawings as plain figures: a mass on a spring and damper over a moving base,
 //! and a series RLC loop. Coordinates are abstract drawing units; the renderer keeps the
 //! two axes at equal scale.
+//!
+//! Shared pieces: [`arrow`] (a shaft with a head, e.g. a current or a force), [`caption`]
+//! (a name on a drawing) and [`beside`], which composes two schematics into one figure
+//! (e.g. a mechanism and its electrical twin).
+//!
+//! ```
+//! use zeta_app::schematic::{beside, caption, mass_spring_damper, rlc_loop, MassLabels};
+//! let labels = MassLabels { mass: "m", spring: "k", damper: "c", base: "" };
+//! let mech = mass_spring_damper(0.5, 0.0, &labels, String::new());
+//! let elec = rlc_loop(0.2, 0.5, String::new());
+//! let both = beside(mech, elec, (4.7, 1.4)).with_marker(caption("electrical", (3.7, 4.2)));
+//! assert!(both.x.range.1 >= 4.7 + 2.0);
+//! ```
 
 // Drawing: the shapes of springs, coils and road profiles.
 #![allow(clippy::disallowed_methods)]
 
-use crate::figure::{Axis, Dash, Figure, FigureKind, LineStyle, Marker, MarkerShape, Series};
+use crate::figure::{Axis, Dash, Figure, FigureKind, LineStyle, Marker, Series};
 use crate::plot::Ink;
 
 const INK: Ink = Ink::Black;
@@ -22,13 +35,62 @@ fn line(points: Vec<(f64, f64)>, color: Ink, width: f64) -> Series {
     }
 }
 
+/// A name written on a drawing at `at`, in the text colour.
+pub fn caption(text: &str, at: (f64, f64)) -> Marker {
+    Marker::text(text, at, INK)
+}
+
 fn label(text: &str, at: (f64, f64)) -> Marker {
-    Marker {
-        label: text.to_string(),
-        at,
-        shape: MarkerShape::Label,
-        ink: INK,
+    caption(text, at)
+}
+
+/// An arrow from `from` to `to` as two polylines, the shaft and the open head: the head's
+/// sides reach back `head.0` along the shaft and `head.1` to each side of it (drawing
+/// units). Empty when the two ends coincide.
+pub fn arrow(from: (f64, f64), to: (f64, f64), head: (f64, f64)) -> Vec<Vec<(f64, f64)>> {
+    let (dx, dy) = (to.0 - from.0, to.1 - from.1);
+    let len = dx.hypot(dy);
+    if !(len > 0.0 && len.is_finite()) {
+        return Vec::new();
     }
+    let (ux, uy) = (dx / len, dy / len);
+    let back = (to.0 - head.0 * ux, to.1 - head.0 * uy);
+    let side = (-uy * head.1, ux * head.1);
+    vec![
+        vec![from, to],
+        vec![
+            (back.0 - side.0, back.1 - side.1),
+            to,
+            (back.0 + side.0, back.1 + side.1),
+        ],
+    ]
+}
+
+/// `right` drawn beside `left` in one figure: every point and marker of `right` shifted by
+/// `offset = (dx, dy)` drawing units, and the ranges widened to hold both. Title and text
+/// alternative are `left`'s; set them for the pair.
+pub fn beside(mut left: Figure, right: Figure, offset: (f64, f64)) -> Figure {
+    let (dx, dy) = offset;
+    let shift = |p: (f64, f64)| (p.0 + dx, p.1 + dy);
+    for mut s in right.series {
+        for p in &mut s.points {
+            *p = shift(*p);
+        }
+        left.series.push(s);
+    }
+    for mut m in right.markers {
+        m.at = shift(m.at);
+        left.markers.push(m);
+    }
+    left.x.range = (
+        left.x.range.0.min(right.x.range.0 + dx),
+        left.x.range.1.max(right.x.range.1 + dx),
+    );
+    left.y.range = (
+        left.y.range.0.min(right.y.range.0 + dy),
+        left.y.range.1.max(right.y.range.1 + dy),
+    );
+    left
 }
 
 /// A zigzag spring from `(x, y0)` up to `(x, y1)` with `coils` turns of half-width `w`.
@@ -184,17 +246,13 @@ pub fn rlc_loop(current: f64, charge: f64, description: String) -> Figure {
     fig.series
         .push(line(vec![(-1.75, -0.12), (-1.05, -0.12)], Ink::Green, 3.5));
     // Current arrow along the bottom wire; its length and direction follow i.
+    // Positive i = dq/dt charges the upper plate: it flows left to right along the bottom
+    // wire, so the arrow points right; a discharging capacitor (i < 0) points it left.
     let len = 1.6 * i;
     if len.abs() > 0.02 {
-        let head = if len > 0.0 { -0.15 } else { 0.15 };
-        let tip = (-len / 2.0, -1.3);
-        fig.series
-            .push(line(vec![(len / 2.0, -1.3), tip], Ink::Purple, 3.0));
-        fig.series.push(line(
-            vec![(tip.0 + head, -1.2), tip, (tip.0 + head, -1.4)],
-            Ink::Purple,
-            3.0,
-        ));
+        for part in arrow((-len / 2.0, -1.3), (len / 2.0, -1.3), (0.15, 0.1)) {
+            fig.series.push(line(part, Ink::Purple, 3.0));
+        }
     }
     fig.markers.push(label("L", (-0.1, 1.55)));
     fig.markers.push(label("R", (1.6, 0.35)));
@@ -244,5 +302,41 @@ mod tests {
             .series
             .iter()
             .all(|s| s.points.iter().all(|p| p.0.is_finite() && p.1.is_finite())));
+    }
+
+    #[test]
+    fn arrows_point_at_their_tip() {
+        let a = arrow((1.0, 0.0), (-1.0, 0.0), (0.15, 0.1));
+        assert_eq!(a[0], vec![(1.0, 0.0), (-1.0, 0.0)]);
+        // The head's ends lie behind the tip, one on each side of the shaft.
+        let head = &a[1];
+        assert_eq!(head[1], (-1.0, 0.0));
+        for end in [head[0], head[2]] {
+            assert!((end.0 - -0.85).abs() < 1e-15 && (end.1.abs() - 0.1).abs() < 1e-15);
+        }
+        assert!(head[0].1 * head[2].1 < 0.0);
+        assert!(arrow((0.0, 0.0), (0.0, 0.0), (0.1, 0.1)).is_empty());
+    }
+
+    #[test]
+    fn two_drawings_compose_side_by_side() {
+        let labels = MassLabels {
+            mass: "m",
+            spring: "k",
+            damper: "c",
+            base: "",
+        };
+        let left = mass_spring_damper(0.0, 0.0, &labels, String::new());
+        let right = rlc_loop(0.5, 0.5, String::new());
+        let (n, m) = (
+            left.series.len() + right.series.len(),
+            left.markers.len() + right.markers.len(),
+        );
+        let both = beside(left, right, (5.0, 1.0));
+        assert_eq!((both.series.len(), both.markers.len()), (n, m));
+        let l = both.markers.iter().find(|m| m.label == "L").unwrap();
+        assert_eq!(l.at, (-0.1 + 5.0, 1.55 + 1.0));
+        assert_eq!(both.x.range, (-1.6, 2.0 + 5.0));
+        assert!((both.y.range.0 - -0.6).abs() < 1e-12 && both.y.range.1 == 3.6);
     }
 }

@@ -191,6 +191,57 @@ pub struct Table {
     pub highlight_readout: &'static str,
 }
 
+/// Live cells: a table cell whose whole text is `{readout:<key>}` (write it with
+/// [`live_cell!`](crate::live_cell)) shows the current text of readout `key` of the same
+/// demo, refreshed on every update by the page (`web/live-table.js`). Everything else about
+/// the table stays static text; a table without such cells is unchanged.
+///
+/// ```
+/// use zeta_app::spec::Table;
+/// let table = Table {
+///     caption: "Two machines",
+///     columns: vec!["quantity", "value"],
+///     rows: vec![("inertia", vec!["mass m [kg]", zeta_app::live_cell!("m")])],
+///     highlight_readout: "",
+/// };
+/// assert_eq!(table.live_cells(), vec![("inertia", 1, "m")]);
+/// assert_eq!(Table::live_key("{readout:m}"), Some("m"));
+/// assert_eq!(Table::live_key("mass m"), None);
+/// ```
+impl Table {
+    /// The readout key a live cell names, `None` for a static cell.
+    pub fn live_key(cell: &str) -> Option<&str> {
+        let key = cell.strip_prefix("{readout:")?.strip_suffix('}')?;
+        let valid = !key.is_empty()
+            && key
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-');
+        valid.then_some(key)
+    }
+
+    /// Every live cell as `(row key, column index, readout key)`, in reading order.
+    pub fn live_cells(&self) -> Vec<(&'static str, usize, &'static str)> {
+        self.rows
+            .iter()
+            .flat_map(|(row, cells)| {
+                cells
+                    .iter()
+                    .enumerate()
+                    .filter_map(move |(i, c)| Some((*row, i, Table::live_key(c)?)))
+            })
+            .collect()
+    }
+}
+
+/// A live table cell showing the current text of readout `$key` (see [`Table::live_cells`]):
+/// `live_cell!("L")` is `"{readout:L}"`.
+#[macro_export]
+macro_rules! live_cell {
+    ($key:literal) => {
+        concat!("{readout:", $key, "}")
+    };
+}
+
 /// Everything the front end needs to build a demo's controls.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DemoSpec {
@@ -232,5 +283,39 @@ impl DemoSpec {
     /// The parameter with this key.
     pub fn param(&self, key: &str) -> Option<&ParamSpec> {
         self.params.iter().find(|p| p.key == key)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Table;
+    use crate::demos;
+
+    #[test]
+    fn live_cell_keys_are_exact() {
+        assert_eq!(Table::live_key(crate::live_cell!("x0")), Some("x0"));
+        for not_live in [
+            "{readout:}",
+            "{readout:a b}",
+            "readout:L",
+            "{readout:L} V",
+            "L",
+        ] {
+            assert_eq!(Table::live_key(not_live), None, "{not_live}");
+        }
+    }
+
+    #[test]
+    fn every_live_cell_names_a_readout_of_its_demo() {
+        for id in demos::ids() {
+            let spec = demos::create(id).unwrap().spec();
+            let Some(table) = &spec.table else { continue };
+            for (row, col, key) in table.live_cells() {
+                assert!(
+                    spec.readouts.iter().any(|r| r.key == key),
+                    "{id}: table row {row}, column {col} names readout {key}, which {id} lacks"
+                );
+            }
+        }
     }
 }

@@ -188,8 +188,8 @@ type Factory = fn() -> Box<dyn Demo>;
 const REGISTRY: &[(&str, Factory)] = &[
     ("regimes", || Box::new(Typed::new(regimes::Regimes))),
     ("quarter-car", || Box::new(quarter_car::QuarterCar::new())),
-    ("rlc", || Box::new(rlc::Rlc)),
-    ("analogy", || Box::new(analogy::Analogy)),
+    ("rlc", || Box::new(Typed::new(rlc::Rlc))),
+    ("analogy", || Box::new(Typed::new(analogy::Analogy))),
     ("resonance", || Box::new(resonance::Resonance::default())),
     ("integrators", || Box::new(integrators::Integrators::new())),
     ("flutter", || Box::new(flutter::Flutter::default())),
