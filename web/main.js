@@ -3,6 +3,7 @@
 // No physics here: every number comes from the Session (Rust).
 import init, { Session, demoList, setLanguage, takePanicMessage } from '../zeta-app.js';
 import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
+import { fillLiveCells } from './live-table.js';
 import { currentQuery, demoFromUrl, writeState } from './url.js';
 import { download } from './download.js';
 import { applyEmbedView, connectHost, embedOptions } from './embed.js';
@@ -123,6 +124,7 @@ function drawFrame() {
     if (out.derived.length) syncUrl();
     describeSliders(out.readouts);
     highlightRow(app.view.table, out.readouts);
+    fillLiveCells(app.view.table, out.readouts);
     for (const d of out.descriptions) {
       const cap = app.view.captions.get(d.key);
       if (cap) cap.textContent = d.text;
