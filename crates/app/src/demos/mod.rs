@@ -174,7 +174,9 @@ const REGISTRY: &[(&str, Factory)] = &[
     ("quarter-car-2dof", || {
         Box::new(quarter_car_2dof::QuarterCar2Dof::default())
     }),
-    ("design", || Box::new(design::DesignSpace::default())),
+    ("design", || {
+        Box::new(Typed::new(design::DesignSpace::default()))
+    }),
     ("uncertainty", || {
         Box::new(uncertainty::Uncertainty::default())
     }),

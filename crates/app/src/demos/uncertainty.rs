@@ -6,7 +6,7 @@
 // Not yet reshaped: still does maths the solver should do (issue "one shape").
 #![allow(clippy::disallowed_methods)]
 
-use super::design::{ms_readout, Stopwatch};
+use super::design::Stopwatch;
 use super::{Demo, Frame, Readout};
 use crate::figure::{finite_extent, padded, Axis, Dash, Figure, LineStyle, Marker};
 use crate::figure::{MarkerShape, Series};
@@ -875,7 +875,7 @@ impl Demo for Uncertainty {
                 text: format!("{draws}"),
                 data_value: format!("{draws}"),
             },
-            ms_readout("compute_time", self.mc_ms),
+            Readout::plain("compute_time", Some(self.mc_ms), "ms", 3),
         ];
         let (name, _) = inp.hist.label();
         let second_title = format!("Monte Carlo: {name}");
