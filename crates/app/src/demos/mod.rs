@@ -178,7 +178,7 @@ const REGISTRY: &[(&str, Factory)] = &[
         Box::new(Typed::new(design::DesignSpace::default()))
     }),
     ("uncertainty", || {
-        Box::new(uncertainty::Uncertainty::default())
+        Box::new(Typed::new(uncertainty::Uncertainty::default()))
     }),
 ];
 
