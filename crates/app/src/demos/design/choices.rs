@@ -20,8 +20,16 @@ pub enum Metric {
 
 impl Choice for Metric {
     const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
-        (Metric::SettlingTime, "settling_time", "settling time"),
-        (Metric::PeakRebound, "peak_rebound", "peak rebound"),
+        (
+            Metric::SettlingTime,
+            "settling_time",
+            "settling time (free response)",
+        ),
+        (
+            Metric::PeakRebound,
+            "peak_rebound",
+            "peak rebound (free response)",
+        ),
         (
             Metric::AccelRms,
             "accel_rms",
@@ -30,7 +38,7 @@ impl Choice for Metric {
         (
             Metric::PeakTransmissibility,
             "peak_transmissibility",
-            "peak transmissibility",
+            "peak transmissibility |X/U|",
         ),
     ];
 }

@@ -28,14 +28,14 @@ const TOP_STRIP: f64 = 0.09;
 /// labelled in the blank strips, × on the lowest cell and ● on the selected design.
 pub(super) fn map(d: &DesignSpace, p: &P, r: &Results) -> Figure {
     let key = r.key;
-    let (name, unit, factor) = p.metric.describe();
+    let (_, unit, factor) = p.metric.describe();
     let raw = p.metric.values(&d.maps);
     let colours = MapColours::new(raw, factor, p.metric.log_colour());
     let ((k0, k1), (c0, c1)) = (key.k, key.c);
     let mut fig = Figure::plot(
         format!(
             "{}: {} → {}",
-            p.metric.short(),
+            p.metric.short(p.band),
             text::with_unit(colours.range.0, unit, 3),
             text::with_unit(colours.range.1, unit, 3)
         ),
@@ -90,12 +90,6 @@ pub(super) fn map(d: &DesignSpace, p: &P, r: &Results) -> Figure {
             Ink::Black,
         ));
     }
-    let legend_unit = if unit.is_empty() {
-        String::new()
-    } else {
-        format!(" [{unit}]")
-    };
-    let log_of = if colours.log { "log of " } else { "" };
     let description = text::describe_map(p, r, best, colours.range, colours.log);
     fig.heatmap = Some(Heatmap {
         nx: key.n,
@@ -104,7 +98,7 @@ pub(super) fn map(d: &DesignSpace, p: &P, r: &Results) -> Figure {
         x_edges: (k0 / KILO, k1 / KILO),
         y_edges: (c0 / KILO, c1 / KILO),
         scale: colours.scale,
-        label: format!("{log_of}{name}{legend_unit}"),
+        label: p.metric.bar_label(p.band, colours.log),
     });
     fig.described(description)
 }
@@ -136,7 +130,7 @@ pub(super) fn pareto(d: &DesignSpace, p: &P, r: &Results) -> Figure {
     let (xr, yr) = r.pareto_ranges;
     let mut fig = Figure::plot(
         PARETO_TITLE,
-        Axis::linear("settling time", "s", xr),
+        Axis::linear(format!("settling time into ±{} % of x₀", p.band), "s", xr),
         Axis::linear("RMS body acceleration", "m/s²", yr),
     );
     if let Some((ik, kcol)) = d.column_near(p.k) {
@@ -160,7 +154,7 @@ pub(super) fn pareto(d: &DesignSpace, p: &P, r: &Results) -> Figure {
             LineStyle::dotted(Ink::Green, 2.0),
         );
     }
-    let description = text::describe_pareto(&pts, sel_pt);
+    let description = text::describe_pareto(&pts, sel_pt, p.band);
     fig = fig.with_line("Pareto front", pts, LineStyle::solid(Ink::Blue, 2.5));
     if let Some(pt) = sel_pt {
         fig = fig.with_marker(Marker::dot("selected", pt, Ink::Vermillion));
@@ -194,7 +188,11 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
         Axis::linear("time t", "s", (0.0, t_end)),
         Axis::linear("displacement x", "m", (0.0, 1.0)),
     )
-    .with_line("settling band", vec![(0.0, h), (t_end, h)], band)
+    .with_line(
+        format!("settling band ±{} % of x₀", p.band),
+        vec![(0.0, h), (t_end, h)],
+        band,
+    )
     .with_line("", vec![(0.0, -h), (t_end, -h)], band);
     if let Some((_, sys, _)) = r.fastest {
         fig = fig.with_line(

@@ -143,7 +143,7 @@ impl Model for DesignSpace {
                 }),
                 linear(
                     "band",
-                    "settling band",
+                    "settling band, ± % of x₀ (free response)",
                     "",
                     "%",
                     (1.0, 20.0, 0.5),
@@ -219,10 +219,20 @@ impl Model for DesignSpace {
                 ReadoutDef::number("k", "selected spring rate k", "N/m", 4, |r| Some(r.k)),
                 ReadoutDef::number("c", "selected damper rate c", "N·s/m", 4, |r| Some(r.c)),
                 ReadoutDef::number("zeta", "damping ratio ζ", "", 3, |r| r.sel.zeta),
-                ReadoutDef::number("settling_time", "settling time", "s", 4, |r| {
-                    r.sel.settling_time
-                }),
-                ReadoutDef::number("overshoot", "peak rebound", "%", 3, |r| r.sel.overshoot),
+                ReadoutDef::number(
+                    "settling_time",
+                    "settling time into the ± band of x₀ (free response)",
+                    "s",
+                    4,
+                    |r| r.sel.settling_time,
+                ),
+                ReadoutDef::number(
+                    "overshoot",
+                    "peak rebound, % of x₀ (free response)",
+                    "%",
+                    3,
+                    |r| r.sel.overshoot,
+                ),
                 // Plain: accelerations stay in m/s² (no "mm/s²").
                 ReadoutDef::plain("accel_rms", "RMS body acceleration", "m/s²", 3, |r| {
                     r.sel.accel_rms

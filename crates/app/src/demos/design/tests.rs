@@ -38,7 +38,7 @@ fn readouts_are_the_selected_design_from_the_solver() {
     assert_eq!((map.nx, map.ny, map.values.len()), (100, 100, 10_000));
     assert!(f.figures[0]
         .description
-        .starts_with("Settling time over k 10–60 kN/m"));
+        .contains("into ±5 % of x₀, over k 10–60 kN/m"));
 }
 
 #[test]
@@ -107,4 +107,33 @@ fn the_road_class_scales_only_the_comfort_metric() {
     let c = run("road=c");
     assert!((number(&c, "accel_rms") / number(&b, "accel_rms") - 2.0).abs() < 1e-12);
     assert_eq!(number(&c, "settling_time"), number(&b, "settling_time"));
+}
+
+#[test]
+fn settling_and_rebound_labels_say_free_response_relative_to_x0() {
+    let spec = DesignSpace::declare().spec();
+    for key in ["settling_time", "overshoot"] {
+        let r = spec.readouts.iter().find(|r| r.key == key).unwrap();
+        assert!(
+            r.label.contains("x₀") && r.label.contains("free response"),
+            "{}",
+            r.label
+        );
+    }
+    let band = spec.param("band").unwrap();
+    assert!(band.label.contains("x₀") && band.label.contains("free response"));
+    let f = run("band=2");
+    assert!(f.figures[0].title.contains("±2 % of x₀"));
+    assert!(f.figures[2].description.contains("not a step"));
+    // The colour bar names its unit for every metric.
+    for (metric, unit) in [
+        ("settling_time", "[s]"),
+        ("peak_rebound", "[% of x₀]"),
+        ("accel_rms", "[m/s²]"),
+        ("peak_transmissibility", "[m/m]"),
+    ] {
+        let f = run(&format!("metric={metric}"));
+        let label = &f.figures[0].heatmap.as_ref().unwrap().label;
+        assert!(label.contains(unit), "{metric}: {label}");
+    }
 }

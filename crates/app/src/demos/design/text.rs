@@ -7,7 +7,8 @@ use crate::format::{si, significant};
 pub(super) const SUMMARY: &str =
     "Every cell of the map is one quarter car (sprung mass m on spring k and \
                       damper c), coloured by the chosen metric: settling time and peak rebound \
-                      of a release from rest, RMS body acceleration on a random ISO 8608 road \
+                      of the free response released from rest at x₀ = 60 mm (not a step \
+                      response: the band and the rebound are relative to x₀), RMS body acceleration on a random ISO 8608 road \
                       at 72 km/h (the tyre filters the input above 10 Hz), or peak \
                       transmissibility. Dashed lines join designs of equal damping ratio \
                       ζ = c/(2√(km)). The Pareto front holds the designs no other beats in both \
@@ -27,17 +28,55 @@ impl Metric {
             Metric::SettlingTime => ("settling time", "s", 1.0),
             Metric::PeakRebound => ("peak rebound", "%", 100.0),
             Metric::AccelRms => ("RMS body acceleration", "m/s²", 1.0),
-            Metric::PeakTransmissibility => ("peak transmissibility", "", 1.0),
+            Metric::PeakTransmissibility => ("peak transmissibility |X/U|", "", 1.0),
         }
     }
 
-    /// Short name for the plot title.
-    pub(super) fn short(self) -> &'static str {
+    /// The unit of the colour bar: what one unit of the shown value is.
+    fn bar_unit(self) -> &'static str {
         match self {
-            Metric::SettlingTime => "Settling time",
-            Metric::PeakRebound => "Peak rebound",
-            Metric::AccelRms => "RMS acceleration",
-            Metric::PeakTransmissibility => "Peak transmissibility",
+            Metric::SettlingTime => "s",
+            Metric::PeakRebound => "% of x₀",
+            Metric::AccelRms => "m/s²",
+            Metric::PeakTransmissibility => "m/m",
+        }
+    }
+
+    /// What the metric is relative to, after its name: the free response and its band
+    /// (`band` in % of x₀). Empty for the metrics that do not depend on x₀.
+    fn relative_to(self, band: f64) -> String {
+        match self {
+            Metric::SettlingTime => format!(
+                " of the free response from x₀ = {} into ±{band} % of x₀,",
+                si(X0, "m", 2)
+            ),
+            Metric::PeakRebound => format!(
+                " of the free response from x₀ = {}, in % of x₀,",
+                si(X0, "m", 2)
+            ),
+            Metric::AccelRms | Metric::PeakTransmissibility => String::new(),
+        }
+    }
+
+    /// The colour bar's label: the metric, relative to what, its unit and the scale.
+    pub(super) fn bar_label(self, band: f64, log: bool) -> String {
+        let (name, _, _) = self.describe();
+        let of = match self {
+            Metric::SettlingTime => format!(" into ±{band} % of x₀, free response from rest"),
+            Metric::PeakRebound => ", free response from rest".to_string(),
+            Metric::AccelRms | Metric::PeakTransmissibility => String::new(),
+        };
+        let scale = if log { ", logarithmic colours" } else { "" };
+        format!("{name}{of} [{}]{scale}", self.bar_unit())
+    }
+
+    /// Short name for the plot title, saying what the value is relative to.
+    pub(super) fn short(self, band: f64) -> String {
+        match self {
+            Metric::SettlingTime => format!("Settling into ±{band} % of x₀"),
+            Metric::PeakRebound => "Peak rebound (% of x₀)".into(),
+            Metric::AccelRms => "RMS acceleration".into(),
+            Metric::PeakTransmissibility => "Peak transmissibility |X/U|".into(),
         }
     }
 
@@ -110,8 +149,9 @@ pub(super) fn describe_map(
     };
     let selected_text = match (r.sel.zeta, r.sel.settling_time) {
         (Some(z), Some(t)) => format!(
-            "selected design ζ = {} settles in {}",
+            "selected design ζ = {} settles into ±{} % of x₀ in {}",
             significant(z, 2),
+            p.band,
             si(t, "s", 3)
         ),
         (Some(z), None) => format!("selected design ζ = {} does not settle", significant(z, 2)),
@@ -123,10 +163,11 @@ pub(super) fn describe_map(
         " (outside the map)"
     };
     format!(
-        "{} over k {} and c {} ({} × {} grid, m = {}): {}; {}{}. Colour from dark purple \
+        "{}{} over k {} and c {} ({} × {} grid, m = {}): {}; {}{}. Colour from dark purple \
          ({}) to yellow ({}){}. Dashed iso-ζ lines for ζ = 0.2, 0.3, 0.5, 0.7 and 1; × marks the lowest \
          cell, ● the selected design.",
         capitalise(name),
+        p.metric.relative_to(p.band),
         span_text(key.k.0, key.k.1, "N/m"),
         span_text(key.c.0, key.c.1, "N·s/m"),
         key.n,
@@ -143,13 +184,17 @@ pub(super) fn describe_map(
 
 /// The Pareto front in words, from its points `(settling time, RMS acceleration)` in
 /// front order.
-pub(super) fn describe_pareto(front: &[(f64, f64)], selected: Option<(f64, f64)>) -> String {
+pub(super) fn describe_pareto(
+    front: &[(f64, f64)],
+    selected: Option<(f64, f64)>,
+    band: f64,
+) -> String {
     let accel = |a: f64| with_unit(a, "m/s²", 3);
     let front_len = front.len();
     match (front.first(), front.last()) {
         (Some(a), Some(b)) => format!(
-            "Pareto front of {} non-dominated designs: from the fastest, settling in {} \
-             with {} RMS acceleration, to the smoothest, {} with {}. {}",
+            "Pareto front of {} non-dominated designs: from the fastest, settling into ±{band} % \
+             of x₀ in {} with {} RMS acceleration, to the smoothest, {} with {}. {}",
             front_len,
             si(a.0, "s", 3),
             accel(a.1),
@@ -157,7 +202,7 @@ pub(super) fn describe_pareto(front: &[(f64, f64)], selected: Option<(f64, f64)>
             si(b.0, "s", 3),
             match selected {
                 Some((t, a)) => format!(
-                    "The selected design settles in {} with {}.",
+                    "The selected design settles into ±{band} % of x₀ in {} with {}.",
                     si(t, "s", 3),
                     accel(a)
                 ),
@@ -182,8 +227,8 @@ pub(super) fn describe_response(p: &P, r: &Results) -> String {
     });
     match (r.sel.zeta, r.sel.settling_time, r.sel.overshoot) {
         (Some(z), Some(t), Some(o)) => format!(
-            "Selected design (ζ = {}) released from {}: rebounds {} and stays within {} % \
-             after {}{}.",
+            "Selected design (ζ = {}) released from rest at x₀ = {} (a free response, not a \
+             step): rebounds {} of x₀ and stays within ±{} % of x₀ after {}{}.",
             significant(z, 3),
             si(X0, "m", 2),
             si(o, "%", 3),
