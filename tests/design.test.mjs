@@ -1,10 +1,12 @@
-// End to end: the (k, c) design-space demo. Presets through the URL contract with readouts
-// checked against closed forms computed here, every control moved from the keyboard,
+// End to end: the (k, c) design-space demo. The defaults and every preset through the URL
+// contract, checked against the readouts and text alternatives recorded by the native
+// snapshot tests (no physics recomputed here); every control moved from the keyboard,
 // picking designs by clicking the map and the Pareto front, and the sweep's compute time.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { serve } from './support/server.mjs';
 import { launch, open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { golden, assertReadoutsMatch } from './support/golden.mjs';
 
 let server;
 let browser;
@@ -21,98 +23,31 @@ after(async () => {
 
 const DEFAULTS = { m: 300, metric: 0, band: 5, road: 1, k_min: 10000, k_max: 60000, c_min: 500, c_max: 8000, k: 24000, c: 2000, n: 100 };
 const PLOTS = ['map', 'pareto', 'response'];
-const X0 = 0.06;
-
-// Closed forms, for checking the page (tests only).
-const zetaOf = (m, k, c) => c / (2 * Math.sqrt(k * m));
-
-/** Free response of m x'' + c x' + k x = 0 from (x0, 0), any damping > 0. */
-function freeResponse(m, c, k, x0) {
-  const a = c / (2 * m);
-  const wn2 = k / m;
-  const d = a * a - wn2;
-  if (d < -1e-12 * wn2) {
-    const wd = Math.sqrt(-d);
-    return (t) => x0 * Math.exp(-a * t) * (Math.cos(wd * t) + (a / wd) * Math.sin(wd * t));
-  }
-  if (d > 1e-12 * wn2) {
-    const mu = Math.sqrt(d);
-    return (t) => x0 * Math.exp(-a * t) * (Math.cosh(mu * t) + (a / mu) * Math.sinh(mu * t));
-  }
-  return (t) => x0 * Math.exp(-a * t) * (1 + a * t);
-}
-
-/** Last time |x| = band·x0, by fine sampling then bisection (accurate to ~1e-10 s). */
-function settlingTime(m, c, k, band, tEnd = 40) {
-  const x = freeResponse(m, c, k, X0);
-  const h = band * X0;
-  const dt = 2e-5;
-  let last = -1;
-  for (let i = 0; i * dt <= tEnd; i++) if (Math.abs(x(i * dt)) > h) last = i;
-  let lo = last * dt;
-  let hi = lo + dt;
-  for (let j = 0; j < 60; j++) {
-    const mid = (lo + hi) / 2;
-    if (Math.abs(x(mid)) > h) lo = mid;
-    else hi = mid;
-  }
-  return (lo + hi) / 2;
-}
-
-/** RMS body acceleration on an ISO 8608 road (class index 0..3) at 20 m/s, cutoff 10 Hz. */
-function accelRms(m, c, k, road) {
-  const gd = [16e-6, 64e-6, 256e-6, 1024e-6][road];
-  const q = 2 * Math.PI ** 2 * gd * 0.01 * 20;
-  const wc = 2 * Math.PI * 10;
-  const num = wc * wc * (c * c * (k + c * wc) + m * k * k);
-  const den = 2 * m * c * (k + c * wc + m * wc * wc);
-  return Math.sqrt((q * num) / den);
-}
 
 const num = async (page, key) => Number(await readout(page, key));
-const close = (a, b, rel, what) => assert.ok(Math.abs(a - b) <= rel * Math.max(Math.abs(b), 1e-300), `${what}: ${a} vs ${b}`);
-
-async function checkDesignReadouts(page, p) {
-  const zeta = zetaOf(p.m, p.k, p.c);
-  close(await num(page, 'k'), p.k, 1e-12, 'k');
-  close(await num(page, 'c'), p.c, 1e-12, 'c');
-  close(await num(page, 'zeta'), zeta, 1e-12, 'zeta');
-  if (zeta < 1) {
-    // Release from rest: peak rebound e^{−πζ/√(1−ζ²)}.
-    close(await num(page, 'overshoot'), 100 * Math.exp((-Math.PI * zeta) / Math.sqrt(1 - zeta * zeta)), 1e-9, 'overshoot');
-  }
-  close(await num(page, 'settling_time'), settlingTime(p.m, p.c, p.k, p.band / 100), 1e-7, 'settling_time');
-  close(await num(page, 'accel_rms'), accelRms(p.m, p.c, p.k, p.road), 1e-9, 'accel_rms');
-  assert.equal(await num(page, 'grid_size'), p.n * p.n);
-  const ms = await num(page, 'compute_time');
-  assert.ok(ms > 0 && ms < 1000, `compute time ${ms} ms`);
-}
-
-const PRESETS = [
-  ['settling', { m: 300, metric: 0, k: 24000, c: 2000 }],
-  ['laden', { m: 500, metric: 0, k: 24000, c: 2000 }],
-  ['comfort', { metric: 2, road: 2, m: 300 }],
-  ['rebound', { metric: 1, m: 300, k: 24000, c: 3760 }],
-  ['fine', { n: 160, metric: 0 }],
-];
-
 const query = (values) => Object.entries(values).map(([k, v]) => `${k}=${v}`).join('&');
 
-for (const [name, values] of PRESETS) {
-  test(`preset "${name}" from the URL: readouts match the closed forms and every plot is drawn`, async () => {
-    const { page, errors, context } = await open(browser, `${server.url}?demo=design&${query(values)}`);
-    const p = { ...DEFAULTS, ...values };
-    await checkDesignReadouts(page, p);
-    for (const plot of PLOTS) {
+/** What the page shows whatever the physics: the selection, and the grid it was swept on. */
+async function checkEchoes(page, p) {
+  assert.equal(await num(page, 'k'), p.k);
+  assert.equal(await num(page, 'c'), p.c);
+  assert.equal(await num(page, 'grid_size'), p.n * p.n);
+}
+
+const shortName = (label) => label.replace(/[^A-Za-z0-9]+/g, '-').replace(/^-|-$/g, '').toLowerCase();
+
+for (const state of golden('design').states) {
+  test(`"${state.name}" from the URL: readouts and text alternatives as recorded natively, every plot drawn`, async () => {
+    const { page, errors, context } = await open(browser, `${server.url}?demo=design&${state.query}`);
+    await assertReadoutsMatch(page, state);
+    for (const [i, plot] of PLOTS.entries()) {
       const [ink] = await canvasFingerprint(page, plot);
       assert.ok(ink > 3000, `${plot} has ink (${ink} px)`);
+      assert.equal(await page.textContent(`#desc-${plot}`), state.figures[i].description, `${plot} described as recorded`);
     }
     const [mapInk] = await canvasFingerprint(page, 'map');
     assert.ok(mapInk > 60000, `the heat map fills its plot (${mapInk} px)`);
-    const desc = await page.textContent('#desc-map');
-    assert.match(desc, /over k 10–60 kN\/m and c 0\.5–8 kN·s\/m/);
-    assert.match(desc, new RegExp(`\\(${p.n} × ${p.n} grid`));
-    await page.screenshot({ path: `${SHOTS}design-${name}-1280.png`, fullPage: true });
+    await page.screenshot({ path: `${SHOTS}design-${shortName(state.name)}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);
     await context.close();
   });
@@ -154,7 +89,7 @@ test('every slider moves from the keyboard and changes readouts or pixels', asyn
     const i = PLOTS.indexOf(plot);
     assert.notEqual(after.prints[i], before.prints[i], `${key}: ${plot} redrawn`);
     if (moves) assert.notEqual(after.values, before.values, `${key}: readouts follow`);
-    await checkDesignReadouts(page, p);
+    await checkEchoes(page, p);
   }
   // The choices.
   for (const [key, value, plot] of [
@@ -170,9 +105,9 @@ test('every slider moves from the keyboard and changes readouts or pixels', asyn
     const after = await state(page);
     const i = PLOTS.indexOf(plot);
     assert.notEqual(after.prints[i], before.prints[i], `${key}=${value}: ${plot} redrawn`);
-    await checkDesignReadouts(page, p);
+    await checkEchoes(page, p);
   }
-  assert.match(await page.textContent('#desc-map'), /^Peak rebound over/);
+  assert.match(await page.textContent('#desc-map'), /^Peak rebound of the free response from x₀ = 60 mm, in % of x₀, over k/);
   assert.deepEqual(errors, []);
   await context.close();
 });
@@ -189,7 +124,7 @@ test('clicking the map selects that design; clicking the front selects a front d
   assert.ok(k > 10000 && k < 60000 && c > 500 && c < 8000, `picked (${k}, ${c}) inside the map`);
   await waitForUrlParam(page, 'k', String(k));
   assert.equal(await urlValue(page, 'c'), String(c));
-  await checkDesignReadouts(page, { ...DEFAULTS, k, c });
+  await checkEchoes(page, { ...DEFAULTS, k, c });
   assert.notDeepEqual(await canvasFingerprint(page, 'response'), before);
   // A click on the Pareto plot moves the selection onto the front.
   await page.locator('canvas[data-plot="pareto"]').scrollIntoViewIfNeeded();
@@ -198,7 +133,7 @@ test('clicking the map selects that design; clicking the front selects a front d
   await page.waitForFunction((kk) => Number(document.querySelector('[data-readout="k"]').dataset.value) !== kk, k);
   const k2 = await num(page, 'k');
   const c2 = await num(page, 'c');
-  await checkDesignReadouts(page, { ...DEFAULTS, k: k2, c: c2 });
+  await checkEchoes(page, { ...DEFAULTS, k: k2, c: c2 });
   // Front designs are cell centres of the 100 × 100 grid.
   const ik = (k2 - 10000) / 500 - 0.5;
   const ic = (c2 - 500) / 75 - 0.5;

@@ -1,11 +1,12 @@
-// End to end: the tolerance demo. Presets through the URL contract with the exact ranges
-// checked against closed forms computed here, Monte Carlo percentiles and yield checked
-// against the distribution of the parts, the seed's reproducibility, every control moved
-// from the keyboard, and the time of a 100 000-draw run.
+// End to end: the tolerance demo. The defaults and every preset through the URL contract,
+// checked against the readouts and text alternatives recorded by the native snapshot tests
+// (no physics or statistics recomputed here), the seed's reproducibility, every control
+// moved from the keyboard, and the time of a 100 000-draw run.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { serve } from './support/server.mjs';
 import { launch, open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { golden, assertReadoutsMatch } from './support/golden.mjs';
 
 let server;
 let browser;
@@ -21,98 +22,35 @@ after(async () => {
 });
 
 const PLOTS = ['band', 'zeta_hist', 'hist'];
-const DEFAULTS = { system: 0, m: 300, k: 24000, zeta: 0.7, dm: 10, R: 7, L: 0.5, C: 0.02, dR: 5, dL: 5, dC: 5 };
 const num = async (page, key) => Number(await readout(page, key));
-const close = (a, b, rel, what) => assert.ok(Math.abs(a - b) <= rel * Math.abs(b), `${what}: ${a} vs ${b}`);
-const query = (values) => Object.entries(values).map(([k, v]) => `${k}=${v}`).join('&');
 const urlValue = (page, key) => page.evaluate((k) => new URLSearchParams(location.search).get(k), key);
+const shortName = (label) => label.replace(/[^A-Za-z0-9]+/g, '-').replace(/^-|-$/g, '').toLowerCase();
 
-/** Exact ranges of ζ, ωn, Q from closed forms (tests only). */
-function exactRanges(p) {
-  if (p.system === 0) {
-    // c = 2ζ√(km) fixed; ζ ∝ m^−½, ωn ∝ m^−½, Q = 1/(2ζ).
-    const d = p.dm / 100;
-    const wn = Math.sqrt(p.k / p.m);
-    return {
-      zeta: [p.zeta / Math.sqrt(1 + d), p.zeta / Math.sqrt(1 - d)],
-      wn: [wn / Math.sqrt(1 + d), wn / Math.sqrt(1 - d)],
-      Q: [Math.sqrt(1 - d) / (2 * p.zeta), Math.sqrt(1 + d) / (2 * p.zeta)],
-    };
-  }
-  // ζ = (R/2)√(C/L), ωn = 1/√(LC), Q = 1/(2ζ).
-  const [r, l, c] = [p.dR / 100, p.dL / 100, p.dC / 100];
-  const z = (R, L, C) => (R / 2) * Math.sqrt(C / L);
-  const zmin = z(p.R * (1 - r), p.L * (1 + l), p.C * (1 - c));
-  const zmax = z(p.R * (1 + r), p.L * (1 - l), p.C * (1 + c));
-  return {
-    zeta: [zmin, zmax],
-    wn: [1 / Math.sqrt(p.L * (1 + l) * p.C * (1 + c)), 1 / Math.sqrt(p.L * (1 - l) * p.C * (1 - c))],
-    Q: [1 / (2 * zmax), 1 / (2 * zmin)],
-  };
-}
-
-async function checkRanges(page, p) {
-  const e = exactRanges(p);
-  close(await num(page, 'zeta_min'), e.zeta[0], 1e-12, 'zeta_min');
-  close(await num(page, 'zeta_max'), e.zeta[1], 1e-12, 'zeta_max');
-  close(await num(page, 'wn_min'), e.wn[0], 1e-12, 'wn_min');
-  close(await num(page, 'wn_max'), e.wn[1], 1e-12, 'wn_max');
-  close(await num(page, 'Q_min'), e.Q[0], 1e-12, 'Q_min');
-  close(await num(page, 'Q_max'), e.Q[1], 1e-12, 'Q_max');
-  const [zp5, zp95, qp5, qp95] = [await num(page, 'zeta_p5'), await num(page, 'zeta_p95'), await num(page, 'Q_p5'), await num(page, 'Q_p95')];
-  // Uniform parts never leave the tolerance box; percentiles lie inside the exact range.
-  assert.ok(e.zeta[0] <= zp5 && zp5 < zp95 && zp95 <= e.zeta[1], `ζ percentiles ${zp5} ${zp95}`);
-  assert.ok(e.Q[0] <= qp5 && qp5 < qp95 && qp95 <= e.Q[1], `Q percentiles ${qp5} ${qp95}`);
-  // Q = 1/(2ζ) draw by draw, so Q's 5th percentile is ~1/(2·ζ's 95th) (interpolation aside).
-  close(qp5, 1 / (2 * zp95), 1e-3, 'Q_p5 vs ζ_p95');
-  close(qp95, 1 / (2 * zp5), 1e-3, 'Q_p95 vs ζ_p5');
-  const y = await num(page, 'yield');
-  assert.ok(y >= 0 && y <= 100, `yield ${y}`);
-  assert.equal(await num(page, 'draws'), 10000);
-  const ms = await num(page, 'compute_time');
-  assert.ok(ms >= 0 && ms < 2000, `compute time ${ms}`);
-}
-
-const PRESETS = [
-  ['zeta1', { system: 0, m: 300, k: 24000, zeta: 1, dm: 10 }],
-  ['zeta07', { system: 0, m: 300, k: 24000, zeta: 0.7, dm: 10 }],
-  ['rlc5', { system: 1, dR: 5, dL: 5, dC: 5 }],
-  ['rlc20', { system: 1, dR: 20, dL: 20, dC: 20 }],
-];
-
-for (const [name, values] of PRESETS) {
-  test(`preset "${name}" from the URL: exact ranges, percentiles and plots`, async () => {
-    const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&${query(values)}`);
-    const p = { ...DEFAULTS, ...values };
-    await checkRanges(page, p);
-    for (const plot of PLOTS) {
+for (const state of golden('uncertainty').states) {
+  test(`"${state.name}" from the URL: readouts and text alternatives as recorded natively, every plot drawn`, async () => {
+    const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&${state.query}`);
+    await assertReadoutsMatch(page, state);
+    for (const [i, plot] of PLOTS.entries()) {
       const [ink] = await canvasFingerprint(page, plot);
       assert.ok(ink > 3000, `${plot} has ink (${ink} px)`);
+      assert.equal(await page.textContent(`#desc-${plot}`), state.figures[i].description, `${plot} described as recorded`);
     }
-    const band = await page.textContent('#desc-band');
-    assert.match(band, p.system === 0 ? /RLC sliders are ignored/ : /suspension sliders are ignored/);
-    assert.match(await page.textContent('#desc-zeta_hist'), /10\u2009000 uniform draws/);
-    await page.screenshot({ path: `${SHOTS}uncertainty-${name}-1280.png`, fullPage: true });
+    await page.screenshot({ path: `${SHOTS}uncertainty-${shortName(state.name)}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);
     await context.close();
   });
 }
 
-test('percentiles and yield follow the distribution of the parts', async () => {
-  // Sprung mass uniform on m0·[0.9, 1.1]: ζ = ζ0·√(m0/m), so ζ's 5th percentile is at the
-  // mass's 95th, m0·1.09, and with the spec window [0.6, 1] on a ζ = 1 design exactly the
-  // heavier half passes (ts_max = 10 s lets every draw settle in time).
-  const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&zeta=1&dm=10&ts_max=10&zeta_lo=0.6&zeta_hi=1`);
-  // Sampling error of a percentile with 10 000 draws: ~0.05 % of the value here.
-  close(await num(page, 'zeta_p5'), 1 / Math.sqrt(1.09), 2e-3, 'ζ p5');
-  close(await num(page, 'zeta_p95'), 1 / Math.sqrt(0.91), 2e-3, 'ζ p95');
-  const y = await num(page, 'yield');
-  assert.ok(Math.abs(y - 50) < 2, `yield ${y} % ≈ 50 % (σ = 0.5 %)`);
-  // Normal parts: tolerance = 3σ, so 90 % of masses lie within ±1.645σ = ±5.48 %.
+test('choosing normal parts redraws the histograms and says so', async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&zeta=1&dm=10`);
+  const p5 = await readout(page, 'zeta_p5');
+  const print = await canvasFingerprint(page, 'zeta_hist');
+  assert.match(await page.textContent('#desc-zeta_hist'), /10\u2009000 uniform draws/);
   await page.selectOption('#p-dist', '1');
   await waitForUrlParam(page, 'dist', '1');
-  close(await num(page, 'zeta_p5'), 1 / Math.sqrt(1 + 0.1 * 1.6449 / 3), 2e-3, 'normal ζ p5');
   assert.match(await page.textContent('#desc-zeta_hist'), /normal \(tolerance = 3σ\) draws/);
+  assert.notEqual(await readout(page, 'zeta_p5'), p5);
+  assert.notDeepEqual(await canvasFingerprint(page, 'zeta_hist'), print);
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -513,3 +513,162 @@ fn wide_normal_tolerances_redraw_invalid_values_and_never_produce_negative_parts
     assert!(s.zeta.iter().all(|z| z.is_finite() && *z >= 0.0));
     assert!(s.wn.iter().all(|w| w.is_finite() && *w > 0.0));
 }
+
+// ---------------------------------------------------------------- design-map helpers
+
+mod map_helpers {
+    use zeta_solver::design::pareto::{nearest_on_front, pareto_front};
+    use zeta_solver::design::sweep::{
+        iso_zeta_line_into, iso_zeta_span, iso_zeta_stiffness, rebound_from_rest, RoadInput,
+    };
+    use zeta_solver::metrics::free::FreeMetrics;
+    use zeta_solver::metrics::SettlingBand;
+    use zeta_solver::two_dof::IsoClass;
+    use zeta_solver::SecondOrder;
+
+    #[test]
+    fn iso_zeta_stiffness_inverts_the_iso_zeta_line() {
+        for zeta in [0.2, 0.7, 1.0] {
+            let k = [12_345.0];
+            let mut c = [0.0];
+            iso_zeta_line_into(zeta, 300.0, &k, &mut c);
+            let back = iso_zeta_stiffness(zeta, 300.0, c[0]).unwrap();
+            assert!((back - k[0]).abs() < 1e-10 * k[0], "ζ = {zeta}");
+        }
+        assert!(iso_zeta_stiffness(0.0, 300.0, 1.0).is_none());
+        assert!(iso_zeta_stiffness(0.5, 0.0, 1.0).is_none());
+    }
+
+    #[test]
+    fn iso_zeta_span_is_the_part_inside_the_map() {
+        // ζ = 0.5, m = 300: c = √(300·k); c = 500 at k = 833.3, c = 8 000 at k = 213 333.
+        let (ka, kb) = iso_zeta_span(0.5, 300.0, (10_000.0, 60_000.0), (500.0, 8_000.0)).unwrap();
+        assert_eq!((ka, kb), (10_000.0, 60_000.0));
+        // ζ = 0.2: c = 0.4·√(300·k) reaches c = 500 only at k = 5 208.3 (< k0), and c = 2 000 at
+        // k = 83 333.3 (> k1): the whole k range. With c1 = 2 000 and k1 = 100 000 it stops at
+        // k = (2 000/0.4)²/300.
+        let (_, kb) = iso_zeta_span(0.2, 300.0, (1_000.0, 100_000.0), (500.0, 2_000.0)).unwrap();
+        assert!((kb - 5_000.0f64.powi(2) / 300.0).abs() < 1e-9);
+        // ζ = 0.05 runs above the whole map: c = 0.1·√(300·k) ≤ 245 < c0 for k ≤ 20 000.
+        assert!(iso_zeta_span(0.05, 300.0, (10_000.0, 20_000.0), (500.0, 800.0)).is_none());
+    }
+
+    #[test]
+    fn rebound_from_rest_is_the_free_response_peak() {
+        // The closed form against the solver's exact free-response metrics (1e-12).
+        for zeta in [0.05, 0.2, 0.37, 0.7, 0.95] {
+            let sys = SecondOrder::from_natural(8.0, zeta).unwrap();
+            let m = FreeMetrics::exact(&sys, 0.06, 0.0, SettlingBand::FREE_DEFAULT).unwrap();
+            let expect = rebound_from_rest(zeta).unwrap();
+            assert!((m.peak_rebound - expect).abs() < 1e-12, "ζ = {zeta}");
+        }
+        // Undamped: it swings back to −x₀, a full rebound.
+        assert_eq!(rebound_from_rest(0.0), Some(1.0));
+        // ζ = 0.5: e^{−π/√3} = 0.163 033.
+        assert!((rebound_from_rest(0.5).unwrap() - 0.163_033).abs() < 1e-6);
+        assert!(rebound_from_rest(1.0).is_none());
+        assert!(rebound_from_rest(-0.1).is_none());
+        assert!(rebound_from_rest(f64::NAN).is_none());
+    }
+
+    #[test]
+    fn road_classes_come_from_the_one_iso_8608_table() {
+        // G_d(n0) of classes A–D: 16, 64, 256, 1 024 × 10⁻⁶ m³.
+        for (class, gd) in [
+            (IsoClass::A, 16e-6),
+            (IsoClass::B, 64e-6),
+            (IsoClass::C, 256e-6),
+            (IsoClass::D, 1024e-6),
+        ] {
+            let a = RoadInput::iso_class(class, 20.0, 60.0).unwrap();
+            let b = RoadInput::iso8608(gd, 20.0, 60.0).unwrap();
+            assert_eq!(a, b);
+        }
+        assert!(RoadInput::iso_class(IsoClass::A, 0.0, 60.0).is_err());
+    }
+
+    #[test]
+    fn the_nearest_front_point_is_measured_in_scaled_units() {
+        let f1 = [1.0, 2.0, 3.0];
+        let f2 = [30.0, 20.0, 10.0];
+        let front = pareto_front(&f1, &f2);
+        assert_eq!(
+            nearest_on_front(&front, &f1, &f2, (1.1, 30.0), (1.0, 1.0)),
+            Some(0)
+        );
+        // (2.9, 20): unscaled, point 1 is nearest; with f2 shrunk by 100, point 2 is.
+        assert_eq!(
+            nearest_on_front(&front, &f1, &f2, (2.9, 20.0), (1.0, 1.0)),
+            Some(1)
+        );
+        assert_eq!(
+            nearest_on_front(&front, &f1, &f2, (2.9, 20.0), (1.0, 100.0)),
+            Some(2)
+        );
+        assert_eq!(
+            nearest_on_front(&[], &f1, &f2, (0.0, 0.0), (1.0, 1.0)),
+            None
+        );
+        assert_eq!(
+            nearest_on_front(&[7], &f1, &f2, (0.0, 0.0), (1.0, 1.0)),
+            None
+        );
+    }
+}
+
+// ---------------------------------------------------------------- tolerance boxes
+
+mod tolerance_boxes {
+    use zeta_solver::design::sensitivity::{spread, tolerance_box, Components, Quantity, Varied};
+
+    const RLC: Components = Components::Electrical {
+        l: 0.5,
+        r: 7.0,
+        cap: 0.02,
+    };
+
+    #[test]
+    fn equal_tolerances_agree_with_spread() {
+        for q in Quantity::ALL {
+            let (lo, hi) = tolerance_box(&RLC, q, [0.1; 3]).unwrap();
+            let s = spread(&RLC, q, Varied::All, 0.1).unwrap();
+            assert!((lo.value - s.min).abs() <= 1e-12 * s.min.abs(), "{q:?}");
+            assert!((hi.value - s.max).abs() <= 1e-12 * s.max.abs(), "{q:?}");
+        }
+    }
+
+    #[test]
+    fn separate_tolerances_reach_the_analytic_corners() {
+        // ζ = (R/2)√(C/L): lowest at L(1 + dL), R(1 − dR), C(1 − dC), highest opposite.
+        let (lo, hi) = tolerance_box(&RLC, Quantity::DampingRatio, [0.05, 0.2, 0.1]).unwrap();
+        let z = |l: f64, r: f64, c: f64| r / 2.0 * (c / l).sqrt();
+        assert!((lo.value - z(0.525, 5.6, 0.018)).abs() < 1e-12);
+        assert!((hi.value - z(0.475, 8.4, 0.022)).abs() < 1e-12);
+        for (v, e) in lo.design.values().iter().zip([0.525, 5.6, 0.018]) {
+            assert!((v - e).abs() < 1e-12 * e);
+        }
+        for (v, e) in hi.design.values().iter().zip([0.475, 8.4, 0.022]) {
+            assert!((v - e).abs() < 1e-12 * e);
+        }
+        // ω_n = 1/√(LC) does not depend on R: its range ignores dR.
+        let (wlo, whi) = tolerance_box(&RLC, Quantity::NaturalFrequency, [0.05, 0.2, 0.1]).unwrap();
+        assert!((wlo.value - 1.0 / (0.525f64 * 0.022).sqrt()).abs() < 1e-12);
+        assert!((whi.value - 1.0 / (0.475f64 * 0.018).sqrt()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_zero_tolerance_holds_a_component_and_invalid_ones_are_none() {
+        let (lo, hi) = tolerance_box(&RLC, Quantity::DampingRatio, [0.0; 3]).unwrap();
+        assert_eq!(lo.value, hi.value);
+        assert_eq!(lo.design, RLC);
+        for bad in [1.0, -0.1, f64::NAN] {
+            assert!(tolerance_box(&RLC, Quantity::DampingRatio, [bad, 0.0, 0.0]).is_none());
+        }
+        let undamped = Components::Mechanical {
+            m: 1.0,
+            c: 0.0,
+            k: 1.0,
+        };
+        assert!(tolerance_box(&undamped, Quantity::QualityFactor, [0.1; 3]).is_none());
+    }
+}

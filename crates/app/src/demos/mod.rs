@@ -197,9 +197,11 @@ const REGISTRY: &[(&str, Factory)] = &[
     ("quarter-car-2dof", || {
         Box::new(quarter_car_2dof::QuarterCar2Dof::default())
     }),
-    ("design", || Box::new(design::DesignSpace::default())),
+    ("design", || {
+        Box::new(Typed::new(design::DesignSpace::default()))
+    }),
     ("uncertainty", || {
-        Box::new(uncertainty::Uncertainty::default())
+        Box::new(Typed::new(uncertainty::Uncertainty::default()))
     }),
     ("paper", || Box::new(Typed::new(paper::Paper))),
 ];

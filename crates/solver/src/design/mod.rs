@@ -7,6 +7,7 @@
 //! assert!((best.zeta - 0.690).abs() < 0.01);
 //! ```
 
+pub mod map;
 pub mod monte_carlo;
 pub mod pareto;
 pub mod rng;

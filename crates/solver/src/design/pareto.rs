@@ -56,6 +56,30 @@ pub fn pareto_front_into(f1: &[f64], f2: &[f64], out: &mut Vec<usize>) {
     });
 }
 
+/// The point of `front` (indices into `f1`, `f2`) nearest `(x, y)` when distances along
+/// each objective are divided by `scale = (s1, s2)` (e.g. the plotted spans, so "nearest"
+/// means nearest on screen): the index minimising `((f1 − x)/s1)² + ((f2 − y)/s2)²`.
+/// Scales below 1e-12 count as 1e-12. `None` when no front point is finite.
+pub fn nearest_on_front(
+    front: &[usize],
+    f1: &[f64],
+    f2: &[f64],
+    (x, y): (f64, f64),
+    scale: (f64, f64),
+) -> Option<usize> {
+    let (s1, s2) = (scale.0.max(1e-12), scale.1.max(1e-12));
+    front
+        .iter()
+        .filter_map(|&i| {
+            let dx = (*f1.get(i)? - x) / s1;
+            let dy = (*f2.get(i)? - y) / s2;
+            let d = dx * dx + dy * dy;
+            d.is_finite().then_some((i, d))
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(i, _)| i)
+}
+
 /// Whether `(a1, a2)` dominates `(b1, b2)` for minimised objectives.
 pub fn dominates(a1: f64, a2: f64, b1: f64, b2: f64) -> bool {
     a1 <= b1 && a2 <= b2 && (a1 < b1 || a2 < b2)

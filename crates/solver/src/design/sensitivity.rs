@@ -188,25 +188,14 @@ pub fn spread(
         return None;
     }
     let nominal = quantity.of(&design.system().ok()?)?;
-    let base = design.values();
     let mask = match varied {
         Varied::One(p) if p < 3 => [p == 0, p == 1, p == 2],
         Varied::One(_) => return None,
         Varied::All => [true; 3],
     };
-    let (mut min, mut max) = (nominal, nominal);
-    for corner in 0..8u32 {
-        let mut v = base;
-        for (i, (vi, &on)) in v.iter_mut().zip(&mask).enumerate() {
-            if on {
-                let sign = if corner >> i & 1 == 1 { 1.0 } else { -1.0 };
-                *vi *= 1.0 + sign * tolerance;
-            }
-        }
-        let q = quantity.of(&design.with_values(v).system().ok()?)?;
-        min = min.min(q);
-        max = max.max(q);
-    }
+    let tolerances = mask.map(|on| if on { tolerance } else { 0.0 });
+    let (lo, hi) = tolerance_box(design, quantity, tolerances)?;
+    let (min, max) = (nominal.min(lo.value), nominal.max(hi.value));
     let mut sum = 0.0;
     for (p, &on) in mask.iter().enumerate() {
         if on {
@@ -220,6 +209,64 @@ pub fn spread(
         linear_min: nominal * (1.0 - sum * tolerance),
         linear_max: nominal * (1.0 + sum * tolerance),
     })
+}
+
+/// One extreme of a quantity over a tolerance box: its value and the corner reaching it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Extreme {
+    /// The quantity's value at the corner.
+    pub value: f64,
+    /// The design at that corner.
+    pub design: Components,
+}
+
+/// Exact `(min, max)` of `quantity` when each component `p_i` (in the order of
+/// [`Components::values`]) takes any value in `[p_i·(1 − x_i), p_i·(1 + x_i)]`, with its own
+/// tolerance `x_i = tolerances[i]` (a fraction, `0 ≤ x_i < 1`; 0 holds a component fixed).
+///
+/// Each quantity is a product of powers of the components (module docs), so monotone in
+/// each, and its extremes over the box lie at corners: all `2³` corners
+/// `p_i·(1 ± x_i)` are evaluated exactly and the lowest and highest returned with the
+/// corner designs. With equal tolerances this is [`spread`]'s exact range.
+///
+/// `None` for a tolerance outside `[0, 1)` (or NaN), or when the quantity is undefined at
+/// a corner (e.g. Q with no damping).
+///
+/// ```
+/// use zeta_solver::design::sensitivity::{tolerance_box, Components, Quantity};
+/// // ζ = (R/2)·√(C/L) is lowest at R(1 − dR), C(1 − dC), L(1 + dL).
+/// let rlc = Components::Electrical { l: 0.5, r: 7.0, cap: 0.02 };
+/// let (lo, _) = tolerance_box(&rlc, Quantity::DampingRatio, [0.05, 0.2, 0.1]).unwrap();
+/// assert!((lo.value - 2.8 * (0.018f64 / 0.525).sqrt()).abs() < 1e-12);
+/// ```
+pub fn tolerance_box(
+    design: &Components,
+    quantity: Quantity,
+    tolerances: [f64; 3],
+) -> Option<(Extreme, Extreme)> {
+    if !tolerances.iter().all(|x| (0.0..1.0).contains(x)) {
+        return None;
+    }
+    let base = design.values();
+    let mut lo: Option<Extreme> = None;
+    let mut hi: Option<Extreme> = None;
+    for corner in 0..8u32 {
+        let mut v = base;
+        for (i, (vi, x)) in v.iter_mut().zip(tolerances).enumerate() {
+            let sign = if corner >> i & 1 == 1 { 1.0 } else { -1.0 };
+            *vi *= 1.0 + sign * x;
+        }
+        let d = design.with_values(v);
+        let value = quantity.of(&d.system().ok()?)?;
+        let e = Extreme { value, design: d };
+        if lo.is_none_or(|l| value < l.value) {
+            lo = Some(e);
+        }
+        if hi.is_none_or(|h| value > h.value) {
+            hi = Some(e);
+        }
+    }
+    lo.zip(hi)
 }
 
 #[cfg(test)]

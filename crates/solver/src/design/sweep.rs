@@ -36,6 +36,7 @@ use crate::error::{positive, ModelError};
 use crate::metrics::free::{FreeShape, Settling};
 use crate::metrics::SettlingBand;
 use crate::model::SecondOrder;
+use crate::two_dof::IsoClass;
 
 /// Initial condition, natural frequency and band for sweeps over ζ.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -240,6 +241,12 @@ impl RoadInput {
         )
     }
 
+    /// [`RoadInput::iso8608`] for an ISO 8608 class, with the class's `G_d(n0)` from
+    /// [`IsoClass::g_d_n0`] (the one table of road classes).
+    pub fn iso_class(class: IsoClass, speed: f64, cutoff: f64) -> Result<Self, ModelError> {
+        Self::iso8608(class.g_d_n0(), speed, cutoff)
+    }
+
     /// Intensity `q` \[m²/s\].
     pub fn intensity(&self) -> f64 {
         self.q
@@ -398,6 +405,38 @@ pub fn iso_zeta_line_into(zeta: f64, mass: f64, k_axis: &[f64], c_out: &mut [f64
             f64::NAN
         };
     }
+}
+
+/// Spring rate \[N/m\] on the iso-ζ line through damper rate `c` \[N·s/m\]: the inverse
+/// of [`iso_zeta_line_into`], `k = (c/(2ζ))²/m`. `None` unless `ζ > 0`, `m > 0` and the
+/// result is finite.
+pub fn iso_zeta_stiffness(zeta: f64, mass: f64, c: f64) -> Option<f64> {
+    let half = c / (2.0 * zeta);
+    let k = half * half / mass;
+    (zeta > 0.0 && mass > 0.0 && k.is_finite()).then_some(k)
+}
+
+/// The part of the iso-ζ line `c = 2ζ√(km)` inside the map `k ∈ [k0, k1]`, `c ∈ [c0, c1]`:
+/// the spring-rate interval `(max(k0, k(c0)), min(k1, k(c1)))` \[N/m\], with `k(c)` from
+/// [`iso_zeta_stiffness`]. `None` when the line misses the map.
+pub fn iso_zeta_span(
+    zeta: f64,
+    mass: f64,
+    (k0, k1): (f64, f64),
+    (c0, c1): (f64, f64),
+) -> Option<(f64, f64)> {
+    let ka = iso_zeta_stiffness(zeta, mass, c0)?.max(k0);
+    let kb = iso_zeta_stiffness(zeta, mass, c1)?.min(k1);
+    (ka < kb).then_some((ka, kb))
+}
+
+/// Peak rebound of a release from rest (`x₀ ≠ 0`, `v₀ = 0`) as a fraction of `x₀` \[-\]:
+/// `e^(−πζ/√(1−ζ²))` for `0 ≤ ζ < 1`, the textbook step overshoot, reached at `t = π/ω_d`.
+/// `None` outside `[0, 1)` (no rebound when critically or over-damped, growth below 0).
+pub fn rebound_from_rest(zeta: f64) -> Option<f64> {
+    (0.0..1.0)
+        .contains(&zeta)
+        .then(|| (-std::f64::consts::PI * zeta / (1.0 - zeta * zeta).sqrt()).exp())
 }
 
 #[cfg(test)]

@@ -1,0 +1,388 @@
+//! `design`: the (k, c) design space of a quarter car. A heat map of one metric (settling
+//! time, peak rebound, RMS body acceleration on a random road, peak transmissibility) over a
+//! grid of spring and damper rates, recomputed live as the sprung mass moves, with iso-ζ
+//! lines, the Pareto front of comfort against settling, and the chosen design's response.
+//!
+//! This file declares the demo and holds its model step (solver calls only) and the sweep
+//! cache; `figures.rs` builds the plots, `text.rs` holds the prose.
+
+mod cache;
+mod choices;
+mod figures;
+mod stopwatch;
+mod text;
+
+use cache::SweepKey;
+pub use choices::{Metric, Road};
+pub(crate) use stopwatch::Stopwatch;
+
+use super::Model;
+use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::figure::Figure;
+use crate::spec::{PlotSpec, Preset};
+use zeta_solver::design::map::lowest;
+use zeta_solver::design::pareto::nearest_on_front;
+use zeta_solver::design::sweep::{body_acceleration_rms, KcMaps, RoadInput};
+use zeta_solver::metrics::{free::FreeMetrics, SettlingBand};
+use zeta_solver::SecondOrder;
+
+/// Initial displacement of the shown response \[m\] (the map's metrics are relative to it).
+const X0: f64 = 0.06;
+/// Vehicle speed for the road input \[m/s\] (72 km/h).
+const SPEED: f64 = 20.0;
+/// The tyre's low-pass on the road input \[rad/s\]: about wheel hop, 10 Hz.
+const CUTOFF: f64 = std::f64::consts::TAU * 10.0;
+/// Map axes are in kN/m and kN·s/m so the tick labels stay short.
+const KILO: f64 = 1e3;
+
+/// Typed parameters, filled from the declaration.
+#[derive(Debug, Default, Clone, Copy, PartialEq)]
+pub struct P {
+    /// Sprung mass \[kg\].
+    m: f64,
+    metric: Metric,
+    /// Settling band \[% of x₀\].
+    band: f64,
+    road: Road,
+    /// Map edges: spring rates \[N/m\] and damper rates \[N·s/m\].
+    k_min: f64,
+    k_max: f64,
+    c_min: f64,
+    c_max: f64,
+    /// The selected design \[N/m\], \[N·s/m\].
+    k: f64,
+    c: f64,
+    /// Grid cells per axis.
+    n: usize,
+}
+
+impl P {
+    fn sweep_key(&self) -> Option<SweepKey> {
+        let key = SweepKey {
+            m: self.m,
+            band: self.band,
+            road: self.road,
+            k: (self.k_min, self.k_max),
+            c: (self.c_min, self.c_max),
+            n: self.n,
+        };
+        let ok = key.m > 0.0 && key.k.0 > 0.0 && key.k.1 > key.k.0 && key.c.0 > 0.0;
+        (ok && key.c.1 > key.c.0).then_some(key)
+    }
+
+    /// Whether the selected design lies on the map.
+    fn selected_inside(&self) -> bool {
+        let inside = |v: f64, lo: f64, hi: f64| v >= lo && v <= hi;
+        inside(self.k, self.k_min, self.k_max) && inside(self.c, self.c_min, self.c_max)
+    }
+}
+
+/// The selected design's figures of merit.
+struct Selected {
+    sys: Option<SecondOrder>,
+    zeta: Option<f64>,
+    settling_time: Option<f64>,
+    /// Peak rebound \[% of x₀\].
+    overshoot: Option<f64>,
+    accel_rms: Option<f64>,
+}
+
+/// What one step computes (the maps themselves stay in [`DesignSpace`]'s cache).
+pub struct Results {
+    /// The selected design \[N/m\], \[N·s/m\].
+    k: f64,
+    c: f64,
+    key: SweepKey,
+    band: SettlingBand,
+    sel: Selected,
+    /// `(k, c)` of the fastest-settling cell and its settling time \[s\].
+    fastest: Option<((f64, f64), SecondOrder, Option<f64>)>,
+    /// Axes of the Pareto plot: settling time \[s\] and RMS acceleration \[m/s²\].
+    pareto_ranges: ((f64, f64), (f64, f64)),
+    /// Duration of the last full sweep \[ms\] (wall clock).
+    sweep_ms: f64,
+}
+
+/// The design-space demo. Holds the sweep's buffers so a slider move reuses them.
+#[derive(Debug, Default)]
+pub struct DesignSpace {
+    k_axis: Vec<f64>,
+    c_axis: Vec<f64>,
+    maps: KcMaps,
+    key: Option<SweepKey>,
+    /// Duration of the last full sweep \[ms\].
+    sweep_ms: f64,
+    /// Number of sweeps performed (for tests of the cache).
+    sweeps: u64,
+    /// Grid indices on the Pareto front, by increasing settling time.
+    front: Vec<usize>,
+    /// Axes of the last Pareto plot, for picking the nearest front design.
+    pareto_ranges: ((f64, f64), (f64, f64)),
+}
+
+impl Model for DesignSpace {
+    type Params = P;
+    type Results = Results;
+
+    fn declare() -> Declaration<P, Results> {
+        let linear = Param::linear;
+        Declaration {
+            equation_mathml: text::EQUATION,
+            params: vec![
+                linear(
+                    "m",
+                    "sprung mass",
+                    "m",
+                    "kg",
+                    (100.0, 800.0, 1.0),
+                    300.0,
+                    |p, v| p.m = v,
+                ),
+                Param::choice("metric", "map metric", Metric::SettlingTime, |p, v| {
+                    p.metric = v
+                }),
+                linear(
+                    "band",
+                    "settling band, ± % of x₀ (free response)",
+                    "",
+                    "%",
+                    (1.0, 20.0, 0.5),
+                    5.0,
+                    |p, v| p.band = v,
+                ),
+                Param::choice("road", "road (ISO 8608)", Road::B, |p, v| p.road = v),
+                linear(
+                    "k_min",
+                    "map: lowest spring rate",
+                    "k_min",
+                    "N/m",
+                    (2_000.0, 30_000.0, 500.0),
+                    10_000.0,
+                    |p, v| p.k_min = v,
+                ),
+                linear(
+                    "k_max",
+                    "map: highest spring rate",
+                    "k_max",
+                    "N/m",
+                    (35_000.0, 150_000.0, 500.0),
+                    60_000.0,
+                    |p, v| p.k_max = v,
+                ),
+                linear(
+                    "c_min",
+                    "map: lowest damper rate",
+                    "c_min",
+                    "N·s/m",
+                    (100.0, 2_000.0, 50.0),
+                    500.0,
+                    |p, v| p.c_min = v,
+                ),
+                linear(
+                    "c_max",
+                    "map: highest damper rate",
+                    "c_max",
+                    "N·s/m",
+                    (2_500.0, 15_000.0, 100.0),
+                    8_000.0,
+                    |p, v| p.c_max = v,
+                ),
+                linear(
+                    "k",
+                    "selected spring rate",
+                    "k",
+                    "N/m",
+                    (2_000.0, 150_000.0, 100.0),
+                    24_000.0,
+                    |p, v| p.k = v,
+                ),
+                linear(
+                    "c",
+                    "selected damper rate",
+                    "c",
+                    "N·s/m",
+                    (100.0, 15_000.0, 10.0),
+                    2_000.0,
+                    |p, v| p.c = v,
+                ),
+                linear(
+                    "n",
+                    "grid cells per axis",
+                    "n",
+                    "",
+                    (20.0, 160.0, 1.0),
+                    100.0,
+                    |p, v| p.n = v.round().clamp(2.0, 400.0) as usize,
+                ),
+            ],
+            readouts: vec![
+                ReadoutDef::number("k", "selected spring rate k", "N/m", 4, |r| Some(r.k)),
+                ReadoutDef::number("c", "selected damper rate c", "N·s/m", 4, |r| Some(r.c)),
+                ReadoutDef::number("zeta", "damping ratio ζ", "", 3, |r| r.sel.zeta),
+                ReadoutDef::number(
+                    "settling_time",
+                    "settling time into the ± band of x₀ (free response)",
+                    "s",
+                    4,
+                    |r| r.sel.settling_time,
+                ),
+                ReadoutDef::number(
+                    "overshoot",
+                    "peak rebound, % of x₀ (free response)",
+                    "%",
+                    3,
+                    |r| r.sel.overshoot,
+                ),
+                // Plain: accelerations stay in m/s² (no "mm/s²").
+                ReadoutDef::plain("accel_rms", "RMS body acceleration", "m/s²", 3, |r| {
+                    r.sel.accel_rms
+                }),
+                ReadoutDef::formatted("grid_size", "grid size (cells)", "", |r| {
+                    let (n, cells) = (r.key.n, r.key.n * r.key.n);
+                    Some((cells as f64, format!("{n} × {n} = {cells}")))
+                }),
+                // Plain: the value is already in ms (an SI prefix would give "µms").
+                ReadoutDef::plain("compute_time", "sweep compute time", "ms", 3, |r| {
+                    Some(r.sweep_ms)
+                }),
+            ],
+            plots: vec![
+                PlotSpec {
+                    key: "map",
+                    title: figures::MAP_TITLE,
+                    aspect: 1.35,
+                },
+                PlotSpec {
+                    key: "pareto",
+                    title: figures::PARETO_TITLE,
+                    aspect: 1.35,
+                },
+                PlotSpec {
+                    key: "response",
+                    title: figures::RESPONSE_TITLE,
+                    aspect: 1.35,
+                },
+            ],
+            presets: presets(),
+            ..Declaration::new("design", "Design space (k, c)", text::SUMMARY)
+        }
+    }
+
+    fn step(&mut self, p: &P) -> Option<Results> {
+        let key = p.sweep_key()?;
+        let band = SettlingBand::new(p.band / 100.0).ok()?;
+        let road = RoadInput::iso_class(p.road.class(), SPEED, CUTOFF).ok()?;
+        self.sweep_if_needed(key, band, road);
+        let sys = SecondOrder::mechanical(p.m, p.c, p.k).ok();
+        let metrics = sys.and_then(|s| FreeMetrics::exact(&s, X0, 0.0, band));
+        let sel = Selected {
+            sys,
+            zeta: sys.and_then(|s| s.damping_ratio()),
+            settling_time: metrics.and_then(|m| m.settling_time),
+            overshoot: metrics.map(|m| 100.0 * m.peak_rebound),
+            accel_rms: body_acceleration_rms(p.m, p.c, p.k, &road),
+        };
+        let fastest = lowest(&self.maps.settling_time)
+            .and_then(|(i, _)| self.design_at(i))
+            .and_then(|(k, c)| {
+                let s = SecondOrder::mechanical(p.m, c, k).ok()?;
+                let ts = FreeMetrics::exact(&s, X0, 0.0, band).and_then(|m| m.settling_time);
+                Some(((k, c), s, ts))
+            });
+        self.pareto_ranges = figures::pareto_ranges(self, &sel);
+        Some(Results {
+            k: p.k,
+            c: p.c,
+            key,
+            band,
+            sel,
+            fastest,
+            pareto_ranges: self.pareto_ranges,
+            sweep_ms: self.sweep_ms,
+        })
+    }
+
+    fn figures(&self, p: &P, r: &Results) -> Vec<Figure> {
+        vec![
+            figures::map(self, p, r),
+            figures::pareto(self, p, r),
+            figures::response(p, r),
+        ]
+    }
+
+    fn pick(&mut self, plot: &str, x: f64, y: f64) -> Vec<(&'static str, f64)> {
+        let Some(key) = self.key else {
+            return Vec::new();
+        };
+        match plot {
+            "map" => {
+                let (k0, k1) = key.k;
+                let (c0, c1) = key.c;
+                let (x, y) = (x * KILO, y * KILO);
+                if !(x >= k0 && x <= k1 && y >= c0 && y <= c1) {
+                    return Vec::new();
+                }
+                // Round to 10 N/m and 1 N·s/m: finer than a cell, and tidy in the URL.
+                vec![("k", (x / 10.0).round() * 10.0), ("c", y.round().max(1.0))]
+            }
+            "pareto" => {
+                let ((x0, x1), (y0, y1)) = self.pareto_ranges;
+                let nearest = nearest_on_front(
+                    &self.front,
+                    &self.maps.settling_time,
+                    &self.maps.accel_rms,
+                    (x, y),
+                    (x1 - x0, y1 - y0),
+                );
+                match nearest.and_then(|i| self.design_at(i)) {
+                    Some((k, c)) => vec![("k", k), ("c", c)],
+                    None => Vec::new(),
+                }
+            }
+            _ => Vec::new(),
+        }
+    }
+}
+
+fn presets() -> Vec<Preset> {
+    vec![
+        Preset {
+            label: "Settling-time map, 300 kg, ζ ≈ 0.37",
+            values: vec![
+                ("m", 300.0),
+                ("metric", 0.0),
+                ("k", 24_000.0),
+                ("c", 2_000.0),
+            ],
+        },
+        Preset {
+            label: "Laden car 500 kg, same parts",
+            values: vec![
+                ("m", 500.0),
+                ("metric", 0.0),
+                ("k", 24_000.0),
+                ("c", 2_000.0),
+            ],
+        },
+        Preset {
+            label: "Comfort map on a class C road",
+            values: vec![("metric", 2.0), ("road", 2.0), ("m", 300.0)],
+        },
+        Preset {
+            label: "Peak-rebound map, ζ = 0.7 design",
+            values: vec![
+                ("metric", 1.0),
+                ("m", 300.0),
+                ("k", 24_000.0),
+                ("c", 3_760.0),
+            ],
+        },
+        Preset {
+            label: "Fine grid 160 × 160",
+            values: vec![("n", 160.0), ("metric", 0.0)],
+        },
+    ]
+}
+
+#[cfg(test)]
+mod tests;

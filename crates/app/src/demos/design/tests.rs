@@ -1,0 +1,139 @@
+//! The design demo's own behaviour; its numbers at the defaults and every preset are pinned
+//! by the snapshot tests (`crates/app/tests/snapshots.rs`).
+
+use super::figures::ISO_ZETAS;
+use super::*;
+use crate::demos::testing::{number, run as run_demo};
+use crate::demos::Frame;
+use crate::params::resolve_query;
+use zeta_solver::design::sweep::rebound_from_rest;
+
+fn run(query: &str) -> Frame {
+    run_demo("design", query)
+}
+
+/// One model step of `d` for `query`, as the page would run it.
+fn step(d: &mut DesignSpace, query: &str) -> (P, Results) {
+    let decl = DesignSpace::declare();
+    let (params, notices) = resolve_query(&decl.spec(), query);
+    assert!(notices.is_empty(), "{notices:?}");
+    let p = decl.read(&params);
+    let r = d.step(&p).expect("valid design");
+    (p, r)
+}
+
+#[test]
+fn readouts_are_the_selected_design_from_the_solver() {
+    let f = run("m=300&k=24000&c=2000");
+    let sys = SecondOrder::mechanical(300.0, 2000.0, 24_000.0).unwrap();
+    let zeta = sys.damping_ratio().unwrap();
+    assert_eq!(number(&f, "zeta"), zeta);
+    let m = FreeMetrics::exact(&sys, X0, 0.0, SettlingBand::FREE_DEFAULT).unwrap();
+    assert_eq!(number(&f, "settling_time"), m.settling_time.unwrap());
+    // Release from rest: the rebound is the textbook overshoot e^{−πζ/√(1−ζ²)}.
+    let rebound = 100.0 * rebound_from_rest(zeta).unwrap();
+    assert!((number(&f, "overshoot") - rebound).abs() < 1e-9);
+    assert_eq!(number(&f, "grid_size"), 10_000.0);
+    let map = f.figures[0].heatmap.as_ref().unwrap();
+    assert_eq!((map.nx, map.ny, map.values.len()), (100, 100, 10_000));
+    assert!(f.figures[0]
+        .description
+        .contains("into ±5 % of x₀, over k 10–60 kN/m"));
+}
+
+#[test]
+fn the_map_is_recomputed_only_when_its_inputs_change() {
+    let mut d = DesignSpace::default();
+    step(&mut d, "k=24000");
+    step(&mut d, "k=30000&c=3000");
+    step(&mut d, "k=30000&c=3000&metric=accel_rms");
+    assert_eq!(d.sweeps, 1, "selection and metric reuse the sweep");
+    step(&mut d, "m=400");
+    step(&mut d, "m=400&n=40");
+    assert_eq!(d.sweeps, 3);
+    assert_eq!(d.maps.zeta.len(), 1600);
+}
+
+#[test]
+fn the_map_cells_hold_the_solver_metrics_at_their_centres() {
+    let f = run("n=20&metric=peak_rebound");
+    let map = f.figures[0].heatmap.as_ref().unwrap();
+    // Cell (ix, iy) = (3, 7): k = 10 000 + 3.5·2 500, c = 500 + 7.5·375.
+    let sys = SecondOrder::mechanical(300.0, 3_312.5, 18_750.0).unwrap();
+    let expect = 100.0 * rebound_from_rest(sys.damping_ratio().unwrap()).unwrap();
+    assert!((map.values[7 * 20 + 3] - expect).abs() < 1e-9);
+}
+
+#[test]
+fn clicking_picks_a_design_and_the_front_is_non_dominated() {
+    let mut d = DesignSpace::default();
+    step(&mut d, "");
+    assert_eq!(
+        d.pick("map", 31.234, 4.3214),
+        vec![("k", 31_230.0), ("c", 4_321.0)]
+    );
+    assert!(d.pick("map", 70.0, 4.0).is_empty(), "outside the map");
+    assert!(d.pick("response", 1.0, 0.0).is_empty());
+    assert!(d.front.len() > 3);
+    let (ts, acc) = (&d.maps.settling_time, &d.maps.accel_rms);
+    for w in d.front.windows(2) {
+        assert!(ts[w[0]] <= ts[w[1]] && acc[w[0]] >= acc[w[1]]);
+    }
+    // Picking next to the front's first point chooses that design.
+    let first = d.front[0];
+    let (t, a) = (ts[first], acc[first]);
+    let picked = d.pick("pareto", t, a);
+    let (k, c) = d.design_at(first).unwrap();
+    assert_eq!(picked, vec![("k", k), ("c", c)]);
+}
+
+#[test]
+fn iso_zeta_lines_lie_on_their_damping_ratio() {
+    let f = run("");
+    let map = &f.figures[0];
+    assert_eq!(map.series.len(), 5);
+    for (s, zeta) in map.series.iter().zip(ISO_ZETAS) {
+        let (k, c) = s.points[s.points.len() / 2];
+        let sys = SecondOrder::mechanical(300.0, c * KILO, k * KILO).unwrap();
+        assert!((sys.damping_ratio().unwrap() - zeta).abs() < 1e-9);
+    }
+    assert!(map.markers.iter().any(|m| m.label == "ζ=0.7"));
+}
+
+#[test]
+fn the_road_class_scales_only_the_comfort_metric() {
+    // ISO 8608: each class has 4× the roughness of the one before, so 2× the RMS.
+    let b = run("road=b");
+    let c = run("road=c");
+    assert!((number(&c, "accel_rms") / number(&b, "accel_rms") - 2.0).abs() < 1e-12);
+    assert_eq!(number(&c, "settling_time"), number(&b, "settling_time"));
+}
+
+#[test]
+fn settling_and_rebound_labels_say_free_response_relative_to_x0() {
+    let spec = DesignSpace::declare().spec();
+    for key in ["settling_time", "overshoot"] {
+        let r = spec.readouts.iter().find(|r| r.key == key).unwrap();
+        assert!(
+            r.label.contains("x₀") && r.label.contains("free response"),
+            "{}",
+            r.label
+        );
+    }
+    let band = spec.param("band").unwrap();
+    assert!(band.label.contains("x₀") && band.label.contains("free response"));
+    let f = run("band=2");
+    assert!(f.figures[0].title.contains("±2 % of x₀"));
+    assert!(f.figures[2].description.contains("not a step"));
+    // The colour bar names its unit for every metric.
+    for (metric, unit) in [
+        ("settling_time", "[s]"),
+        ("peak_rebound", "[% of x₀]"),
+        ("accel_rms", "[m/s²]"),
+        ("peak_transmissibility", "[m/m]"),
+    ] {
+        let f = run(&format!("metric={metric}"));
+        let label = &f.figures[0].heatmap.as_ref().unwrap().label;
+        assert!(label.contains(unit), "{metric}: {label}");
+    }
+}

@@ -1,0 +1,66 @@
+//! The tolerance demo's Monte Carlo cache: the draws are repeated only when the design,
+//! tolerances, distribution, count or seed change (moving the spec or the histogram choice
+//! reuses them), and percentiles are computed once per run.
+
+use super::{Dist, HistOf, Stopwatch, Uncertainty};
+use crate::declare::Choice;
+use zeta_solver::design::monte_carlo::{percentiles_into, run_into, McConfig, Tolerance};
+use zeta_solver::design::sensitivity::Components;
+use zeta_solver::metrics::SettlingBand;
+
+/// Everything the Monte Carlo run depends on; it is repeated only when this changes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct McKey {
+    pub(super) design: Components,
+    /// Tolerance of each component, a fraction.
+    pub(super) tolerances: [f64; 3],
+    pub(super) dist: Dist,
+    pub(super) draws: usize,
+    pub(super) seed: u64,
+}
+
+impl Uncertainty {
+    pub(super) fn run_if_needed(&mut self, key: McKey) {
+        if self.key == Some(key) {
+            return;
+        }
+        let watch = Stopwatch::start();
+        let distribution = key.dist.distribution();
+        let cfg = McConfig {
+            design: key.design,
+            tolerances: key.tolerances.map(|fraction| Tolerance {
+                fraction,
+                distribution,
+            }),
+            draws: key.draws,
+            seed: key.seed,
+            band: SettlingBand::FREE_DEFAULT,
+        };
+        run_into(&cfg, &mut self.samples);
+        self.pct = [None; 5];
+        self.percentiles(HistOf::Zeta);
+        self.percentiles(HistOf::Q);
+        self.mc_ms = watch.elapsed_ms();
+        self.runs += 1;
+        self.key = Some(key);
+    }
+
+    /// `[p5, p95]` of a quantity over the current draws (cached per run).
+    pub(super) fn percentiles(&mut self, h: HistOf) -> [f64; 2] {
+        let i = h.index();
+        if let Some(Some(p)) = self.pct.get(i) {
+            return *p;
+        }
+        let mut out = [f64::NAN; 2];
+        percentiles_into(
+            h.data(&self.samples),
+            &[0.05, 0.95],
+            &mut self.scratch,
+            &mut out,
+        );
+        if let Some(slot) = self.pct.get_mut(i) {
+            *slot = Some(out);
+        }
+        out
+    }
+}
