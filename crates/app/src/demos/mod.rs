@@ -164,7 +164,9 @@ type Factory = fn() -> Box<dyn Demo>;
 /// (checked by the registry test).
 const REGISTRY: &[(&str, Factory)] = &[
     ("regimes", || Box::new(Typed::new(regimes::Regimes))),
-    ("quarter-car", || Box::new(quarter_car::QuarterCar::new())),
+    ("quarter-car", || {
+        Box::new(Typed::new(quarter_car::QuarterCar::new()))
+    }),
     ("rlc", || Box::new(rlc::Rlc)),
     ("analogy", || Box::new(analogy::Analogy)),
     ("resonance", || Box::new(resonance::Resonance::default())),
