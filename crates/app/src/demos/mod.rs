@@ -169,7 +169,9 @@ const REGISTRY: &[(&str, Factory)] = &[
     }),
     ("rlc", || Box::new(rlc::Rlc)),
     ("analogy", || Box::new(analogy::Analogy)),
-    ("resonance", || Box::new(resonance::Resonance::default())),
+    ("resonance", || {
+        Box::new(Typed::new(resonance::Resonance::default()))
+    }),
     ("integrators", || Box::new(integrators::Integrators::new())),
     ("flutter", || Box::new(flutter::Flutter::default())),
     ("nonlinear", || Box::new(nonlinear::Nonlinear::default())),
