@@ -7,7 +7,7 @@ use crate::format::si;
 use crate::plot::{curve, Ink};
 use crate::schematic::{mass_spring_damper, MassLabels};
 
-pub(super) const SETTLING_TITLE: &str = "Settling time against ζ";
+pub(super) const SETTLING_TITLE: &str = "Free-response settling time against ζ";
 pub(super) const SENSITIVITY_TITLE: &str = "ζ when the sprung mass varies";
 
 /// Samples of the mass-sensitivity curve.
@@ -36,7 +36,7 @@ pub(super) fn settling(r: &Results) -> Figure {
     let band = text::pct(r.car.band_pct);
     // One curve, named by the axes and the title: no legend box to hide it.
     let mut fig = Figure::plot(
-        format!("Settling time into ±{band} against ζ"),
+        format!("Settling time into ±{band} of x₀ against ζ"),
         Axis::linear("damping ratio ζ", "", (0.0, r.sweep.z_hi)),
         Axis::linear("settling time t_s", "s", (0.0, y_top)),
     )

@@ -266,7 +266,7 @@ impl Model for QuarterCar {
                 ),
                 Param::linear(
                     "band",
-                    "settling band",
+                    "settling band around rest, relative to x₀",
                     "±",
                     "%",
                     (1.0, 20.0, 0.5),

@@ -24,16 +24,26 @@ pub(super) fn table() -> Vec<ReadoutDef<Results>> {
         ReadoutDef::number("wd", "damped frequency ω_d", "rad/s", 4, |r| {
             r.car.sys.damped_frequency()
         }),
-        ReadoutDef::number("settling_time", "settling time t_s", "s", 4, settling),
+        ReadoutDef::number(
+            "settling_time",
+            "settling time t_s into ±band·|x₀| (free response)",
+            "s",
+            4,
+            settling,
+        ),
         ReadoutDef::number("overshoot", "peak rebound (of x₀)", "%", 4, |r| {
             r.metrics.map(|m| 100.0 * m.peak_rebound)
         }),
         ReadoutDef::number("peak_time", "time of peak rebound", "s", 4, |r| {
             r.metrics.and_then(|m| m.rebound_time)
         }),
-        ReadoutDef::number("zeta_argmin", "fastest-settling ζ", "", 4, |r| {
-            r.optimum.map(|o| o.zeta)
-        }),
+        ReadoutDef::number(
+            "zeta_argmin",
+            "fastest-settling ζ (free response, same band)",
+            "",
+            4,
+            |r| r.optimum.map(|o| o.zeta),
+        ),
         ReadoutDef::number("settling_min", "its settling time", "s", 4, |r| {
             r.optimum.map(|o| o.settling_time)
         }),

@@ -95,7 +95,7 @@ pub(super) fn response(r: &Results) -> Figure {
     // Named under the lower band line, right of the middle: text hangs below its point, and
     // there the curves are back near rest.
     markers.push(Marker::text(
-        format!("±{} band", text::pct(car.band_pct)),
+        format!("±{} of x₀", text::pct(car.band_pct)),
         (0.62 * t_end, -h - 0.015 * span),
         Ink::Black,
     ));

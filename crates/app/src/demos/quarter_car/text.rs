@@ -15,7 +15,10 @@ pub(super) const SUMMARY: &str =
                       overdamped settings return without rebound but more slowly. Settling \
                       time jumps as ζ passes the values where a rebound drops inside the band: \
                       the fastest ζ sits just past such a jump, so a heavier load can push a \
-                      well-tuned car over the edge (see the mass strip).";
+                      well-tuned car over the edge (see the mass strip). Settling is measured on this free \
+                      response: the settling time is the last time |x| equals band·|x₀|, after \
+                      which the body stays within ±band·|x₀| of rest (not the band around the \
+                      final value of a step response).";
 
 pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mi>m</mi><mover><mi>x</mi><mo>¨</mo></mover><mo>+</mo><mi>c</mi><mover><mi>x</mi><mo>˙</mo></mover>\
@@ -59,7 +62,12 @@ pub(super) fn describe_response(r: &Results) -> String {
         Some(m) => {
             let settle = m
                 .settling_time
-                .map(|t| format!("stays within {band} of x₀ after {}", si(t, "s", 3)))
+                .map(|t| {
+                    format!(
+                        "stays within ±{band} of x₀ around rest after {}",
+                        si(t, "s", 3)
+                    )
+                })
                 .unwrap_or_else(|| "does not settle".to_string());
             let rebound = match m.rebound_time {
                 Some(t) => format!(
@@ -87,7 +95,7 @@ pub(super) fn describe_response(r: &Results) -> String {
     };
     let fam: Vec<String> = r.family.iter().map(describe_member).collect();
     format!(
-        "{now} Preset family on this car, settling into ±{band}: {}.",
+        "{now} Preset family on this car, settling into ±{band} of x₀: {}.",
         fam.join("; ")
     )
 }
@@ -105,12 +113,12 @@ pub(super) fn describe_settling(r: &Results) -> String {
     let zeta = r.car.zeta();
     let mut description = match r.optimum {
         Some(o) => format!(
-            "Settling time into the ±{band} band against ζ for this car: fastest at ζ = {} \
-             ({}), just past a jump; it jumps down each time a rebound drops inside the band.",
+            "Free-response settling time into ±{band} of x₀ against ζ for this car: fastest \
+             at ζ = {} ({}), just past a jump; it jumps down each time a rebound drops inside the band.",
             si(o.zeta, "", 3),
             si(o.settling_time, "s", 3)
         ),
-        None => format!("Settling time into the ±{band} band against ζ."),
+        None => format!("Free-response settling time into ±{band} of x₀ against ζ."),
     };
     description.push_str(&match r.metrics.and_then(|m| m.settling_time) {
         Some(ts) => format!(
