@@ -6,6 +6,9 @@
 //! the phase is the lag of the displacement behind the force. Here the half-power points
 //! are those of `|H|` (displacement); [`crate::SecondOrder::half_power_bandwidth`] is the
 //! velocity-resonance bandwidth `2ζω_n`, which the two agree on to first order in ζ.
+//! [`half_power_width`] is the two-sided width of the |H| peak (undefined once the lower
+//! point reaches `r = 0`); [`bandwidth`] continues it one-sided, and past `ζ = 1/√2` it is
+//! the −3 dB cut-off of a curve without a peak.
 //!
 //! ```
 //! use zeta_solver::frf;
@@ -162,6 +165,23 @@ pub fn half_power_points(zeta: f64) -> Option<HalfPowerPoints> {
 pub fn bandwidth(zeta: f64) -> Option<f64> {
     let p = half_power_points(zeta)?;
     Some(p.upper - p.lower.unwrap_or(0.0))
+}
+
+/// Width of the resonant peak of the displacement response between its two half-power
+/// points, `r₂ − r₁` \[-\], where `|H(r₁)| = |H(r₂)| = |H|max/√2` and `r₁ < r_p < r₂`:
+/// `r₁,₂² = 1 − 2ζ² ∓ 2ζ√(1 − ζ²)`. For light damping it is `2ζ + 2ζ³ + O(ζ⁵)` (so ≈ `1/Q`).
+///
+/// Defined only while the peak has both half-power points: `0 < ζ < sin(π/8) ≈ 0.3827`.
+/// Above that `|H|` stays above `|H|max/√2` all the way down to `r = 0` (the peak is
+/// one-sided), and above `ζ = 1/√2` there is no peak at all; `None` then, as for `ζ ≤ 0`.
+/// Unlike [`bandwidth`], which continues past `ζ = 0.3827` with `r₁ = 0` (and becomes the
+/// −3 dB cut-off of a low-pass curve past `1/√2`), this is always a two-sided peak width.
+pub fn half_power_width(zeta: f64) -> Option<f64> {
+    let p = half_power_points(zeta)?;
+    if 2.0 * zeta * zeta >= 1.0 {
+        return None;
+    }
+    p.lower.filter(|&l| l > 0.0).map(|lower| p.upper - lower)
 }
 
 /// Half-power bandwidth in rad/s, `ω_n·(r_upper − r_lower)`, for a natural frequency

@@ -232,3 +232,48 @@ fn stretched_logspace_ends_exactly_and_crowds_at_the_centre() {
     assert!(frf::stretched_logspace(0.1, 10.0, 5, -1.0).is_err());
     assert!(frf::stretched_logspace(0.1, 10.0, 5, f64::NAN).is_err());
 }
+
+#[test]
+fn half_power_width_is_two_sided_and_undefined_without_a_lower_point() {
+    for &z in &[0.001, 0.01, 0.05, 0.1, 0.2, 0.3, 0.38] {
+        let w = frf::half_power_width(z).unwrap();
+        let s = (1.0f64 - z * z).sqrt();
+        let (hi, lo) = (
+            (1.0 - 2.0 * z * z + 2.0 * z * s).sqrt(),
+            (1.0 - 2.0 * z * z - 2.0 * z * s).sqrt(),
+        );
+        assert!((w - (hi - lo)).abs() < 1e-12, "ζ = {z}");
+        // Both ends sit at the peak gain over √2.
+        let level = frf::peak(z).unwrap().gain * FRAC_1_SQRT_2;
+        for r in [lo, hi] {
+            assert!(
+                (frf::magnitude(r, z) / level - 1.0).abs() < 1e-9,
+                "ζ = {z}, r = {r}"
+            );
+        }
+        // 2ζ + 2ζ³ + O(ζ⁵): within 0.1·ζ³ of the two-term series up to ζ = 0.1.
+        if z <= 0.1 {
+            assert!(
+                (w - 2.0 * z - 2.0 * z.powi(3)).abs() < 0.1 * z.powi(3),
+                "ζ = {z}"
+            );
+        }
+        // Where both points exist it agrees with the continued `bandwidth`.
+        assert!((w - frf::bandwidth(z).unwrap()).abs() < 1e-15);
+    }
+    // One-sided peak (0.3827 < ζ < 1/√2), no peak (ζ ≥ 1/√2), no steady state (ζ ≤ 0).
+    for z in [
+        0.383,
+        0.5,
+        0.7,
+        FRAC_1_SQRT_2,
+        0.8,
+        2.0,
+        0.0,
+        -0.1,
+        f64::NAN,
+    ] {
+        assert_eq!(frf::half_power_width(z), None, "ζ = {z}");
+    }
+    assert!(frf::half_power_width(0.3826).is_some());
+}

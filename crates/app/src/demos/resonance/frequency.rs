@@ -90,22 +90,24 @@ pub(super) fn magnitude(res: &Results, grid: &[f64]) -> Figure {
             }
         }
     }
-    // Half-power band: the level peak/√2 between the two points (from r_min if no lower one).
+    // The half-power level |H|max/√2 between its crossings (from r_min if there is no lower
+    // one); without a peak, the −3 dB level of the static gain.
     let mut band_text = String::new();
     if let Some(h) = frf::half_power_points(z) {
         let lvl = level(top_gain * FRAC_1_SQRT_2, view);
         let lo = h.lower.unwrap_or(R_RANGE.0).max(R_RANGE.0);
         let hi = h.upper.min(R_RANGE.1);
-        let bw = frf::bandwidth(z).unwrap_or(f64::NAN);
+        let width = frf::half_power_width(z);
+        let has_peak = res.peak.is_some();
         series.push(Series::new(
-            format!("half-power band Δr = {}", text::fmt_ratio(bw)),
+            text::band_legend(&h, width, has_peak),
             vec![(lo, lvl), (hi, lvl)],
             LineStyle::dashed(Ink::Purple, 2.0),
         ));
         for r in h.lower.into_iter().chain([h.upper]) {
             markers.push(Marker::cross("", (r, lvl), Ink::Purple));
         }
-        band_text = text::describe_band(&h, bw);
+        band_text = text::describe_band(&h, width, has_peak);
     }
     let mut cur = sampled(grid, |r| gain(r, z, view));
     clip_above(&mut cur, top);

@@ -251,9 +251,13 @@ fn readouts() -> Vec<ReadoutDef<Results>> {
         ReadoutDef::number("Q", "quality factor Q = 1/(2ζ)", "", 4, |r| {
             frf::quality_factor(r.p.zeta)
         }),
-        ReadoutDef::number("bandwidth", "half-power bandwidth Δr", "", 4, |r| {
-            frf::bandwidth(r.p.zeta)
-        }),
+        ReadoutDef::number(
+            "peak_width",
+            "half-power width of the |H| peak r₂ − r₁ (ζ < 0.383)",
+            "",
+            4,
+            |r| frf::half_power_width(r.p.zeta),
+        ),
         ReadoutDef::number("gain_at_r", "gain |H(r)| at the drive", "", 4, |r| {
             Some(frf::magnitude(r.p.r, r.p.zeta))
         }),
@@ -269,11 +273,14 @@ fn readouts() -> Vec<ReadoutDef<Results>> {
         ),
         ReadoutDef::number(
             "beat_period",
-            "beat period 2π/|ω − ω_d|",
+            "beat period 2π/|ω − ω_d| (while beats show)",
             "s",
             4,
-            |r| r.resp.beat_period(),
+            |r| r.resp.beats().period(),
         ),
+        ReadoutDef::text("beats", "beats in x(t)", |r| {
+            text::beats(r.resp.beats()).to_string()
+        }),
     ]
 }
 

@@ -39,7 +39,7 @@ fn readouts_match_the_closed_forms() {
     assert!(close(number(&f, "amplitude"), 100.0 / 36.0, 1e-9));
     let s = (1.0f64 - z * z).sqrt();
     let bw = (1.0 - 2.0 * z * z + 2.0 * z * s).sqrt() - (1.0 - 2.0 * z * z - 2.0 * z * s).sqrt();
-    assert!(close(number(&f, "bandwidth"), bw, 1e-9));
+    assert!(close(number(&f, "peak_width"), bw, 1e-9));
 }
 
 #[test]
@@ -48,8 +48,12 @@ fn no_peak_above_one_over_root_two() {
     assert_eq!(value(&f, "peak_gain"), "");
     assert_eq!(value(&f, "peak_ratio"), "");
     assert_eq!(testing::text(&f, "peak_gain"), "—");
-    assert!(!value(&f, "bandwidth").is_empty());
-    assert!(f.figures[0].description.contains("no resonant peak"));
+    assert_eq!(value(&f, "peak_width"), "", "no peak, no peak width");
+    let d = &f.figures[0].description;
+    assert!(
+        d.contains("no resonant peak") && d.contains("cut-off r = 0.871"),
+        "{d}"
+    );
 }
 
 #[test]
@@ -122,4 +126,46 @@ fn schematic_draws_the_force_and_stays_finite() {
             assert!(fig.description.contains("force"));
         }
     }
+}
+
+#[test]
+fn the_half_power_width_is_two_sided_or_undefined() {
+    // Both half-power points exist below ζ = sin(π/8) ≈ 0.383.
+    let narrow = run("zeta=0.3");
+    assert!(!value(&narrow, "peak_width").is_empty());
+    assert!(narrow.figures[0].description.contains("peak width r₂ − r₁"));
+    // Above it the peak is one-sided: |H| stays above |H|max/√2 down to r = 0.
+    let broad = run("zeta=0.5");
+    assert!(!value(&broad, "peak_gain").is_empty(), "still a peak");
+    assert_eq!(value(&broad, "peak_width"), "");
+    let d = &broad.figures[0].description;
+    assert!(d.contains("no lower half-power point"), "{d}");
+    let legend: Vec<&str> = broad.figures[0]
+        .series
+        .iter()
+        .map(|s| s.label.as_str())
+        .collect();
+    assert!(legend
+        .iter()
+        .any(|l| l.starts_with("|H| ≥ |H|max/√2 up to r = ")));
+}
+
+#[test]
+fn no_beat_period_where_no_beat_shows() {
+    // At resonance the amplitude builds up: the would-be period 2π/|ω − ω_d| (209 s here)
+    // is far longer than the transient lasts.
+    let at = run("zeta=0.1&r=1");
+    assert_eq!(value(&at, "beat_period"), "");
+    assert_eq!(testing::text(&at, "beat_period"), "—");
+    assert!(value(&at, "beats").starts_with("none: the free motion dies out"));
+    // Far off resonance the "beat" is as fast as the motion.
+    assert!(value(&run("zeta=0.1&r=0.2"), "beats").starts_with("none: the modulation"));
+    // Near resonance with light damping the beats show.
+    let near = run("zeta=0.01&r=0.9");
+    assert_eq!(value(&near, "beats"), "visible");
+    assert!(number(&near, "beat_period") > 0.0);
+    assert_eq!(
+        value(&run("zeta=1.5&r=0.9"), "beats"),
+        "none: no free oscillation (ζ ≥ 1)"
+    );
 }

@@ -2,8 +2,7 @@
 
 use super::{Results, View, P};
 use crate::format::si;
-use std::f64::consts::TAU;
-use zeta_solver::forced::HarmonicResponse;
+use zeta_solver::forced::{Beats, HarmonicResponse};
 use zeta_solver::frf::{self, HalfPowerPoints};
 use zeta_solver::grid::decibels;
 
@@ -12,10 +11,13 @@ pub(super) const SUMMARY: &str =
                       driven from t = 0 by F(t) = F₀·cos(ωt). In the steady state it moves at the \
                       drive frequency with amplitude |H(r)|·F₀/k, lagging the force by the phase \
                       of H, where r = ω/ωₙ. Light damping gives a tall, narrow peak near r = 1 \
-                      (height ≈ Q = 1/(2ζ), half-power width ≈ 2ζ); above ζ = 1/√2 there is no \
-                      peak at all. Driven exactly at resonance, the amplitude builds up over a \
-                      few time constants 1/(ζωₙ); driven near it, the free and forced motions \
-                      beat against each other until the free part dies away.";
+                      (height ≈ Q = 1/(2ζ)). Its half-power width, r₂ − r₁ between the two \
+                      frequency ratios where |H| = |H|max/√2, is ≈ 2ζ for light damping; above \
+                      ζ ≈ 0.383 the lower point reaches r = 0 and the width is undefined, and \
+                      above ζ = 1/√2 there is no peak at all. Driven exactly at resonance, the \
+                      amplitude builds up over a few time constants 1/(ζωₙ) without beating; \
+                      driven near it, the free and forced motions beat against each other \
+                      until the free part dies away.";
 
 pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mi>m</mi><mover><mi>x</mi><mo>¨</mo></mover><mo>+</mo><mi>c</mi><mover><mi>x</mi><mo>˙</mo></mover>\
@@ -35,19 +37,47 @@ pub(super) fn fmt_ratio(r: f64) -> String {
     }
 }
 
-/// The half-power band in words.
-pub(super) fn describe_band(h: &HalfPowerPoints, bw: f64) -> String {
-    match h.lower {
-        Some(l) => format!(
-            "half-power points at r = {} and {} (bandwidth {})",
+/// The half-power points of the |H| curve in words: the two-sided peak width, the
+/// one-sided band of a broad peak, or the −3 dB cut-off when there is no peak.
+pub(super) fn describe_band(h: &HalfPowerPoints, width: Option<f64>, has_peak: bool) -> String {
+    match (h.lower, width) {
+        (Some(l), Some(w)) => format!(
+            "half-power points (|H| = |H|max/√2) at r = {} and {}: peak width r₂ − r₁ = {}",
             fmt_ratio(l),
             fmt_ratio(h.upper),
-            fmt_ratio(bw)
+            fmt_ratio(w)
         ),
-        None => format!(
-            "|H| stays above the half-power level from r = 0 up to r = {}",
+        _ if has_peak => format!(
+            "|H| stays above |H|max/√2 from r = 0 up to r = {}: the peak has no lower \
+             half-power point, so its half-power width is undefined",
             fmt_ratio(h.upper)
         ),
+        _ => format!(
+            "|H| falls to 1/√2 of its static value (−3 dB) at the cut-off r = {}; without a \
+             peak there is no half-power width",
+            fmt_ratio(h.upper)
+        ),
+    }
+}
+
+/// The legend entry of the half-power level line.
+pub(super) fn band_legend(h: &HalfPowerPoints, width: Option<f64>, has_peak: bool) -> String {
+    match width {
+        Some(w) => format!("half-power width r₂ − r₁ = {}", fmt_ratio(w)),
+        None if has_peak => format!("|H| ≥ |H|max/√2 up to r = {}", fmt_ratio(h.upper)),
+        None => format!("−3 dB cut-off r = {}", fmt_ratio(h.upper)),
+    }
+}
+
+/// Whether beats show in x(t), and if not why (see [`Beats`]).
+pub(super) fn beats(b: Beats) -> &'static str {
+    match b {
+        Beats::Visible { .. } => "visible",
+        Beats::NoFreeOscillation => "none: no free oscillation (ζ ≥ 1)",
+        Beats::NoDrive => "none: constant force",
+        Beats::SameFrequency => "none: driven at the free frequency ω_d",
+        Beats::TooFast { .. } => "none: the modulation is as fast as the oscillation",
+        Beats::DiesOut { .. } => "none: the free motion dies out within half a beat period",
     }
 }
 
@@ -109,12 +139,7 @@ pub(super) fn describe_time(p: &P, resp: &HarmonicResponse, t_end: f64, max_x: f
         );
     };
     let amp = si(s.amplitude, "m", 3);
-    let tn = TAU / p.wn;
-    let tf = TAU / (p.r * p.wn);
-    let beats = resp
-        .beat_period()
-        .filter(|&tb| tb > 4.0 * tn.max(tf) && tau > 0.5 * tb);
-    let body = if let Some(tb) = beats {
+    let body = if let Some(tb) = resp.beats().period() {
         format!(
             "the free and forced motions beat with period {} (time constant of the decay {}), \
              towards the steady amplitude {}",
