@@ -334,7 +334,7 @@ const JUMP_BISECTIONS: usize = 64;
 /// The settling time is a smooth function of ζ while the number of extrema of `x(t)` at
 /// `t > 0` outside the band stays the same, and jumps down where one of them drops inside
 /// the band. That count is evaluated at every grid point; between neighbours where it
-/// differs, the interval is bisected on the count ([`JUMP_BISECTIONS`] halvings, recursing
+/// differs, the interval is bisected on the count (64 halvings, recursing
 /// into both halves, so several jumps in one interval are each found) down to adjacent
 /// doubles. Each returned ζ is the first value on the far side of its jump, to within
 /// `1e-15·ζ`. For a release from rest (`v0 = 0`) the k-th extremum is `x0·e^{−kπζ/√(1−ζ²)}`
