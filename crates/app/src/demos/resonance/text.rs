@@ -73,11 +73,11 @@ pub(super) fn band_legend(h: &HalfPowerPoints, width: Option<f64>, has_peak: boo
 pub(super) fn beats(b: Beats) -> &'static str {
     match b {
         Beats::Visible { .. } => "visible",
-        Beats::NoFreeOscillation => "none: no free oscillation (ζ ≥ 1)",
-        Beats::NoDrive => "none: constant force",
-        Beats::SameFrequency => "none: driven at the free frequency ω_d",
-        Beats::TooFast { .. } => "none: the modulation is as fast as the oscillation",
-        Beats::DiesOut { .. } => "none: the free motion dies out within half a beat period",
+        Beats::NoFreeOscillation => "none (no free oscillation, ζ ≥ 1)",
+        Beats::NoDrive => "none (constant force)",
+        Beats::SameFrequency => "none (driven at ω_d)",
+        Beats::TooFast { .. } => "none (as fast as the oscillation)",
+        Beats::DiesOut { .. } => "none (the free motion dies out first)",
     }
 }
 
