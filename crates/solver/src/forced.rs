@@ -560,7 +560,7 @@ impl HarmonicResponse {
             return Beats::NoFreeOscillation;
         };
         let w = self.force.omega;
-        if !(w > 0.0) {
+        if w.is_nan() || w <= 0.0 {
             return Beats::NoDrive;
         }
         if w == wd {
@@ -568,11 +568,11 @@ impl HarmonicResponse {
         }
         let period = TAU / (w - wd).abs();
         let wn = self.sys.omega_n_squared().sqrt();
-        if !(period > 4.0 * TAU / wn.min(w)) {
+        if period.is_nan() || period <= 4.0 * TAU / wn.min(w) {
             return Beats::TooFast { period };
         }
         let alpha = self.sys.alpha();
-        if alpha > 0.0 && !(1.0 / alpha > 0.5 * period) {
+        if alpha > 0.0 && 1.0 / alpha <= 0.5 * period {
             return Beats::DiesOut {
                 period,
                 time_constant: 1.0 / alpha,
