@@ -337,6 +337,45 @@ enum Harmonic {
     Constant(StepResponse),
 }
 
+/// Whether a harmonic response shows beats (see [`HarmonicResponse::beats`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Beats {
+    /// Beats are visible, with this period `2π/|ω − ω_d|` \[s\].
+    Visible {
+        /// Beat period \[s\].
+        period: f64,
+    },
+    /// The system has no free oscillation (`ζ ≥ 1`, or no stiffness): nothing to beat with.
+    NoFreeOscillation,
+    /// The force is constant (`ω = 0`).
+    NoDrive,
+    /// The drive is at `ω_d` exactly: one frequency, no beat.
+    SameFrequency,
+    /// The modulation is not slow against the oscillations (period at most four periods
+    /// of the slower one): the sum reads as an irregular oscillation, not as beats.
+    TooFast {
+        /// What the beat period would be \[s\].
+        period: f64,
+    },
+    /// The transient decays before half a beat period has passed (`τ ≤ T_b/2`).
+    DiesOut {
+        /// What the beat period would be \[s\].
+        period: f64,
+        /// Time constant of the transient `1/α` \[s\].
+        time_constant: f64,
+    },
+}
+
+impl Beats {
+    /// The beat period \[s\] when beats are visible.
+    pub fn period(self) -> Option<f64> {
+        match self {
+            Beats::Visible { period } => Some(period),
+            _ => None,
+        }
+    }
+}
+
 /// Full response (transient + forced) to `F0·cos(ωt + φ)` applied from `t = 0` in state
 /// `(x0, v0)`. Continuous in `ω` and in `b`, including `ω → ω_n` with `b = 0`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -504,6 +543,42 @@ impl HarmonicResponse {
         let wd = self.sys.damped_frequency()?;
         let w = self.force.omega;
         (w > 0.0 && w != wd).then(|| TAU / (w - wd).abs())
+    }
+
+    /// Whether beats can be seen in this response, and their period when they can.
+    ///
+    /// The transient at `ω_d` and the forced motion at `ω` add to a slow modulation of
+    /// period `T_b = 2π/|ω − ω_d|` ([`Self::beat_period`]), but it shows as beats only when
+    /// (a) it is slow against both oscillations, `T_b > 4·2π/min(ω, ω_n)`, and (b) the
+    /// transient survives half a beat, i.e. its time constant `τ = 1/α = 1/(ζω_n)` exceeds
+    /// `T_b/2` (so its amplitude falls by less than a factor e before the first beat
+    /// minimum). At resonance (`ω = ω_n`, `ζ > 0`) `T_b = 2π/(ω_n(1 − √(1 − ζ²))) ≈
+    /// 4π/(ω_nζ²)` while `τ = 1/(ζω_n)`, so (b) fails for every `ζ < 1`: the amplitude builds
+    /// up without beating. Undamped and negatively damped systems (`α ≤ 0`) meet (b).
+    pub fn beats(&self) -> Beats {
+        let Some(wd) = self.sys.damped_frequency() else {
+            return Beats::NoFreeOscillation;
+        };
+        let w = self.force.omega;
+        if w.is_nan() || w <= 0.0 {
+            return Beats::NoDrive;
+        }
+        if w == wd {
+            return Beats::SameFrequency;
+        }
+        let period = TAU / (w - wd).abs();
+        let wn = self.sys.omega_n_squared().sqrt();
+        if period.is_nan() || period <= 4.0 * TAU / wn.min(w) {
+            return Beats::TooFast { period };
+        }
+        let alpha = self.sys.alpha();
+        if alpha > 0.0 && 1.0 / alpha <= 0.5 * period {
+            return Beats::DiesOut {
+                period,
+                time_constant: 1.0 / alpha,
+            };
+        }
+        Beats::Visible { period }
     }
 
     /// Slowly varying envelope `E(t) ≥ |x(t)|` for plots, `None` for systems that do not

@@ -6,6 +6,9 @@
 //! the phase is the lag of the displacement behind the force. Here the half-power points
 //! are those of `|H|` (displacement); [`crate::SecondOrder::half_power_bandwidth`] is the
 //! velocity-resonance bandwidth `2ζω_n`, which the two agree on to first order in ζ.
+//! [`half_power_width`] is the two-sided width of the |H| peak (undefined once the lower
+//! point reaches `r = 0`); [`bandwidth`] continues it one-sided, and past `ζ = 1/√2` it is
+//! the −3 dB cut-off of a curve without a peak.
 //!
 //! ```
 //! use zeta_solver::frf;
@@ -164,6 +167,23 @@ pub fn bandwidth(zeta: f64) -> Option<f64> {
     Some(p.upper - p.lower.unwrap_or(0.0))
 }
 
+/// Width of the resonant peak of the displacement response between its two half-power
+/// points, `r₂ − r₁` \[-\], where `|H(r₁)| = |H(r₂)| = |H|max/√2` and `r₁ < r_p < r₂`:
+/// `r₁,₂² = 1 − 2ζ² ∓ 2ζ√(1 − ζ²)`. For light damping it is `2ζ + 2ζ³ + O(ζ⁵)` (so ≈ `1/Q`).
+///
+/// Defined only while the peak has both half-power points: `0 < ζ < sin(π/8) ≈ 0.3827`.
+/// Above that `|H|` stays above `|H|max/√2` all the way down to `r = 0` (the peak is
+/// one-sided), and above `ζ = 1/√2` there is no peak at all; `None` then, as for `ζ ≤ 0`.
+/// Unlike [`bandwidth`], which continues past `ζ = 0.3827` with `r₁ = 0` (and becomes the
+/// −3 dB cut-off of a low-pass curve past `1/√2`), this is always a two-sided peak width.
+pub fn half_power_width(zeta: f64) -> Option<f64> {
+    let p = half_power_points(zeta)?;
+    if 2.0 * zeta * zeta >= 1.0 {
+        return None;
+    }
+    p.lower.filter(|&l| l > 0.0).map(|lower| p.upper - lower)
+}
+
 /// Half-power bandwidth in rad/s, `ω_n·(r_upper − r_lower)`, for a natural frequency
 /// `wn` \[rad/s\]. `None` for `ζ ≤ 0`, or when `wn` is not finite and positive.
 pub fn bandwidth_rad_s(zeta: f64, wn: f64) -> Option<f64> {
@@ -210,6 +230,37 @@ pub fn logspace_into(r_min: f64, r_max: f64, out: &mut [f64]) -> Result<(), Mode
         }
     }
     Ok(())
+}
+
+/// `n` frequency ratios from `r_min` to `r_max` (both included), symmetric in `log r` about
+/// the geometric mean `r_c = √(r_min·r_max)` and crowded there:
+/// `ln r_i = ln r_c + h·sinh(B·u_i)/sinh(B)` with `h = ½·ln(r_max/r_min)` and `u_i` evenly
+/// spaced over −1…1. The stretch `B > 0` sets the crowding: the spacing in `log r` at the
+/// centre is `B/sinh(B)` times that of [`logspace`] (≈ 0.067 for `B = 5`), so a narrow
+/// resonance peak at `r_c = 1` gets dozens of points while the ends stay covered; `B → 0`
+/// tends to [`logspace`]. Values are clamped into `[r_min, r_max]` against rounding.
+/// Errors unless both bounds are finite and positive and `B` is finite and positive;
+/// `n < 2` gives two points.
+pub fn stretched_logspace(
+    r_min: f64,
+    r_max: f64,
+    n: usize,
+    stretch: f64,
+) -> Result<Vec<f64>, ModelError> {
+    let lo = positive("lowest frequency ratio r_min", "(ratio)", r_min)?;
+    let hi = positive("highest frequency ratio r_max", "(ratio)", r_max)?;
+    let b = positive("grid stretch B", "", stretch)?;
+    let half = (hi / lo).ln() / 2.0;
+    let centre = (lo * hi).sqrt().ln();
+    let n = n.max(2);
+    let (lower, upper) = (lo.min(hi), lo.max(hi));
+    Ok((0..n)
+        .map(|i| {
+            let u = -1.0 + 2.0 * i as f64 / (n - 1) as f64;
+            (centre + half * (b * u).sinh() / b.sinh()).exp()
+        })
+        .map(|r| r.clamp(lower, upper))
+        .collect())
 }
 
 #[cfg(test)]

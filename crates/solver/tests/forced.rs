@@ -373,3 +373,51 @@ proptest! {
         prop_assert!((s(1.0) + s(2.5) - s(3.5)).abs() < 1e-12 * (1.0 + s(3.5).abs()));
     }
 }
+
+#[test]
+fn beats_are_visible_only_while_slow_and_lasting() {
+    use std::f64::consts::TAU;
+    use zeta_solver::forced::Beats;
+    let wn = 6.0;
+    let resp = |zeta: f64, r: f64| {
+        let sys = SecondOrder::from_natural(wn, zeta).unwrap();
+        HarmonicResponse::new(sys, HarmonicForce::new(10.0, r * wn).unwrap(), 0.0, 0.0)
+    };
+    // Light damping near resonance: beats of period 2π/|ω − ω_d|.
+    let wd = wn * (1.0f64 - 1e-4).sqrt();
+    let near = resp(0.01, 0.9);
+    assert_eq!(
+        near.beats(),
+        Beats::Visible {
+            period: TAU / (wd - 0.9 * wn)
+        }
+    );
+    assert_eq!(near.beats().period(), near.beat_period());
+    // At resonance the transient dies long before half a beat: 2π/(ω_n(1 − √(1 − ζ²)))
+    // against τ = 1/(ζω_n), for every damping ratio below 1 (heavier damping makes the
+    // "beat" too fast to be one as well).
+    assert!(matches!(resp(0.9, 1.0).beats(), Beats::TooFast { .. }));
+    for zeta in [0.001, 0.01, 0.1, 0.5] {
+        let b = resp(zeta, 1.0).beats();
+        match b {
+            Beats::DiesOut {
+                period,
+                time_constant,
+            } => {
+                let s = (1.0f64 - zeta * zeta).sqrt();
+                assert!((period - TAU / (wn * (1.0 - s))).abs() < 1e-9 * period);
+                assert!((time_constant - 1.0 / (zeta * wn)).abs() < 1e-12 * time_constant);
+            }
+            other => panic!("ζ = {zeta}: {other:?}"),
+        }
+        assert_eq!(b.period(), None);
+    }
+    // Far from resonance the "beat" is as fast as the oscillation itself.
+    assert!(matches!(resp(0.1, 0.2).beats(), Beats::TooFast { .. }));
+    assert!(matches!(resp(0.01, 3.0).beats(), Beats::TooFast { .. }));
+    assert_eq!(resp(1.5, 0.9).beats(), Beats::NoFreeOscillation);
+    // Undamped, driven exactly at ω_n: one frequency.
+    assert_eq!(resp(0.0, 1.0).beats(), Beats::SameFrequency);
+    // Undamped off resonance: the transient never dies, the beats last.
+    assert!(matches!(resp(0.0, 0.95).beats(), Beats::Visible { .. }));
+}

@@ -206,3 +206,49 @@ fn settling_time_is_finite_and_positive_across_ten_thousand_dampings() {
         assert!(ts.is_finite() && ts > 0.0, "ζ={zeta}: {ts}");
     }
 }
+
+#[test]
+fn settling_time_jumps_are_the_closed_form_zetas_from_rest() {
+    use zeta_solver::metrics::free::settling_time_jumps;
+    // From rest the k-th extremum is e^{−kπζ/√(1−ζ²)}; it meets the band b at
+    // ζ_k = L/√((kπ)² + L²), L = ln(1/b).
+    for &b in &[0.05, 0.02, 0.2] {
+        let band = SettlingBand::new(b).unwrap();
+        let zetas: Vec<f64> = (0..400).map(|i| 0.02 + 2.0 * i as f64 / 399.0).collect();
+        let jumps = settling_time_jumps(3.0, 0.06, 0.0, band, &zetas);
+        let l = (1.0 / b).ln();
+        let mut expect: Vec<f64> = (1..200)
+            .map(|k| l / ((k as f64 * PI).powi(2) + l * l).sqrt())
+            .filter(|z| (0.02..=2.02).contains(z))
+            .collect();
+        expect.reverse();
+        assert_eq!(jumps.len(), expect.len(), "band {b}: {jumps:?}");
+        for (j, e) in jumps.iter().zip(&expect) {
+            // Located to adjacent doubles; the closed form itself rounds at ~1e-15.
+            assert!((j - e).abs() < 1e-13 * e, "band {b}: {j} vs {e}");
+            // And the settling time really jumps there, by more than a tenth of a period.
+            let below = settling_time(&sys(j * (1.0 - 1e-9)), 1.0, 0.0, band).unwrap();
+            let above = settling_time(&sys(j * (1.0 + 1e-9)), 1.0, 0.0, band).unwrap();
+            assert!(below - above > 0.1 * PI / WN, "band {b} at ζ = {j}");
+        }
+    }
+}
+
+#[test]
+fn settling_time_jumps_find_every_jump_inside_one_coarse_interval() {
+    use zeta_solver::metrics::free::settling_time_jumps;
+    let band = SettlingBand::FREE_DEFAULT;
+    let fine: Vec<f64> = (0..2000).map(|i| 0.05 + 0.9 * i as f64 / 1999.0).collect();
+    let coarse = [0.05, 0.95];
+    for &(x0, v0) in &[(1.0, 0.0), (-0.3, 1.2)] {
+        let a = settling_time_jumps(WN, x0, v0, band, &fine);
+        let b = settling_time_jumps(WN, x0, v0, band, &coarse);
+        assert!(a.len() >= 3, "{a:?}");
+        assert_eq!(a.len(), b.len());
+        for (x, y) in a.iter().zip(&b) {
+            assert!((x - y).abs() < 1e-13 * x, "{x} vs {y}");
+        }
+    }
+    assert!(settling_time_jumps(WN, 1.0, 0.0, band, &[0.5]).is_empty());
+    assert!(settling_time_jumps(WN, 1.0, 0.0, band, &[-0.5, 0.0]).is_empty());
+}

@@ -200,3 +200,80 @@ proptest! {
         prop_assert!(frf::magnitude(r, z) <= g * (1.0 + 1e-14));
     }
 }
+
+#[test]
+fn stretched_logspace_ends_exactly_and_crowds_at_the_centre() {
+    let g = frf::stretched_logspace(0.1, 10.0, 801, 5.0).unwrap();
+    assert_eq!(g.len(), 801);
+    assert!((g[0] - 0.1).abs() < 1e-15 && (g[800] - 10.0).abs() < 1e-14);
+    assert!(g.windows(2).all(|w| w[1] > w[0]));
+    // Symmetric in log r about r = 1: r_i·r_{n−1−i} = 1.
+    for i in 0..401 {
+        assert!((g[i] * g[800 - i] - 1.0).abs() < 1e-13, "{i}");
+    }
+    assert!((g[400] - 1.0).abs() < 1e-15);
+    // Spacing in ln r at the centre: h·sinh(B·Δu)/sinh(B) with h = ln 10, Δu = 1/400,
+    // i.e. about B/sinh B times the even spacing.
+    let centre = g[401].ln() - g[400].ln();
+    let expect = 10f64.ln() * (5.0f64 / 400.0).sinh() / 5f64.sinh();
+    assert!(
+        (centre - expect).abs() < 1e-12 * expect,
+        "{centre} vs {expect}"
+    );
+    let near = g.iter().filter(|r| (**r - 1.0).abs() < 0.01).count();
+    assert!(near >= 30, "{near} points within ±0.01 of r = 1");
+    // A small stretch tends to the plain log grid.
+    let flat = frf::stretched_logspace(0.1, 10.0, 5, 1e-6).unwrap();
+    let log = frf::logspace(0.1, 10.0, 5).unwrap();
+    for (a, b) in flat.iter().zip(&log) {
+        assert!((a - b).abs() < 1e-9 * b);
+    }
+    assert!(frf::stretched_logspace(0.0, 10.0, 5, 5.0).is_err());
+    assert!(frf::stretched_logspace(0.1, 10.0, 5, -1.0).is_err());
+    assert!(frf::stretched_logspace(0.1, 10.0, 5, f64::NAN).is_err());
+}
+
+#[test]
+fn half_power_width_is_two_sided_and_undefined_without_a_lower_point() {
+    for &z in &[0.001, 0.01, 0.05, 0.1, 0.2, 0.3, 0.38] {
+        let w = frf::half_power_width(z).unwrap();
+        let s = (1.0f64 - z * z).sqrt();
+        let (hi, lo) = (
+            (1.0 - 2.0 * z * z + 2.0 * z * s).sqrt(),
+            (1.0 - 2.0 * z * z - 2.0 * z * s).sqrt(),
+        );
+        assert!((w - (hi - lo)).abs() < 1e-12, "ζ = {z}");
+        // Both ends sit at the peak gain over √2.
+        let level = frf::peak(z).unwrap().gain * FRAC_1_SQRT_2;
+        for r in [lo, hi] {
+            assert!(
+                (frf::magnitude(r, z) / level - 1.0).abs() < 1e-9,
+                "ζ = {z}, r = {r}"
+            );
+        }
+        // 2ζ + 2ζ³ + O(ζ⁵): within 0.1·ζ³ of the two-term series up to ζ = 0.1.
+        if z <= 0.1 {
+            assert!(
+                (w - 2.0 * z - 2.0 * z.powi(3)).abs() < 0.1 * z.powi(3),
+                "ζ = {z}"
+            );
+        }
+        // Where both points exist it agrees with the continued `bandwidth`.
+        assert!((w - frf::bandwidth(z).unwrap()).abs() < 1e-15);
+    }
+    // One-sided peak (0.3827 < ζ < 1/√2), no peak (ζ ≥ 1/√2), no steady state (ζ ≤ 0).
+    for z in [
+        0.383,
+        0.5,
+        0.7,
+        FRAC_1_SQRT_2,
+        0.8,
+        2.0,
+        0.0,
+        -0.1,
+        f64::NAN,
+    ] {
+        assert_eq!(frf::half_power_width(z), None, "ζ = {z}");
+    }
+    assert!(frf::half_power_width(0.3826).is_some());
+}

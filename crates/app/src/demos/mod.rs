@@ -187,10 +187,14 @@ type Factory = fn() -> Box<dyn Demo>;
 /// (checked by the registry test).
 const REGISTRY: &[(&str, Factory)] = &[
     ("regimes", || Box::new(Typed::new(regimes::Regimes))),
-    ("quarter-car", || Box::new(quarter_car::QuarterCar::new())),
+    ("quarter-car", || {
+        Box::new(Typed::new(quarter_car::QuarterCar::new()))
+    }),
     ("rlc", || Box::new(Typed::new(rlc::Rlc))),
     ("analogy", || Box::new(Typed::new(analogy::Analogy))),
-    ("resonance", || Box::new(resonance::Resonance::default())),
+    ("resonance", || {
+        Box::new(Typed::new(resonance::Resonance::default()))
+    }),
     ("integrators", || Box::new(integrators::Integrators::new())),
     ("flutter", || Box::new(flutter::Flutter::default())),
     ("nonlinear", || Box::new(nonlinear::Nonlinear::default())),

@@ -324,6 +324,77 @@ pub fn settling_time(sys: &SecondOrder, x0: f64, v0: f64, band: SettlingBand) ->
     FreeShape::new(sys, x0, v0)?.settle(band).map(|s| s.time)
 }
 
+/// Bisection depth locating one jump: `2^-64` of a grid step is below double precision.
+const JUMP_BISECTIONS: usize = 64;
+
+/// The damping ratios where the free-response settling time jumps, within the range of the
+/// ascending grid `zetas` \[-\], for natural frequency `wn` \[rad/s\], release from
+/// `(x0, v0)` and band `±band·|x0|`.
+///
+/// The settling time is a smooth function of ζ while the number of extrema of `x(t)` at
+/// `t > 0` outside the band stays the same, and jumps down where one of them drops inside
+/// the band. That count is evaluated at every grid point; between neighbours where it
+/// differs, the interval is bisected on the count (64 halvings, recursing
+/// into both halves, so several jumps in one interval are each found) down to adjacent
+/// doubles. Each returned ζ is the first value on the far side of its jump, to within
+/// `1e-15·ζ`. For a release from rest (`v0 = 0`) the k-th extremum is `x0·e^{−kπζ/√(1−ζ²)}`
+/// and the jumps are exactly `ζ_k = L/√((kπ)² + L²)` with `L = ln(1/band)`.
+///
+/// Jumps between two grid points with equal counts (a piece narrower than the grid step
+/// that starts and ends between them) are not found. Grid points where the response does
+/// not settle (ζ ≤ 0) are skipped. Ascending order; empty for fewer than two points.
+pub fn settling_time_jumps(
+    wn: f64,
+    x0: f64,
+    v0: f64,
+    band: SettlingBand,
+    zetas: &[f64],
+) -> Vec<f64> {
+    let piece = |zeta: f64| -> Option<u64> {
+        let sys = SecondOrder::from_natural(wn, zeta).ok()?;
+        Some(FreeShape::new(&sys, x0, v0)?.settle(band)?.piece)
+    };
+    let mut jumps = Vec::new();
+    let mut prev: Option<(f64, u64)> = None;
+    for &z in zetas {
+        let here = piece(z).map(|p| (z, p));
+        if let (Some(a), Some(b)) = (prev, here) {
+            if a.1 != b.1 {
+                bisect_jumps(&piece, a, b, JUMP_BISECTIONS, &mut jumps);
+            }
+        }
+        if here.is_some() {
+            prev = here;
+        }
+    }
+    jumps
+}
+
+/// Jumps of `piece` between `a` and `b` (whose pieces differ), in ascending order.
+fn bisect_jumps(
+    piece: &impl Fn(f64) -> Option<u64>,
+    a: (f64, u64),
+    b: (f64, u64),
+    depth: usize,
+    out: &mut Vec<f64>,
+) {
+    let mid = 0.5 * (a.0 + b.0);
+    if depth == 0 || mid <= a.0 || mid >= b.0 {
+        out.push(b.0);
+        return;
+    }
+    let Some(pm) = piece(mid) else {
+        out.push(b.0);
+        return;
+    };
+    if pm != a.1 {
+        bisect_jumps(piece, a, (mid, pm), depth - 1, out);
+    }
+    if pm != b.1 {
+        bisect_jumps(piece, (mid, pm), b, depth - 1, out);
+    }
+}
+
 impl FreeMetrics {
     /// All metrics from the closed form (see the module docs for the method).
     ///

@@ -1,0 +1,201 @@
+//! The resonance demo's frequency-response plots: |H(r)| (linear or dB) and ∠H(r) for a
+//! family of damping ratios, the current one highlighted with its peak and half-power band.
+
+use super::{text, Results, View, R_RANGE};
+use crate::figure::{Axis, Figure, LineStyle, Marker, Series};
+use crate::plot::{sampled, Ink};
+use std::f64::consts::FRAC_1_SQRT_2;
+use zeta_solver::frf;
+use zeta_solver::grid::decibels;
+
+pub(super) const MAGNITUDE_TITLE: &str = "Amplification |H(r)|";
+pub(super) const PHASE_TITLE: &str = "Phase ∠H(r)";
+
+/// The family of damping ratios drawn thin behind the current one.
+const FAMILY: [f64; 8] = [0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.707, 1.0];
+/// Members of the family labelled on the magnitude plot.
+const LABELLED: [f64; 4] = [0.01, 0.05, 0.2, 0.707];
+/// Fixed dB range: holds every curve of the family (and of the ζ slider) for r in R_RANGE.
+const DB_RANGE: (f64, f64) = (-45.0, 40.0);
+/// Phase axis \[°\].
+const PHASE_RANGE: (f64, f64) = (-190.0, 10.0);
+
+fn ratio_axis() -> Axis {
+    Axis::log("frequency ratio r = ω/ωₙ", "", R_RANGE)
+}
+
+/// `|H|` in the current view (plain ratio or dB).
+fn gain(r: f64, zeta: f64, view: View) -> f64 {
+    match view {
+        View::Linear => frf::magnitude(r, zeta),
+        View::Db => frf::magnitude_db(r, zeta),
+    }
+}
+
+/// A ratio as it is plotted in the current view.
+fn level(g: f64, view: View) -> f64 {
+    match view {
+        View::Linear => g,
+        View::Db => decibels(g).clamp(frf::DB_FLOOR, frf::DB_CEILING),
+    }
+}
+
+/// Replaces points above `top` by gaps, keeping the crossing points pinned to `top` so a
+/// clipped peak still reaches the frame (the renderer would otherwise flatten it along the
+/// edge). Presentation only.
+fn clip_above(points: &mut [(f64, f64)], top: f64) {
+    let above: Vec<bool> = points.iter().map(|p| p.1.is_nan() || p.1 > top).collect();
+    for (i, p) in points.iter_mut().enumerate() {
+        if !above[i] {
+            continue;
+        }
+        let prev_in = i > 0 && !above[i - 1];
+        let next_in = i + 1 < above.len() && !above[i + 1];
+        p.1 = if (prev_in || next_in) && !p.1.is_nan() {
+            top
+        } else {
+            f64::NAN
+        };
+    }
+}
+
+/// |H(r)| for the family and the current ζ, with the peak, the half-power band and the drive.
+pub(super) fn magnitude(res: &Results, grid: &[f64]) -> Figure {
+    let (z, view) = (res.p.zeta, res.p.view);
+    let top_gain = res.peak.map_or(1.0, |p| p.gain);
+    let (y_range, top) = match view {
+        View::Db => (DB_RANGE, DB_RANGE.1),
+        View::Linear => {
+            let top = (1.2 * top_gain).max(2.5);
+            ((0.0, top), top)
+        }
+    };
+    let mut series = Vec::with_capacity(FAMILY.len() + 4);
+    let mut markers = Vec::new();
+    for (i, &zf) in FAMILY.iter().enumerate() {
+        let mut pts = sampled(grid, |r| gain(r, zf, view));
+        clip_above(&mut pts, top);
+        let label = if i == 0 { "family ζ = 0.01 … 1" } else { "" };
+        series.push(Series::new(label, pts, LineStyle::dotted(Ink::Black, 1.2)));
+        if LABELLED.contains(&zf) {
+            // Beside the peaks, level with |H(1)| = 1/(2ζ); in the linear view only where
+            // the curves are far enough apart to tell which label is which.
+            let at = (1.3, gain(1.0, zf, view));
+            let floor = match view {
+                View::Db => y_range.0,
+                View::Linear => 0.12 * top,
+            };
+            if at.1 < 0.93 * top && at.1 > floor {
+                markers.push(Marker::text(format!("ζ = {zf}"), at, Ink::Black));
+            }
+        }
+    }
+    // The half-power level |H|max/√2 between its crossings (from r_min if there is no lower
+    // one); without a peak, the −3 dB level of the static gain.
+    let mut band_text = String::new();
+    if let Some(h) = frf::half_power_points(z) {
+        let lvl = level(top_gain * FRAC_1_SQRT_2, view);
+        let lo = h.lower.unwrap_or(R_RANGE.0).max(R_RANGE.0);
+        let hi = h.upper.min(R_RANGE.1);
+        let width = frf::half_power_width(z);
+        let has_peak = res.peak.is_some();
+        series.push(Series::new(
+            text::band_legend(&h, width, has_peak),
+            vec![(lo, lvl), (hi, lvl)],
+            LineStyle::dashed(Ink::Purple, 2.0),
+        ));
+        for r in h.lower.into_iter().chain([h.upper]) {
+            markers.push(Marker::cross("", (r, lvl), Ink::Purple));
+        }
+        band_text = text::describe_band(&h, width, has_peak);
+    }
+    let mut cur = sampled(grid, |r| gain(r, z, view));
+    clip_above(&mut cur, top);
+    series.push(Series::new(
+        format!("current ζ = {}", text::fmt_ratio(z)),
+        cur,
+        LineStyle::solid(Ink::Blue, 3.0),
+    ));
+    let drive = res.p.r;
+    series.push(Series::new(
+        format!("drive r = {}", text::fmt_ratio(drive)),
+        vec![(drive, y_range.0), (drive, y_range.1)],
+        LineStyle::dashed(Ink::Vermillion, 1.5),
+    ));
+    markers.push(Marker::dot(
+        "",
+        (drive, gain(drive, z, view).min(top)),
+        Ink::Vermillion,
+    ));
+    if let Some(p) = res.peak {
+        markers.push(Marker::cross(
+            "peak",
+            (p.ratio.max(R_RANGE.0), level(p.gain, view).min(top)),
+            Ink::Green,
+        ));
+    }
+    let (title, y) = match view {
+        View::Db => (
+            "Amplification |H(r)| in dB",
+            Axis::linear("magnitude 20·log₁₀|H|", "dB", y_range),
+        ),
+        View::Linear => (
+            MAGNITUDE_TITLE,
+            Axis::linear("amplification |H| = X/(F₀/k)", "", y_range),
+        ),
+    };
+    Figure {
+        series,
+        markers,
+        ..Figure::plot(title, ratio_axis(), y)
+    }
+    .described(text::describe_magnitude(res, &band_text))
+}
+
+/// ∠H(r) in degrees for the family and the current ζ, with the drive.
+pub(super) fn phase(res: &Results, grid: &[f64]) -> Figure {
+    let z = res.p.zeta;
+    let degrees = |zeta: f64| sampled(grid, |r| frf::phase(r, zeta).to_degrees());
+    let mut fig = Figure::plot(
+        PHASE_TITLE,
+        ratio_axis(),
+        Axis::linear("phase ∠H (lag of x behind F)", "°", PHASE_RANGE),
+    );
+    for (i, &zf) in FAMILY.iter().enumerate() {
+        let label = if i == 0 { "family ζ = 0.01 … 1" } else { "" };
+        fig = fig.with_line(label, degrees(zf), LineStyle::dotted(Ink::Black, 1.2));
+    }
+    let drive = res.p.r;
+    let ph = frf::phase(drive, z);
+    fig.with_line(
+        format!("current ζ = {}", text::fmt_ratio(z)),
+        degrees(z),
+        LineStyle::solid(Ink::Blue, 3.0),
+    )
+    .with_line(
+        format!("drive r = {}", text::fmt_ratio(drive)),
+        vec![(drive, PHASE_RANGE.0), (drive, PHASE_RANGE.1)],
+        LineStyle::dashed(Ink::Vermillion, 1.5),
+    )
+    .with_marker(Marker::dot("", (drive, ph.to_degrees()), Ink::Vermillion))
+    .with_marker(Marker::cross("−90° at r = 1", (1.0, -90.0), Ink::Green))
+    .described(text::describe_phase(res, ph))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::clip_above;
+
+    #[test]
+    fn clipping_pins_crossings_and_gaps_the_rest() {
+        let mut p = vec![(1.0, 1.0), (2.0, 5.0), (3.0, 9.0), (4.0, 6.0), (5.0, 1.0)];
+        clip_above(&mut p, 4.0);
+        assert_eq!(p[1].1, 4.0);
+        assert!(p[2].1.is_nan());
+        assert_eq!(p[3].1, 4.0);
+        assert_eq!(p[4].1, 1.0);
+        let mut inf = vec![(1.0, 1.0), (2.0, f64::INFINITY), (3.0, 1.0)];
+        clip_above(&mut inf, 4.0);
+        assert_eq!(inf[1].1, 4.0);
+    }
+}

@@ -1,0 +1,288 @@
+//! `resonance`: a mass on a spring and damper driven by a harmonic force
+//! `F(t) = F₀·cos(ωt)`. The frequency response `|H(r)|` and phase for a family of damping
+//! ratios (the current one highlighted, peak and half-power points marked), and the full
+//! time response from rest at the chosen frequency ratio `r = ω/ωₙ`: build-up at resonance,
+//! beating off resonance, with the steady-state amplitude and the slow envelope drawn.
+//!
+//! The mass is fixed at 1 kg, so `k = ωₙ²` \[N/m\], `c = 2ζωₙ` \[N·s/m\] and the static
+//! deflection is `F₀/k`.
+//!
+//! Files: this one declares the demo and holds the model step; `frequency.rs` draws the
+//! magnitude and phase plots, `time.rs` the response in time and the schematic; `text.rs`
+//! holds the prose.
+
+mod frequency;
+mod text;
+mod time;
+
+use super::Model;
+use crate::declare::{Choice, Declaration, Param, ReadoutDef};
+use crate::figure::Figure;
+use crate::spec::{PlotSpec, Preset};
+use std::f64::consts::TAU;
+use zeta_solver::forced::{HarmonicForce, HarmonicResponse};
+use zeta_solver::{frf, SecondOrder};
+
+/// The mass \[kg\]: fixed, so that `k = ωₙ²·m` and `c = 2ζωₙ·m` follow from ωₙ and ζ.
+const MASS: f64 = 1.0;
+/// Points per frequency-response curve (on a grid dense near `r = 1`).
+const FRF_SAMPLES: usize = 801;
+/// Shown range of the frequency ratio (also the range of the `r` slider).
+const R_RANGE: (f64, f64) = (0.1, 10.0);
+/// How strongly the frequency grid crowds towards `r = 1` (see [`frf::stretched_logspace`]).
+const GRID_STRETCH: f64 = 5.0;
+/// At most this many cycles (of the faster of drive and natural motion) in the time window.
+const MAX_CYCLES: f64 = 40.0;
+
+/// How the magnitude is shown.
+#[derive(Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub enum View {
+    /// The plain ratio |H|.
+    #[default]
+    Linear,
+    /// Decibels, 20·log₁₀|H|.
+    Db,
+}
+
+impl Choice for View {
+    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
+        (View::Linear, "linear", "linear |H|"),
+        (View::Db, "db", "decibels 20·log₁₀|H|"),
+    ];
+}
+
+/// Typed parameters, filled from the declaration.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct P {
+    /// Damping ratio ζ \[-\].
+    zeta: f64,
+    /// Frequency ratio r = ω/ωₙ \[-\].
+    r: f64,
+    /// Natural frequency ωₙ \[rad/s\].
+    wn: f64,
+    /// Force amplitude F₀ \[N\].
+    f0: f64,
+    /// Magnitude view.
+    view: View,
+}
+
+impl P {
+    /// The system and its response from rest to the drive; `None` for invalid values.
+    fn response(&self) -> Option<HarmonicResponse> {
+        let sys = SecondOrder::mechanical(
+            MASS,
+            2.0 * self.zeta * self.wn * MASS,
+            self.wn * self.wn * MASS,
+        )
+        .ok()?;
+        if !(self.r.is_finite() && self.r > 0.0 && self.f0.is_finite()) {
+            return None;
+        }
+        let force = HarmonicForce::new(self.f0, self.r * self.wn).ok()?;
+        Some(HarmonicResponse::new(sys, force, 0.0, 0.0))
+    }
+
+    /// Time window: long enough to see the build-up (five time constants `1/(ζωₙ)`) or a
+    /// few slow beats, at least two drive and three natural periods, at most
+    /// [`MAX_CYCLES`] cycles of the faster motion so every cycle keeps ~25 samples.
+    fn window(&self, resp: &HarmonicResponse) -> f64 {
+        let tn = TAU / self.wn;
+        let tf = TAU / (self.r * self.wn);
+        let mut want = if self.zeta > 0.0 {
+            5.0 / (self.zeta * self.wn)
+        } else {
+            f64::INFINITY
+        };
+        if let Some(tb) = resp.beat_period() {
+            if tb > 4.0 * tn.max(tf) {
+                want = want.min(3.5 * tb);
+            }
+        }
+        want.max(2.0 * tf)
+            .max(3.0 * tn)
+            .min(MAX_CYCLES * tn.min(tf))
+    }
+}
+
+/// What one step computes.
+pub struct Results {
+    p: P,
+    resp: HarmonicResponse,
+    /// The resonant peak of |H|, where there is one at r > 0.
+    peak: Option<frf::Peak>,
+    /// Plotted time window \[s\].
+    t_end: f64,
+}
+
+/// The forced-response demo. Holds its frequency grid so updates do not rebuild it.
+#[derive(Debug, Clone)]
+pub struct Resonance {
+    grid: Vec<f64>,
+}
+
+impl Default for Resonance {
+    fn default() -> Self {
+        Self {
+            grid: frf::stretched_logspace(R_RANGE.0, R_RANGE.1, FRF_SAMPLES, GRID_STRETCH)
+                .unwrap_or_default(),
+        }
+    }
+}
+
+impl Model for Resonance {
+    type Params = P;
+    type Results = Results;
+
+    fn declare() -> Declaration<P, Results> {
+        Declaration {
+            equation_mathml: text::EQUATION,
+            params: vec![
+                Param::log(
+                    "zeta",
+                    "damping ratio",
+                    "ζ",
+                    "",
+                    (0.01, 2.0, 0.001),
+                    0.1,
+                    |p, v| p.zeta = v,
+                ),
+                Param::log(
+                    "r",
+                    "forcing ratio ω/ωₙ",
+                    "r",
+                    "",
+                    (R_RANGE.0, R_RANGE.1, 0.001),
+                    1.0,
+                    |p, v| p.r = v,
+                ),
+                Param::linear(
+                    "wn",
+                    "natural frequency",
+                    "ωₙ",
+                    "rad/s",
+                    (0.5, 20.0, 0.01),
+                    6.0,
+                    |p, v| p.wn = v,
+                ),
+                Param::linear(
+                    "F0",
+                    "force amplitude",
+                    "F₀",
+                    "N",
+                    (0.1, 100.0, 0.1),
+                    10.0,
+                    |p, v| p.f0 = v,
+                ),
+                Param::choice("view", "magnitude view", View::Linear, |p, v| p.view = v),
+            ],
+            readouts: readouts(),
+            plots: vec![
+                PlotSpec {
+                    key: "magnitude",
+                    title: frequency::MAGNITUDE_TITLE,
+                    aspect: 1.4,
+                },
+                PlotSpec {
+                    key: "phase",
+                    title: frequency::PHASE_TITLE,
+                    aspect: 1.4,
+                },
+                PlotSpec {
+                    key: "time",
+                    title: time::TIME_TITLE,
+                    aspect: 1.9,
+                },
+            ],
+            presets: [
+                ("At resonance, ζ = 0.05", 0.05, 1.0),
+                ("Beating near resonance, r = 0.9", 0.01, 0.9),
+                ("No peak, ζ ≈ 1/√2", 0.7072, 1.0),
+                ("Quasi-static, r = 0.2", 0.1, 0.2),
+                ("Isolation, r = 3", 0.1, 3.0),
+            ]
+            .into_iter()
+            .map(|(label, zeta, r)| Preset {
+                label,
+                values: vec![("zeta", zeta), ("r", r)],
+            })
+            .collect(),
+            schematic: true,
+            ..Declaration::new("resonance", "Forced resonance", text::SUMMARY)
+        }
+    }
+
+    fn step(&mut self, p: &P) -> Option<Results> {
+        let resp = p.response()?;
+        Some(Results {
+            p: *p,
+            peak: frf::peak(p.zeta).filter(|pk| pk.ratio > 0.0),
+            t_end: p.window(&resp),
+            resp,
+        })
+    }
+
+    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
+        vec![
+            frequency::magnitude(r, &self.grid),
+            frequency::phase(r, &self.grid),
+            time::response(r),
+        ]
+    }
+
+    fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {
+        Some((0.0, r.t_end))
+    }
+
+    fn schematic(&self, p: &P, t: f64) -> Option<Figure> {
+        let resp = p.response()?;
+        Some(time::schematic(p, &resp, p.window(&resp), t))
+    }
+}
+
+/// The readout table.
+fn readouts() -> Vec<ReadoutDef<Results>> {
+    vec![
+        ReadoutDef::number("peak_gain", "resonant peak |H|max", "", 4, |r| {
+            r.peak.map(|p| p.gain)
+        }),
+        ReadoutDef::number("peak_ratio", "peak at r = ω/ωₙ", "", 4, |r| {
+            r.peak.map(|p| p.ratio)
+        }),
+        ReadoutDef::number("Q", "quality factor Q = 1/(2ζ)", "", 4, |r| {
+            frf::quality_factor(r.p.zeta)
+        }),
+        ReadoutDef::number(
+            "peak_width",
+            "half-power width of the |H| peak r₂ − r₁ (ζ < 0.383)",
+            "",
+            4,
+            |r| frf::half_power_width(r.p.zeta),
+        ),
+        ReadoutDef::number("gain_at_r", "gain |H(r)| at the drive", "", 4, |r| {
+            Some(frf::magnitude(r.p.r, r.p.zeta))
+        }),
+        ReadoutDef::number("phase_at_r", "phase ∠H(r) at the drive", "rad", 4, |r| {
+            Some(frf::phase(r.p.r, r.p.zeta))
+        }),
+        ReadoutDef::number(
+            "amplitude",
+            "steady amplitude X = |H|·F₀/k",
+            "m",
+            4,
+            |r| r.resp.steady_state().map(|s| s.amplitude),
+        ),
+        ReadoutDef::number(
+            "beat_period",
+            "beat period 2π/|ω − ω_d| (while beats show)",
+            "s",
+            4,
+            |r| r.resp.beats().period(),
+        ),
+        ReadoutDef::text("beats", "beats in x(t)", |r| {
+            text::beats(r.resp.beats()).to_string()
+        }),
+    ]
+}
+
+#[cfg(test)]
+mod tests;
