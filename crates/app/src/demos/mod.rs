@@ -17,6 +17,7 @@ pub mod regimes;
 pub mod resonance;
 pub mod rlc;
 pub mod uncertainty;
+pub mod universality;
 
 #[cfg(test)]
 pub(crate) mod testing;
@@ -177,6 +178,9 @@ const REGISTRY: &[(&str, Factory)] = &[
     ("design", || Box::new(design::DesignSpace::default())),
     ("uncertainty", || {
         Box::new(uncertainty::Uncertainty::default())
+    }),
+    ("universality", || {
+        Box::new(Typed::new(universality::Universality::default()))
     }),
 ];
 
