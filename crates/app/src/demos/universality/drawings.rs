@@ -87,7 +87,7 @@ pub(super) fn u_tube(h: f64) -> Figure {
     fig = ink(fig, vec![(0.6, right), (1.0, right)], Ink::Blue, 3.0);
     fig = dashed(fig, vec![(-1.4, rest), (1.4, rest)]);
     fig = label(fig, "h", (-1.45, left + 0.1));
-    fig = label(fig, "ρ, μ", (-0.25, 0.3));
+    fig = label(fig, "ρ, μ", (-0.25, 1.1));
     label(fig, "d", (1.1, 3.0))
 }
 
@@ -140,8 +140,8 @@ pub(super) fn storey(u: f64) -> Figure {
     fig = label(fig, "m", (d - 0.1, top + 0.2));
     fig = label(fig, "EI", (-0.9 + d, 1.2));
     fig = label(fig, "h", (-1.5, 1.3));
-    fig = label(fig, "c", (0.55 + d, 1.2));
-    label(fig, "x_g(t)", (-0.35, -0.4))
+    fig = label(fig, "c", (0.25 + d, 1.7));
+    label(fig, "x_g(t)", (-1.6, 0.35))
 }
 
 /// A horizontal resistor zigzag from `x0` to `x1` at height `y`.
