@@ -1,15 +1,40 @@
 //! Each machine of a slot built through the solver (`zeta_solver::machines`), tuned to a
 //! target by the solver's inverse, and what the page needs to say about it: the units of
-//! its coefficients, its coordinate and which sliders "match" moves.
+//! its coefficients, its coordinate, the slider ranges and which sliders "match" moves.
 
-use super::params::{
-    pick, Kind, Values, C as C_RANGE, CAP, CF, COLUMNS, EI, K, KD, KP, LEN, MU, R, RTH,
-};
+use super::params::{pick, Kind, Values};
 use zeta_solver::machines::{
     DcServo, Machine, MassSpringDamper, MatchError, SeriesRlc, Storey, Target, TwoCapacityThermal,
     UTube,
 };
 use zeta_solver::{ModelError, SecondOrder};
+
+// Slider ranges `(min, max, step)`, one per quantity, shared by both slots. The ranges of
+// the parameters that "match" tunes are also where the tuned values must land.
+pub(super) const M: (f64, f64, f64) = (0.1, 100.0, 0.001);
+pub(super) const C: (f64, f64, f64) = (0.0, 100.0, 0.01);
+pub(super) const K: (f64, f64, f64) = (0.1, 10_000.0, 0.01);
+pub(super) const L: (f64, f64, f64) = (1e-3, 10.0, 1e-4);
+pub(super) const R: (f64, f64, f64) = (0.0, 500.0, 0.01);
+pub(super) const CAP: (f64, f64, f64) = (1e-6, 1.0, 1e-7);
+pub(super) const LEN: (f64, f64, f64) = (0.05, 5.0, 0.001);
+pub(super) const BORE: (f64, f64, f64) = (1e-3, 0.05, 1e-4);
+pub(super) const RHO: (f64, f64, f64) = (500.0, 15_000.0, 1.0);
+pub(super) const MU: (f64, f64, f64) = (1e-5, 10.0, 1e-6);
+pub(super) const J: (f64, f64, f64) = (1e-5, 1.0, 1e-6);
+pub(super) const KT: (f64, f64, f64) = (0.01, 2.0, 0.001);
+pub(super) const RA: (f64, f64, f64) = (0.1, 100.0, 0.01);
+pub(super) const KP: (f64, f64, f64) = (0.01, 10_000.0, 0.01);
+pub(super) const KD: (f64, f64, f64) = (0.0, 50.0, 0.001);
+pub(super) const MF: (f64, f64, f64) = (1_000.0, 1e6, 1.0);
+pub(super) const H: (f64, f64, f64) = (2.5, 6.0, 0.01);
+pub(super) const EI: (f64, f64, f64) = (1e4, 1e10, 1.0);
+pub(super) const CF: (f64, f64, f64) = (0.0, 2e6, 100.0);
+pub(super) const CTH: (f64, f64, f64) = (1e-3, 1e6, 1e-3);
+pub(super) const RTH: (f64, f64, f64) = (1e-3, 1e3, 1e-4);
+
+/// Columns under each storey (the storey's lateral stiffness is 12·n·EI/h³).
+pub(super) const COLUMNS: f64 = 4.0;
 
 /// The coefficients of machine `kind` with slider values `v`.
 pub(super) fn system(kind: Kind, v: &Values) -> Result<SecondOrder, ModelError> {
@@ -87,7 +112,7 @@ pub(super) fn tuned(kind: Kind, slot: usize, v: &Values) -> [Tuned; 2] {
     match kind {
         Kind::MassSpring => [
             t("A_k", "B_k", "k", "N/m", K, v.k),
-            t("A_c", "B_c", "c", "N·s/m", C_RANGE, v.c),
+            t("A_c", "B_c", "c", "N·s/m", C, v.c),
         ],
         Kind::Rlc => [
             t("A_C", "B_C", "C", "F", CAP, v.cap),

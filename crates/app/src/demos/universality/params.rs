@@ -2,6 +2,9 @@
 //! machines and holding its own copy of every machine's sliders, shown only while that
 //! machine is chosen in that slot (`visible_when`).
 
+use super::machine::{
+    BORE, C, CAP, CF, CTH, EI, H, J, K, KD, KP, KT, L, LEN, M, MF, MU, R, RA, RHO, RTH,
+};
 use crate::declare::{Choice, Param};
 
 /// The six machines.
@@ -89,33 +92,6 @@ pub struct P {
     /// Tune B so that its ωₙ and ζ equal A's.
     pub matched: bool,
 }
-
-// Slider ranges `(min, max, step)`, one per quantity, shared by both slots. The ranges of
-// the parameters that "match" tunes are also where the tuned values must land.
-pub(super) const M: (f64, f64, f64) = (0.1, 100.0, 0.001);
-pub(super) const C: (f64, f64, f64) = (0.0, 100.0, 0.01);
-pub(super) const K: (f64, f64, f64) = (0.1, 10_000.0, 0.01);
-pub(super) const L: (f64, f64, f64) = (1e-3, 10.0, 1e-4);
-pub(super) const R: (f64, f64, f64) = (0.0, 500.0, 0.01);
-pub(super) const CAP: (f64, f64, f64) = (1e-6, 1.0, 1e-7);
-pub(super) const LEN: (f64, f64, f64) = (0.05, 5.0, 0.001);
-pub(super) const BORE: (f64, f64, f64) = (1e-3, 0.05, 1e-4);
-pub(super) const RHO: (f64, f64, f64) = (500.0, 15_000.0, 1.0);
-pub(super) const MU: (f64, f64, f64) = (1e-5, 10.0, 1e-6);
-pub(super) const J: (f64, f64, f64) = (1e-5, 1.0, 1e-6);
-pub(super) const KT: (f64, f64, f64) = (0.01, 2.0, 0.001);
-pub(super) const RA: (f64, f64, f64) = (0.1, 100.0, 0.01);
-pub(super) const KP: (f64, f64, f64) = (0.01, 10_000.0, 0.01);
-pub(super) const KD: (f64, f64, f64) = (0.0, 50.0, 0.001);
-pub(super) const MF: (f64, f64, f64) = (1_000.0, 1e6, 1.0);
-pub(super) const H: (f64, f64, f64) = (2.5, 6.0, 0.01);
-pub(super) const EI: (f64, f64, f64) = (1e4, 1e10, 1.0);
-pub(super) const CF: (f64, f64, f64) = (0.0, 2e6, 100.0);
-pub(super) const CTH: (f64, f64, f64) = (1e-3, 1e6, 1e-3);
-pub(super) const RTH: (f64, f64, f64) = (1e-3, 1e3, 1e-4);
-
-/// Columns under each storey (the storey's lateral stiffness is 12·n·EI/h³).
-pub(super) const COLUMNS: f64 = 4.0;
 
 /// The machine each slot starts with.
 const DEFAULT_KIND: [Kind; 2] = [Kind::MassSpring, Kind::Rlc];
