@@ -4,6 +4,7 @@
 import init, { Session, demoList, setLanguage, takePanicMessage } from '../zeta-app.js';
 import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
 import { fillLiveCells } from './live-table.js';
+import { applyConditions } from './conditional.js';
 import { currentQuery, demoFromUrl, writeState } from './url.js';
 import { download } from './download.js';
 import { applyEmbedView, connectHost, embedOptions } from './embed.js';
@@ -122,6 +123,7 @@ function drawFrame() {
       if (control) showValue(control, value);
     }
     if (out.derived.length) syncUrl();
+    applyConditions(app.view.spec, app.root);
     describeSliders(out.readouts);
     highlightRow(app.view.table, out.readouts);
     fillLiveCells(app.view.table, out.readouts);
@@ -434,6 +436,7 @@ function openDemo(id, query) {
   wireProbes();
   wireExports();
   showAllValues();
+  applyConditions(spec, app.root);
   for (const n of notices) notify(app.notices, n.message, 'warn');
   const select = document.getElementById('demo-select');
   if (select) select.value = id;

@@ -63,6 +63,11 @@ pub struct ParamSpec {
     pub kind: Kind,
     /// Options of a choice (empty otherwise).
     pub options: Vec<ChoiceOption>,
+    /// Shown only while the parameter `key` has the value `index` (a choice's option
+    /// index, or 0/1 for a toggle); `None`: always shown. The page hides the control
+    /// otherwise (`web/conditional.js`); its value still counts, and a URL may set it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub visible_when: Option<(&'static str, usize)>,
 }
 
 impl ParamSpec {
@@ -87,6 +92,7 @@ impl ParamSpec {
             scale: Scale::Linear,
             kind: Kind::Slider,
             options: Vec::new(),
+            visible_when: None,
         }
     }
 

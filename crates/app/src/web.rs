@@ -105,6 +105,7 @@ fn translate_spec(spec: &DemoSpec, l: Lang) -> TranslatedSpec {
                 scale: p.scale,
                 kind: p.kind,
                 options: p.options.iter().map(|o| (o.key, t(o.label))).collect(),
+                visible_when: p.visible_when,
             })
             .collect(),
         readouts: spec
@@ -151,6 +152,9 @@ struct TranslatedParam {
     kind: crate::spec::Kind,
     #[serde(serialize_with = "options_as_objects")]
     options: Vec<(&'static str, String)>,
+    /// `[key, index]`: shown only while that parameter has that value (absent: always).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    visible_when: Option<(&'static str, usize)>,
 }
 
 fn options_as_objects<S: serde::Serializer>(

@@ -29,6 +29,7 @@ pub mod free;
 pub mod frf;
 pub mod grid;
 pub mod integrate;
+pub mod machines;
 pub mod metrics;
 pub mod model;
 pub mod nonlinear;

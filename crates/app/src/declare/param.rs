@@ -103,6 +103,14 @@ impl<P: 'static> Param<P> {
         self.spec.symbol = symbol;
         self
     }
+
+    /// The same parameter, shown only while the parameter `key` has the value `index`
+    /// (e.g. a machine's sliders while that machine is chosen; see
+    /// [`ParamSpec::visible_when`]).
+    pub fn visible_when(mut self, key: &'static str, index: usize) -> Self {
+        self.spec.visible_when = Some((key, index));
+        self
+    }
 }
 
 impl<P> Param<P> {

@@ -18,6 +18,7 @@ pub mod regimes;
 pub mod resonance;
 pub mod rlc;
 pub mod uncertainty;
+pub mod universality;
 
 #[cfg(test)]
 pub(crate) mod testing;
@@ -192,6 +193,9 @@ const REGISTRY: &[(&str, Factory)] = &[
     }),
     ("rlc", || Box::new(Typed::new(rlc::Rlc))),
     ("analogy", || Box::new(Typed::new(analogy::Analogy))),
+    ("universality", || {
+        Box::new(Typed::new(universality::Universality::default()))
+    }),
     ("resonance", || {
         Box::new(Typed::new(resonance::Resonance::default()))
     }),

@@ -1,0 +1,160 @@
+//! Each machine of a slot built through the solver (`zeta_solver::machines`), tuned to a
+//! target by the solver's inverse, and what the page needs to say about it: the units of
+//! its coefficients, its coordinate, the slider ranges and which sliders "match" moves.
+
+use super::params::{pick, Kind, Values};
+use zeta_solver::machines::{
+    DcServo, Machine, MassSpringDamper, MatchError, SeriesRlc, Storey, Target, TwoCapacityThermal,
+    UTube,
+};
+use zeta_solver::{ModelError, SecondOrder};
+
+// Slider ranges `(min, max, step)`, one per quantity, shared by both slots. The ranges of
+// the parameters that "match" tunes are also where the tuned values must land.
+pub(super) const M: (f64, f64, f64) = (0.1, 100.0, 0.001);
+pub(super) const C: (f64, f64, f64) = (0.0, 100.0, 0.01);
+pub(super) const K: (f64, f64, f64) = (0.1, 10_000.0, 0.01);
+pub(super) const L: (f64, f64, f64) = (1e-3, 10.0, 1e-4);
+pub(super) const R: (f64, f64, f64) = (0.0, 500.0, 0.01);
+pub(super) const CAP: (f64, f64, f64) = (1e-6, 1.0, 1e-7);
+pub(super) const LEN: (f64, f64, f64) = (0.05, 5.0, 0.001);
+pub(super) const BORE: (f64, f64, f64) = (1e-3, 0.05, 1e-4);
+pub(super) const RHO: (f64, f64, f64) = (500.0, 15_000.0, 1.0);
+pub(super) const MU: (f64, f64, f64) = (1e-5, 10.0, 1e-6);
+pub(super) const J: (f64, f64, f64) = (1e-5, 1.0, 1e-6);
+pub(super) const KT: (f64, f64, f64) = (0.01, 2.0, 0.001);
+pub(super) const RA: (f64, f64, f64) = (0.1, 100.0, 0.01);
+pub(super) const KP: (f64, f64, f64) = (0.01, 10_000.0, 0.01);
+pub(super) const KD: (f64, f64, f64) = (0.0, 50.0, 0.001);
+pub(super) const MF: (f64, f64, f64) = (1_000.0, 1e6, 1.0);
+pub(super) const H: (f64, f64, f64) = (2.5, 6.0, 0.01);
+pub(super) const EI: (f64, f64, f64) = (1e4, 1e10, 1.0);
+pub(super) const CF: (f64, f64, f64) = (0.0, 2e6, 100.0);
+pub(super) const CTH: (f64, f64, f64) = (1e-3, 1e6, 1e-3);
+pub(super) const RTH: (f64, f64, f64) = (1e-3, 1e3, 1e-4);
+
+/// Columns under each storey (the storey's lateral stiffness is 12·n·EI/h³).
+pub(super) const COLUMNS: f64 = 4.0;
+
+/// The coefficients of machine `kind` with slider values `v`.
+pub(super) fn system(kind: Kind, v: &Values) -> Result<SecondOrder, ModelError> {
+    Ok(match kind {
+        Kind::MassSpring => MassSpringDamper::new(v.m, v.c, v.k)?.system(),
+        Kind::Rlc => SeriesRlc::new(v.l, v.r, v.cap)?.system(),
+        Kind::UTube => UTube::new(v.len, v.bore, v.rho, v.mu)?.system(),
+        Kind::Servo => DcServo::new(v.j, v.kt, v.ra, v.kp, v.kd)?.system(),
+        Kind::Storey => Storey::new(v.mf, v.h, v.ei, COLUMNS, v.cf)?.system(),
+        Kind::Thermal => TwoCapacityThermal::new(v.c1, v.r1, v.c2, v.r2)?.system(),
+    })
+}
+
+/// The slider values of machine `kind` tuned by the solver to `target`: the two tuning
+/// parameters solved for, everything else kept.
+pub(super) fn tune(kind: Kind, v: &Values, target: Target) -> Result<Values, MatchError> {
+    let mut out = *v;
+    match kind {
+        Kind::MassSpring => {
+            let (_, c, k) = MassSpringDamper::new(v.m, v.c, v.k)?
+                .matched(target)?
+                .params();
+            (out.c, out.k) = (c, k);
+        }
+        Kind::Rlc => {
+            let (_, r, cap) = SeriesRlc::new(v.l, v.r, v.cap)?.matched(target)?.params();
+            (out.r, out.cap) = (r, cap);
+        }
+        Kind::UTube => {
+            let (len, _, _, mu) = UTube::new(v.len, v.bore, v.rho, v.mu)?
+                .matched(target)?
+                .params();
+            (out.len, out.mu) = (len, mu);
+        }
+        Kind::Servo => {
+            let (_, _, _, kp, kd) = DcServo::new(v.j, v.kt, v.ra, v.kp, v.kd)?
+                .matched(target)?
+                .params();
+            (out.kp, out.kd) = (kp, kd);
+        }
+        Kind::Storey => {
+            let (_, _, ei, _, cf) = Storey::new(v.mf, v.h, v.ei, COLUMNS, v.cf)?
+                .matched(target)?
+                .params();
+            (out.ei, out.cf) = (ei, cf);
+        }
+        Kind::Thermal => {
+            let (_, r1, _, r2) = TwoCapacityThermal::new(v.c1, v.r1, v.c2, v.r2)?
+                .matched(target)?
+                .params();
+            (out.r1, out.r2) = (r1, r2);
+        }
+    }
+    Ok(out)
+}
+
+/// One slider that "match" moves: URL key, symbol, unit, allowed range and tuned value.
+pub(super) struct Tuned {
+    pub key: &'static str,
+    pub symbol: &'static str,
+    pub unit: &'static str,
+    pub range: (f64, f64),
+    pub value: f64,
+}
+
+/// The two sliders of slot `slot` that "match" moves for machine `kind`, at values `v`.
+pub(super) fn tuned(kind: Kind, slot: usize, v: &Values) -> [Tuned; 2] {
+    let t = |a, b, symbol, unit, range: (f64, f64, f64), value| Tuned {
+        key: pick(slot, a, b),
+        symbol,
+        unit,
+        range: (range.0, range.1),
+        value,
+    };
+    match kind {
+        Kind::MassSpring => [
+            t("A_k", "B_k", "k", "N/m", K, v.k),
+            t("A_c", "B_c", "c", "N·s/m", C, v.c),
+        ],
+        Kind::Rlc => [
+            t("A_C", "B_C", "C", "F", CAP, v.cap),
+            t("A_R", "B_R", "R", "Ω", R, v.r),
+        ],
+        Kind::UTube => [
+            t("A_len", "B_len", "L", "m", LEN, v.len),
+            t("A_mu", "B_mu", "μ", "Pa·s", MU, v.mu),
+        ],
+        Kind::Servo => [
+            t("A_Kp", "B_Kp", "K_p", "V/rad", KP, v.kp),
+            t("A_Kd", "B_Kd", "K_d", "V·s/rad", KD, v.kd),
+        ],
+        Kind::Storey => [
+            t("A_EI", "B_EI", "EI", "N·m²", EI, v.ei),
+            t("A_cf", "B_cf", "c", "N·s/m", CF, v.cf),
+        ],
+        Kind::Thermal => [
+            t("A_R1", "B_R1", "R₁", "K/W", RTH, v.r1),
+            t("A_R2", "B_R2", "R₂", "K/W", RTH, v.r2),
+        ],
+    }
+}
+
+/// Units of the coefficients `(a, b, c)` of machine `kind`.
+pub(super) fn units(kind: Kind) -> [&'static str; 3] {
+    match kind {
+        Kind::MassSpring | Kind::UTube | Kind::Storey => ["kg", "N·s/m", "N/m"],
+        Kind::Rlc => ["H", "Ω", "1/F"],
+        Kind::Servo => ["kg·m²", "N·m·s/rad", "N·m/rad"],
+        Kind::Thermal => ["s²", "s", ""],
+    }
+}
+
+/// The normalised coordinate `y/y₀` of machine `kind` in its own symbols.
+pub(super) fn normalised_coordinate(kind: Kind) -> &'static str {
+    match kind {
+        Kind::MassSpring => "x/x₀",
+        Kind::Rlc => "q/q₀",
+        Kind::UTube => "h/h₀",
+        Kind::Servo => "θ/θ₀",
+        Kind::Storey => "u/u₀",
+        Kind::Thermal => "T₂/T₂(0)",
+    }
+}

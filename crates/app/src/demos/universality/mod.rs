@@ -1,0 +1,314 @@
+//! `universality`: one equation, many machines. Two slots, A and B, each hold one of six
+//! machines — mass–spring–damper, series RLC circuit, U-tube manometer, DC-motor position
+//! servo, building storey, two-capacity thermal system — set by its own physical
+//! parameters. The solver maps each to `a·y'' + b·y' + c·y = f(t)`
+//! (`zeta_solver::machines`); the page shows a, b, c, ωₙ and ζ of both, their normalised
+//! free responses against ωₙt and in real time, and both machines drawn side by side.
+//! "Match" tunes B by the solver's inverse so that its ωₙ and ζ equal A's; the tuned
+//! sliders are published as derived parameters, so the page moves them.
+//!
+//! Files: `params.rs` (the parameter table), `machine.rs` (solver glue), `figures.rs`,
+//! `drawings.rs` (schematics of the new machines), `text.rs` (prose).
+
+mod drawings;
+mod figures;
+mod machine;
+mod params;
+mod text;
+
+use super::Model;
+use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::figure::Figure;
+use crate::spec::{PlotSpec, Preset};
+use params::{Kind, Values, P};
+use zeta_solver::machines::{MatchError, Target};
+use zeta_solver::SecondOrder;
+
+/// Normalised window ωₙt shown at least: four undamped periods.
+const MIN_WINDOW: f64 = 8.0 * std::f64::consts::PI;
+/// Normalised window ωₙt shown at most (very heavy damping creeps for ever).
+const MAX_WINDOW: f64 = 200.0;
+
+/// The universality demo. Remembers the parameters "match" derived at the last step.
+#[derive(Debug, Default, Clone)]
+pub struct Universality {
+    derived: Vec<(&'static str, f64)>,
+}
+
+/// One machine as computed: its kind, slider values (tuned, for a matched B) and
+/// coefficients.
+#[derive(Debug, Clone, Copy)]
+pub struct One {
+    kind: Kind,
+    v: Values,
+    sys: SecondOrder,
+}
+
+impl One {
+    fn new(kind: Kind, v: Values) -> Option<Self> {
+        Some(Self {
+            kind,
+            v,
+            sys: machine::system(kind, &v).ok()?,
+        })
+    }
+
+    fn wn(&self) -> f64 {
+        self.sys.natural_frequency().unwrap_or(1.0)
+    }
+
+    /// Normalised window ωₙt: four periods if it oscillates, else five slow time constants.
+    fn window(&self) -> f64 {
+        let slow = self.sys.time_constants()[0];
+        match (self.sys.damped_frequency(), slow) {
+            (None, Some(tau)) => (5.0 * tau * self.wn()).clamp(MIN_WINDOW, MAX_WINDOW),
+            _ => MIN_WINDOW,
+        }
+    }
+}
+
+/// What "match" did.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Matching {
+    /// Not asked for.
+    Off,
+    /// B now has A's ωₙ and ζ.
+    Exact,
+    /// B cannot be damped as lightly as A with its other parameters kept.
+    TooLight {
+        /// The least damping ratio B can reach.
+        zeta_min: f64,
+        /// A's damping ratio.
+        zeta: f64,
+    },
+    /// A tuned value lies outside its slider.
+    OutOfRange {
+        /// Symbol of the tuned parameter.
+        symbol: &'static str,
+        /// Its unit.
+        unit: &'static str,
+        /// The value it would need.
+        value: f64,
+        /// Its slider's range.
+        range: (f64, f64),
+    },
+    /// No target (A has no natural frequency) or no valid tuned machine.
+    Impossible,
+}
+
+/// What one step computes.
+pub struct Results {
+    /// Machines A and B (B as tuned when matched).
+    m: [One; 2],
+    matching: Matching,
+    /// Normalised window ωₙt.
+    tau_end: f64,
+    /// Real-time window \[s\]: the normalised window on A's time scale.
+    t_end: f64,
+}
+
+impl Model for Universality {
+    type Params = P;
+    type Results = Results;
+
+    fn declare() -> Declaration<P, Results> {
+        let mut params = params::slot::<0>();
+        params.extend(params::slot::<1>());
+        params.push(Param::toggle(
+            "match",
+            "match: tune B to behave like A (same ωₙ and ζ)",
+            false,
+            |p, on| p.matched = on,
+        ));
+        Declaration {
+            equation_mathml: text::EQUATION,
+            params,
+            readouts: readouts(),
+            plots: vec![
+                PlotSpec {
+                    key: "normalised",
+                    title: figures::NORMALISED_TITLE,
+                    aspect: 1.9,
+                },
+                PlotSpec {
+                    key: "realtime",
+                    title: figures::REALTIME_TITLE,
+                    aspect: 1.9,
+                },
+            ],
+            primary_plot: "normalised",
+            presets: presets(),
+            table: Some(text::table()),
+            schematic: true,
+            ..Declaration::new("universality", "One equation, many machines", text::SUMMARY)
+        }
+    }
+
+    fn step(&mut self, p: &P) -> Option<Results> {
+        self.derived.clear();
+        let (m, matching, derived) = resolve(p)?;
+        self.derived = derived;
+        let tau_end = m[0].window().max(m[1].window());
+        Some(Results {
+            m,
+            matching,
+            tau_end,
+            t_end: tau_end / m[0].wn(),
+        })
+    }
+
+    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
+        vec![figures::normalised(r), figures::realtime(r)]
+    }
+
+    fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {
+        Some((0.0, r.t_end))
+    }
+
+    fn schematic(&self, p: &P, t: f64) -> Option<Figure> {
+        Some(figures::schematic(&resolve(p)?.0, t))
+    }
+
+    fn derived_params(&self) -> Vec<(&'static str, f64)> {
+        self.derived.clone()
+    }
+
+    fn sonify(&self, p: &P, t: f64) -> Option<f64> {
+        Some(figures::normalised_at(&resolve(p)?.0[0], t))
+    }
+}
+
+/// Machines A and B, B tuned to A when "match" is on and the tuning lands inside B's
+/// sliders; what matching did; and the tuned sliders to publish.
+type Resolved = ([One; 2], Matching, Vec<(&'static str, f64)>);
+
+fn resolve(p: &P) -> Option<Resolved> {
+    let a = One::new(p.slots[0].kind, p.slots[0].v)?;
+    let kind_b = p.slots[1].kind;
+    let mut v_b = p.slots[1].v;
+    let mut derived = Vec::new();
+    let matching = if !p.matched {
+        Matching::Off
+    } else {
+        match Target::of(&a.sys).map(|t| machine::tune(kind_b, &v_b, t)) {
+            Some(Ok(tuned)) => {
+                let moved = machine::tuned(kind_b, 1, &tuned);
+                let outside = moved
+                    .iter()
+                    .find(|t| !(t.range.0..=t.range.1).contains(&t.value));
+                match outside {
+                    Some(t) => Matching::OutOfRange {
+                        symbol: t.symbol,
+                        unit: t.unit,
+                        value: t.value,
+                        range: t.range,
+                    },
+                    None => {
+                        derived = moved.iter().map(|t| (t.key, t.value)).collect();
+                        v_b = tuned;
+                        Matching::Exact
+                    }
+                }
+            }
+            Some(Err(MatchError::DampingTooLow { zeta_min, zeta })) => {
+                Matching::TooLight { zeta_min, zeta }
+            }
+            Some(Err(MatchError::Model(_))) | None => Matching::Impossible,
+        }
+    };
+    Some(([a, One::new(kind_b, v_b)?], matching, derived))
+}
+
+/// `(value, text)` of coefficient `i` (0: a, 1: b, 2: c) of machine `slot`, in its units.
+fn coefficient(r: &Results, slot: usize, i: usize) -> Option<(f64, String)> {
+    let one = &r.m[slot];
+    let v = [one.sys.a(), one.sys.b(), one.sys.c()][i];
+    Some((v, text::amount(v, machine::units(one.kind)[i])))
+}
+
+fn readouts() -> Vec<ReadoutDef<Results>> {
+    vec![
+        ReadoutDef::formatted("a_A", "inertia coefficient a of A", "", |r| {
+            coefficient(r, 0, 0)
+        }),
+        ReadoutDef::formatted("b_A", "damping coefficient b of A", "", |r| {
+            coefficient(r, 0, 1)
+        }),
+        ReadoutDef::formatted("c_A", "stiffness coefficient c of A", "", |r| {
+            coefficient(r, 0, 2)
+        }),
+        ReadoutDef::number("wn_A", "natural frequency ωₙ of A", "rad/s", 4, |r| {
+            r.m[0].sys.natural_frequency()
+        }),
+        ReadoutDef::number("zeta_A", "damping ratio ζ of A", "", 4, |r| {
+            r.m[0].sys.damping_ratio()
+        }),
+        ReadoutDef::text("regime_A", "regime of A", |r| {
+            r.m[0].sys.regime().key().to_string()
+        }),
+        ReadoutDef::formatted("a_B", "inertia coefficient a of B", "", |r| {
+            coefficient(r, 1, 0)
+        }),
+        ReadoutDef::formatted("b_B", "damping coefficient b of B", "", |r| {
+            coefficient(r, 1, 1)
+        }),
+        ReadoutDef::formatted("c_B", "stiffness coefficient c of B", "", |r| {
+            coefficient(r, 1, 2)
+        }),
+        ReadoutDef::number("wn_B", "natural frequency ωₙ of B", "rad/s", 4, |r| {
+            r.m[1].sys.natural_frequency()
+        }),
+        ReadoutDef::number("zeta_B", "damping ratio ζ of B", "", 4, |r| {
+            r.m[1].sys.damping_ratio()
+        }),
+        ReadoutDef::text("regime_B", "regime of B", |r| {
+            r.m[1].sys.regime().key().to_string()
+        }),
+        ReadoutDef::number(
+            "wn_ratio",
+            "time-scale ratio ωₙ(B)/ωₙ(A)",
+            "",
+            4,
+            |r| Some(r.m[1].wn() / r.m[0].wn()),
+        ),
+        ReadoutDef::text("match", "match", |r| text::matching(&r.matching)),
+    ]
+}
+
+fn presets() -> Vec<Preset> {
+    use crate::declare::Choice;
+    let kinds = |a: Kind, b: Kind, on: bool| {
+        vec![
+            ("A", a.index() as f64),
+            ("B", b.index() as f64),
+            ("match", if on { 1.0 } else { 0.0 }),
+        ]
+    };
+    let mut fast_thermometer = kinds(Kind::Thermal, Kind::MassSpring, true);
+    fast_thermometer.extend([("A_C1", 5.0), ("A_R1", 0.5), ("A_C2", 1.0), ("A_R2", 2.0)]);
+    vec![
+        Preset {
+            label: "Mass–spring and RLC circuit, matched",
+            values: kinds(Kind::MassSpring, Kind::Rlc, true),
+        },
+        Preset {
+            label: "U-tube manometer and mass–spring, matched",
+            values: kinds(Kind::UTube, Kind::MassSpring, true),
+        },
+        Preset {
+            label: "Building storey tuned like a servo",
+            values: kinds(Kind::Servo, Kind::Storey, true),
+        },
+        Preset {
+            label: "Thermometer (two capacities) and mass–spring, matched",
+            values: fast_thermometer,
+        },
+        Preset {
+            label: "A thermal system cannot match an oscillator",
+            values: kinds(Kind::MassSpring, Kind::Thermal, true),
+        },
+    ]
+}
+
+#[cfg(test)]
+mod tests;
