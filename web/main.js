@@ -5,6 +5,7 @@ import init, { Session, demoList, setLanguage, takePanicMessage } from '../zeta-
 import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
 import { fillLiveCells } from './live-table.js';
 import { applyConditions } from './conditional.js';
+import { renderTour } from './tour.js';
 import { currentQuery, demoFromUrl, writeState } from './url.js';
 import { download } from './download.js';
 import { applyEmbedView, connectHost, embedOptions } from './embed.js';
@@ -124,6 +125,7 @@ function drawFrame() {
     }
     if (out.derived.length) syncUrl();
     applyConditions(app.view.spec, app.root);
+    if (out.tour) renderTour(app.root, out.tour);
     describeSliders(out.readouts);
     highlightRow(app.view.table, out.readouts);
     fillLiveCells(app.view.table, out.readouts);

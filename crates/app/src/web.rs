@@ -289,6 +289,9 @@ struct UpdateResult<'a> {
     time_span: Option<(f64, f64)>,
     /// `[[key, value]]` of parameters the demo derived from others this update.
     derived: Vec<(&'static str, f64)>,
+    /// The guided tour with its checked claims, for the demo that has one (`paper`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tour: Option<crate::demos::paper::Tour>,
 }
 
 #[derive(Serialize)]
@@ -476,6 +479,10 @@ impl Session {
             descriptions,
             time_span: frame.time_span,
             derived,
+            tour: self
+                .demo
+                .tour()
+                .map(|t| t.translated(|s| tr(l, s).into_owned())),
         });
         self.frame = Some(frame);
         out
