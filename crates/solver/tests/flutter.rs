@@ -140,3 +140,49 @@ fn the_mode_is_the_normalised_second_order_system() {
     assert_eq!(s, want);
     assert!(b.system(f64::NAN).is_err());
 }
+
+#[test]
+fn the_envelope_bounds_the_twist_and_touches_it_each_half_period() {
+    // θ = A·e^{σt}·cos(ω_d t − φ): |θ| ≤ envelope everywhere, equal at the extrema, which
+    // fall half a damped period apart. Tolerance 1e-12 relative (rounding only).
+    let b = bridge();
+    for &u in &[5.0, 19.0, 30.0] {
+        let theta0 = 0.03;
+        let resp = b.response(u, theta0, 0.0).unwrap();
+        for i in 0..2000 {
+            let t = 0.05 * i as f64;
+            let env = b.envelope(u, theta0, t);
+            assert!(
+                resp.displacement(t).abs() <= env * (1.0 + 1e-12),
+                "U={u} t={t}"
+            );
+        }
+        assert!((b.envelope(u, theta0, 0.0) - b.envelope_amplitude(u, theta0)).abs() < 1e-18);
+        let ratio = b.envelope(u, theta0, 100.0) / b.envelope(u, theta0, 0.0);
+        assert!((ratio - b.growth_factor(u, 100.0)).abs() < 1e-12 * ratio);
+    }
+}
+
+#[test]
+fn the_doubling_time_is_ln2_over_sigma_only_while_growing() {
+    let b = bridge();
+    assert_eq!(b.doubling_time(10.0), None);
+    assert_eq!(b.doubling_time(b.critical_speed().unwrap()), None);
+    let sigma = b.growth_rate(25.0);
+    let td = b.doubling_time(25.0).unwrap();
+    assert!((b.growth_factor(25.0, td) - 2.0).abs() < 1e-12);
+    assert!((td * sigma - std::f64::consts::LN_2).abs() < 1e-15);
+    assert!((b.torsional_period() - 5.0).abs() < 1e-12); // 0.2 Hz
+}
+
+#[test]
+fn angles_and_rotations() {
+    use zeta_solver::flutter::{degrees, radians, rotate};
+    assert!((degrees(std::f64::consts::PI) - 180.0).abs() < 1e-12);
+    assert!((radians(90.0) - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+    let (x, y) = rotate((1.0, 0.0), radians(90.0));
+    assert!(x.abs() < 1e-15 && (y - 1.0).abs() < 1e-15);
+    // A rotation keeps lengths.
+    let (x, y) = rotate((3.0, 4.0), 0.7);
+    assert!((x * x + y * y - 25.0).abs() < 1e-12);
+}

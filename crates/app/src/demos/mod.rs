@@ -169,7 +169,7 @@ const REGISTRY: &[(&str, Factory)] = &[
     ("analogy", || Box::new(analogy::Analogy)),
     ("resonance", || Box::new(resonance::Resonance::default())),
     ("integrators", || Box::new(integrators::Integrators::new())),
-    ("flutter", || Box::new(flutter::Flutter::default())),
+    ("flutter", || Box::new(Typed::new(flutter::Flutter))),
     ("nonlinear", || Box::new(nonlinear::Nonlinear::default())),
     ("quarter-car-2dof", || {
         Box::new(quarter_car_2dof::QuarterCar2Dof::default())
