@@ -93,6 +93,9 @@ pub struct Comparison {
     pub nonlinear: Vec<[f64; 2]>,
     /// Linear states `[x, x']` (closed form, see [`NonlinearModel::linear_model`]).
     pub linear: Vec<[f64; 2]>,
+    /// Whether the nonlinear run was cut short because it left the allowed travel or
+    /// stopped being finite (see [`NonlinearModel::compare_steps`]).
+    pub escaped: bool,
 }
 
 impl Comparison {
@@ -112,6 +115,25 @@ impl Comparison {
     /// `T_nonlinear / T_linear` (-): below 1 for a hardening spring, above for softening.
     pub fn period_ratio(&self) -> Option<f64> {
         Some(self.period_nonlinear()? / self.period_linear()?)
+    }
+
+    /// The largest finite `|x_nl(t) − x_lin(t)|` (m) and the first time (s) it occurs;
+    /// `(0, 0)` on an empty run.
+    pub fn largest_deviation(&self) -> (f64, f64) {
+        self.nonlinear
+            .iter()
+            .zip(&self.linear)
+            .zip(&self.t)
+            .map(|((a, b), &t)| ((a[0] - b[0]).abs(), t))
+            .filter(|d| d.0.is_finite())
+            .fold((0.0, 0.0), |acc, d| if d.0 > acc.0 { d } else { acc })
+    }
+
+    /// The nonlinear displacement (m) at time `t` (s), linearly interpolated on the grid
+    /// and held at the ends; `None` on an empty run.
+    pub fn nonlinear_at(&self, t: f64) -> Option<f64> {
+        let x: Vec<f64> = self.nonlinear.iter().map(|s| s[0]).collect();
+        crate::grid::interpolate(&self.t, &x, t)
     }
 
     /// `max |x_nl(t) − x_lin(t)|` over the grid (m).
@@ -146,6 +168,13 @@ pub fn period_from_zero_crossings(t: &[f64], x: &[f64]) -> Option<f64> {
     }
     let first = first?;
     (count >= 2).then(|| (last - first) / (count - 1) as f64)
+}
+
+/// Undamped period of the linear spring alone, `T = 2π·√(m/k)` (s), for mass `m` (kg) and
+/// spring rate `k` (N/m); `None` unless both are positive and finite.
+pub fn undamped_period(mass: f64, k: f64) -> Option<f64> {
+    let t = std::f64::consts::TAU * (mass / k).sqrt();
+    (mass > 0.0 && k > 0.0 && t.is_finite()).then_some(t)
 }
 
 impl NonlinearModel {
@@ -260,7 +289,46 @@ impl NonlinearModel {
             t: sol.t,
             nonlinear: sol.y,
             linear,
+            escaped: false,
         })
+    }
+
+    /// Like [`Self::compare`], on the grid `t_i = i·h`, `i = 0 … steps`, and never failing:
+    /// the nonlinear run is cut (and [`Comparison::escaped`] set) at the first state that
+    /// is not finite or whose travel `|x|` exceeds `escape` (m) — a softening spring that
+    /// gave way. The linear closed form fills the same (possibly shortened) grid.
+    pub fn compare_steps(&self, x0: f64, v0: f64, h: f64, steps: usize, escape: f64) -> Comparison {
+        let n = steps + 1;
+        let mut nonlinear = vec![[0.0; 2]; n];
+        let mut valid = match self.simulate_into(x0, v0, h, &mut nonlinear) {
+            Ok(()) => n,
+            // Slot i holds the state at i·h; the failing step was the one to `t`.
+            Err(IntegrationError::NonFinite { t }) => ((t / h).round() as usize).min(n),
+            Err(_) => 0,
+        };
+        let mut escaped = valid < n;
+        if let Some(i) = nonlinear[..valid]
+            .iter()
+            .position(|p| p[0].is_nan() || p[0].abs() > escape)
+        {
+            valid = i;
+            escaped = true;
+        }
+        nonlinear.truncate(valid);
+        let t: Vec<f64> = (0..valid).map(|i| i as f64 * h).collect();
+        let linear = match self.linear_model() {
+            Ok(sys) => {
+                let lin = FreeResponse::new(sys, x0, v0);
+                t.iter().map(|&t| lin.state(t)).collect()
+            }
+            Err(_) => vec![[f64::NAN; 2]; valid],
+        };
+        Comparison {
+            t,
+            nonlinear,
+            linear,
+            escaped,
+        }
     }
 
     /// Period (s) of the free response from `x(0) = amplitude`, `x'(0) = 0`, measured from
@@ -286,12 +354,17 @@ impl NonlinearModel {
     /// velocity reverses sign or `|x'| ≤ v_ε` while `|F_s(x) + F_stop(x)| ≤ F_c`. `None`
     /// without friction or if it never happens in `sol`.
     pub fn sticking(&self, sol: &Solution<2>) -> Option<Sticking> {
+        self.sticking_in(&sol.t, &sol.y)
+    }
+
+    /// [`Self::sticking`] on a run given as times `t` (s) and states `y` = `[x, x']`.
+    pub fn sticking_in(&self, t: &[f64], y: &[[f64; 2]]) -> Option<Sticking> {
         let c = &self.cfg;
         if c.friction <= 0.0 {
             return None;
         }
         let mut prev_v: Option<f64> = None;
-        for (&t, s) in sol.t.iter().zip(&sol.y) {
+        for (&t, s) in t.iter().zip(y) {
             let [x, v] = *s;
             let reversed = prev_v.is_some_and(|p| p * v < 0.0);
             let slow = v.abs() <= c.friction_velocity;

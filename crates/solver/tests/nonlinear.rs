@@ -193,3 +193,42 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn compare_steps_matches_compare_and_cuts_an_escaping_run() {
+    // Same grid i·h as `compare` when t_end is a whole number of steps.
+    let m = model(NonlinearConfig { k3: 0.3, ..unit() });
+    let a = m.compare(0.5, 0.0, 10.0, 1e-2).unwrap();
+    let b = m.compare_steps(0.5, 0.0, 1e-2, 1000, 1.0);
+    assert_eq!(a.t.len(), b.t.len());
+    assert!(!b.escaped);
+    for (p, q) in a.nonlinear.iter().zip(&b.nonlinear) {
+        assert!((p[0] - q[0]).abs() < 1e-12);
+    }
+    // A softening spring released beyond √(−k/k3) = 1 m runs away: cut at |x| > 1.5.
+    let soft = model(NonlinearConfig { k3: -1.0, ..unit() });
+    let run = soft.compare_steps(1.2, 0.0, 1e-2, 1000, 1.5);
+    assert!(run.escaped && run.t.len() < 1001 && !run.t.is_empty());
+    assert!(run.nonlinear.iter().all(|s| s[0].abs() <= 1.5));
+    assert_eq!(run.linear.len(), run.t.len());
+}
+
+#[test]
+fn deviation_interpolation_and_period_helpers() {
+    let m = model(NonlinearConfig { k3: 0.5, ..unit() });
+    let cmp = m.compare_steps(1.0, 0.0, 1e-2, 2000, 10.0);
+    let (dev, at) = cmp.largest_deviation();
+    assert!((dev - cmp.max_deviation()).abs() < 1e-15);
+    let i = cmp.t.iter().position(|&t| t == at).unwrap();
+    assert!(((cmp.nonlinear[i][0] - cmp.linear[i][0]).abs() - dev).abs() < 1e-15);
+    // Interpolation hits grid values and holds the ends.
+    assert_eq!(cmp.nonlinear_at(cmp.t[7]), Some(cmp.nonlinear[7][0]));
+    assert_eq!(cmp.nonlinear_at(-1.0), Some(1.0));
+    let mid = cmp.nonlinear_at(0.5 * (cmp.t[3] + cmp.t[4])).unwrap();
+    assert!((mid - 0.5 * (cmp.nonlinear[3][0] + cmp.nonlinear[4][0])).abs() < 1e-15);
+    // T = 2π√(m/k).
+    let t = zeta_solver::nonlinear::undamped_period(300.0, 24_000.0).unwrap();
+    assert!((t - std::f64::consts::TAU * (300.0f64 / 24_000.0).sqrt()).abs() < 1e-15);
+    assert_eq!(zeta_solver::nonlinear::undamped_period(300.0, 0.0), None);
+    assert_eq!(zeta_solver::nonlinear::undamped_period(-1.0, 1.0), None);
+}

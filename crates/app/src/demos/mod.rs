@@ -170,7 +170,9 @@ const REGISTRY: &[(&str, Factory)] = &[
     ("resonance", || Box::new(resonance::Resonance::default())),
     ("integrators", || Box::new(integrators::Integrators::new())),
     ("flutter", || Box::new(Typed::new(flutter::Flutter))),
-    ("nonlinear", || Box::new(nonlinear::Nonlinear::default())),
+    ("nonlinear", || {
+        Box::new(Typed::new(nonlinear::Nonlinear::default()))
+    }),
     ("quarter-car-2dof", || {
         Box::new(quarter_car_2dof::QuarterCar2Dof::default())
     }),
