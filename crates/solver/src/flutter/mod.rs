@@ -1,5 +1,9 @@
 //! Flutter: a torsional mode whose effective damping falls with wind speed, until it goes
-//! negative and the twisting grows (the 1940 Tacoma Narrows failure, as a teaching model).
+//! negative and the twisting grows (the 1940 Tacoma Narrows failure).
+//!
+//! Two models: [`scanlan::ScanlanModel`], the deck on Scanlan's flutter derivatives
+//! `A₂*(K)`, `A₃*(K)` (tabulated in [`derivatives`]) with an amplitude-dependent bound on the
+//! motion, and, here, [`FlutterModel`], the *simplest picture*:
 //!
 //! Model: one torsional mode of the deck, angle `θ(t)` \[rad\],
 //!
@@ -30,6 +34,12 @@
 //! assert!(bridge.growth_rate(15.0) < 0.0 && bridge.growth_rate(25.0) > 0.0);
 //! assert_eq!(bridge.regime(25.0).unwrap(), Regime::NegativelyDamped);
 //! ```
+
+pub mod derivatives;
+pub mod scanlan;
+
+pub use derivatives::{DeckSection, DerivativeTable};
+pub use scanlan::{FlutterState, ScanlanConfig, ScanlanModel, TwistHistory};
 
 use crate::complex::Complex;
 use crate::error::{finite, non_negative, positive, ModelError};
