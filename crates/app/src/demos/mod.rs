@@ -169,7 +169,9 @@ const REGISTRY: &[(&str, Factory)] = &[
     ("analogy", || Box::new(analogy::Analogy)),
     ("resonance", || Box::new(resonance::Resonance::default())),
     ("integrators", || Box::new(integrators::Integrators::new())),
-    ("flutter", || Box::new(Typed::new(flutter::Flutter))),
+    ("flutter", || {
+        Box::new(Typed::new(flutter::Flutter::default()))
+    }),
     ("nonlinear", || {
         Box::new(Typed::new(nonlinear::Nonlinear::default()))
     }),

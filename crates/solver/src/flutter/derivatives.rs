@@ -28,7 +28,7 @@
 //! - **H-section `A₂*`**: a piecewise-linear curve chosen so that, with the 1940 deck of
 //!   [`super::scanlan::ScanlanConfig::tacoma_1940`] (its `I` and `ζ_s` are themselves
 //!   assumptions), torsional flutter starts near 18 m/s (≈ 40 mph) and the twist grows over
-//!   tens of minutes at 19 m/s, as on 7 November 1940. Sign change between `V_r` = 6 and 7.
+//!   tens of minutes at 19 m/s, as on 7 November 1940. Zero at `V_r` = 6, negative below.
 //! - **Box `A₂*`**: `A₂* = −0.025·V_r`, a straight line that stays negative.
 //! - **`A₃*` of both**: the quasi-steady limit `A₃* = C_M′·(V_r/2π)² = C_M′/K²`, with the
 //!   moment slope `C_M′` = 0.3 /rad assumed for the H-section and `C_M′ = π/2` /rad for the
@@ -46,28 +46,36 @@ pub const H_SECTION_MOMENT_SLOPE: f64 = 0.3;
 /// Moment slope `C_M′ = π/2` \[1/rad\] of a thin airfoil about mid-chord, used for the box.
 pub const BOX_MOMENT_SLOPE: f64 = FRAC_PI_2;
 
+/// Number of table nodes.
+const N: usize = 41;
+
 /// Reduced velocities `V_r = U/(fB)` \[-\] of the table nodes.
-const NODES: [f64; 17] = [
+const NODES: [f64; N] = [
     0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0, 13.0, 14.0, 15.0, 16.0,
+    17.0, 18.0, 19.0, 20.0, 21.0, 22.0, 23.0, 24.0, 25.0, 26.0, 27.0, 28.0, 29.0, 30.0, 31.0, 32.0,
+    33.0, 34.0, 35.0, 36.0, 37.0, 38.0, 39.0, 40.0,
 ];
 
 /// `A₂*` of the H-section at [`NODES`] (teaching approximation, see the module doc).
-const H_SECTION_A2: [f64; 17] = [
-    0.0, -0.010, -0.020, -0.030, -0.035, -0.030, 0.0, 0.080, 0.200, 0.330, 0.460, 0.590, 0.720,
-    0.850, 0.980, 1.110, 1.240,
+const H_SECTION_A2: [f64; N] = [
+    0.0, -0.01, -0.02, -0.03, -0.035, -0.03, 0.0, 0.08, 0.2, 0.33, 0.46, 0.59, 0.72, 0.85, 0.98,
+    1.11, 1.24, 1.37, 1.5, 1.63, 1.76, 1.89, 2.02, 2.15, 2.28, 2.41, 2.54, 2.67, 2.8, 2.93, 3.06,
+    3.19, 3.32, 3.45, 3.58, 3.71, 3.84, 3.97, 4.1, 4.23, 4.36,
 ];
 
 /// `A₂* = −0.025·V_r` of the box at [`NODES`].
-const BOX_A2: [f64; 17] = [
-    0.0, -0.025, -0.050, -0.075, -0.100, -0.125, -0.150, -0.175, -0.200, -0.225, -0.250, -0.275,
-    -0.300, -0.325, -0.350, -0.375, -0.400,
+const BOX_A2: [f64; N] = [
+    0.0, -0.025, -0.05, -0.075, -0.1, -0.125, -0.15, -0.175, -0.2, -0.225, -0.25, -0.275, -0.3,
+    -0.325, -0.35, -0.375, -0.4, -0.425, -0.45, -0.475, -0.5, -0.525, -0.55, -0.575, -0.6, -0.625,
+    -0.65, -0.675, -0.7, -0.725, -0.75, -0.775, -0.8, -0.825, -0.85, -0.875, -0.9, -0.925, -0.95,
+    -0.975, -1.0,
 ];
 
 /// `A₃* = C_M′·(V_r/2π)²` at [`NODES`] for moment slope `slope` \[1/rad\].
-const fn quasi_steady_a3(slope: f64) -> [f64; 17] {
-    let mut out = [0.0; 17];
+const fn quasi_steady_a3(slope: f64) -> [f64; N] {
+    let mut out = [0.0; N];
     let mut i = 0;
-    while i < 17 {
+    while i < N {
         let k_inv = NODES[i] / TAU;
         out[i] = slope * k_inv * k_inv;
         i += 1;
@@ -75,8 +83,8 @@ const fn quasi_steady_a3(slope: f64) -> [f64; 17] {
     out
 }
 
-const H_SECTION_A3: [f64; 17] = quasi_steady_a3(H_SECTION_MOMENT_SLOPE);
-const BOX_A3: [f64; 17] = quasi_steady_a3(BOX_MOMENT_SLOPE);
+const H_SECTION_A3: [f64; N] = quasi_steady_a3(H_SECTION_MOMENT_SLOPE);
+const BOX_A3: [f64; N] = quasi_steady_a3(BOX_MOMENT_SLOPE);
 
 /// A table of `A₂*` and `A₃*` against reduced velocity, with where it came from.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,38 +1,130 @@
-//! The flutter demo's plots: effective damping against wind speed, the root locus as the
-//! wind rises, and the deck's twist over time.
+//! The flutter demo's plots: `A₂*` against reduced velocity, `ζ_eff(U)`, the root locus and
+//! the twist over minutes.
 
-use super::{text, Results, LOCUS_SAMPLES, SAMPLES, U_MAX};
+use super::{text, Aero, Results, Section, U_MAX};
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
 use crate::format::si;
-use crate::plot::{curve, Ink};
-use zeta_solver::flutter::degrees;
+use crate::plot::{fit_range, thin, zip, Ink};
+use zeta_solver::flutter::{degrees, DeckSection};
 
+pub(super) const DERIVATIVE_TITLE: &str = "Flutter derivative A₂* and the flutter threshold";
 pub(super) const DAMPING_TITLE: &str = "Effective damping against wind speed";
 pub(super) const LOCUS_TITLE: &str = "Root locus as the wind rises";
-pub(super) const RESPONSE_TITLE: &str = "Deck twist θ(t)";
+pub(super) const RESPONSE_TITLE: &str = "Deck twist θ(t) over minutes";
 
-/// ζ_eff(U) from calm air to [`U_MAX`], the current wind marked, the critical speed drawn.
+/// Most points drawn of the twist history.
+const TWIST_POINTS: usize = 4000;
+
+/// `A₂*` above which the wind's moment beats the structural damping, to first order:
+/// `4Iζ_s/(ρB⁴) = 2ζ_s/q`.
+pub(super) fn threshold(r: &Results) -> f64 {
+    2.0 * r.p.zeta_s / r.model.aero_factor()
+}
+
+/// `A₂*` along the plotted wind range (for the simplest picture, the `A₂*` it amounts
+/// to), the other section for comparison, the threshold and the current point.
+pub(super) fn derivative(r: &Results) -> Figure {
+    let along: Vec<(f64, f64)> = r.locus.iter().map(|s| (s.reduced_velocity, s.a2)).collect();
+    let (label, other) = match (r.p.aero, r.p.section) {
+        (Aero::Simplest, _) => (
+            "A₂* the simplest picture amounts to",
+            (DeckSection::HSection, "1940 H-section (teaching approx.)"),
+        ),
+        (Aero::Derivatives, Section::H) => (
+            "1940 H-section (teaching approx.)",
+            (
+                DeckSection::StreamlinedBox,
+                "streamlined box (teaching approx.)",
+            ),
+        ),
+        (Aero::Derivatives, Section::Box) => (
+            "streamlined box (teaching approx.)",
+            (DeckSection::HSection, "1940 H-section (teaching approx.)"),
+        ),
+    };
+    let table = other.0.table();
+    let x_hi = along.iter().map(|p| p.0).fold(16.0, f64::max) * 1.05;
+    let others: Vec<(f64, f64)> = zip(table.reduced_velocity, table.a2)
+        .into_iter()
+        .filter(|p| p.0 <= x_hi)
+        .collect();
+    let a2_crit = threshold(r);
+    let y = fit_range(
+        along
+            .iter()
+            .chain(&others)
+            .map(|p| p.1)
+            .chain([a2_crit, 0.0]),
+        0.08,
+        0.05,
+    );
+    let y = (y.0, y.1 + 0.25 * (y.1 - y.0)); // room for the legend
+    let mut fig = Figure::plot(
+        DERIVATIVE_TITLE,
+        Axis::linear("reduced velocity U/(f·B) = 2π/K", "", (0.0, x_hi)),
+        Axis::linear("A₂*", "", y),
+    )
+    .with_line(other.1, others, LineStyle::dashed(Ink::Green, 1.5))
+    .with_line(
+        format!("threshold 4Iζ_s/(ρB⁴) = {}", si(a2_crit, "", 3)),
+        vec![(0.0, a2_crit), (x_hi, a2_crit)],
+        LineStyle::dotted(Ink::Purple, 1.5),
+    )
+    .with_line(label, along, LineStyle::solid(Ink::Blue, 2.5));
+    if let Some(s) = r.state {
+        fig = fig.with_marker(Marker::dot(
+            format!(
+                "U = {}: K = {}",
+                si(r.p.u, "m/s", 3),
+                text::reduced_frequency(&s)
+            ),
+            (s.reduced_velocity, s.a2),
+            Ink::Vermillion,
+        ));
+    }
+    fig.with_origin_lines()
+        .described(text::describe_derivative(r, a2_crit))
+}
+
+/// ζ_eff(U) from calm air to [`U_MAX`], the current wind marked, the critical speed drawn;
+/// with flutter derivatives, the simplest picture's straight line for comparison.
 pub(super) fn damping(r: &Results) -> Figure {
-    let m = &r.model;
-    let line = curve((0.0, U_MAX), LOCUS_SAMPLES, |u| m.effective_damping(u));
-    let (lo, hi) = finite_extent(line.iter().map(|p| p.1).chain([0.0])).unwrap_or((-0.01, 0.01));
-    let y = padded((lo, hi.max(lo + 1e-4)), 0.1);
+    let line: Vec<(f64, f64)> = r
+        .locus
+        .iter()
+        .map(|s| (s.wind_speed, s.damping_ratio()))
+        .collect();
+    let simplest = (r.p.aero == Aero::Derivatives)
+        .then(|| vec![(0.0, r.p.zeta_s), (U_MAX, r.p.zeta_s - r.p.slope * U_MAX)]);
+    let values = line
+        .iter()
+        .chain(simplest.iter().flatten())
+        .map(|p| p.1)
+        .chain([0.0]);
+    let (lo, hi) = finite_extent(values).unwrap_or((-0.01, 0.01));
+    let mut y = padded((lo, hi.max(lo + 1e-4)), 0.1);
+    y.1 += 0.3 * (y.1 - y.0); // room for the legend
     let mut fig = Figure::plot(
         DAMPING_TITLE,
         Axis::linear("wind speed U", "m/s", (0.0, U_MAX)),
         Axis::linear("effective damping ratio ζ_eff", "", y),
-    )
-    .with_line(
-        "ζ_eff(U) = ζ_s − g·U",
-        line,
-        LineStyle::solid(Ink::Blue, 2.5),
-    )
-    .with_marker(Marker::dot(
-        format!("U = {}", si(r.u, "m/s", 3)),
-        (r.u, r.zeta),
-        Ink::Vermillion,
-    ));
-    if let Some(uc) = m.critical_speed().filter(|&uc| uc <= U_MAX) {
+    );
+    if let Some(s) = simplest {
+        fig = fig.with_line(
+            "simplest picture ζ_s − g·U",
+            s,
+            LineStyle::dashed(Ink::Green, 1.5),
+        );
+    }
+    fig = fig.with_line("ζ_eff(U)", line, LineStyle::solid(Ink::Blue, 2.5));
+    if let Some(s) = r.state {
+        fig = fig.with_marker(Marker::dot(
+            format!("U = {}", si(r.p.u, "m/s", 3)),
+            (r.p.u, s.damping_ratio()),
+            Ink::Vermillion,
+        ));
+    }
+    if let Some(uc) = r.u_crit.filter(|&uc| uc <= U_MAX) {
         fig = fig
             .with_line(
                 format!("U_crit = {}", si(uc, "m/s", 3)),
@@ -44,96 +136,84 @@ pub(super) fn damping(r: &Results) -> Figure {
     fig.with_origin_lines().described(text::describe_damping(r))
 }
 
-/// The upper pole of each locus sample `(Re s, Im s)`.
-fn upper_branch(r: &Results) -> Vec<(f64, f64)> {
-    r.locus
-        .iter()
-        .map(|p| {
-            let s = if p.poles[0].im >= p.poles[1].im {
-                p.poles[0]
-            } else {
-                p.poles[1]
-            };
-            (s.re, s.im)
-        })
-        .collect()
-}
-
-/// The pole pair from calm air to [`U_MAX`], with the poles at the current wind and the
+/// The pole pair from calm air to [`U_MAX`], the poles at the current wind and the
 /// crossing at the critical speed.
 pub(super) fn locus(r: &Results) -> Figure {
-    let m = &r.model;
-    let upper = upper_branch(r);
+    let upper: Vec<(f64, f64)> = r.locus.iter().map(|s| (s.growth_rate(), s.omega)).collect();
     let lower: Vec<(f64, f64)> = upper.iter().map(|&(re, im)| (re, -im)).collect();
-    let w = m.config().omega;
+    let w = r.model.still_air_omega();
     let (re_lo, re_hi) =
         finite_extent(upper.iter().map(|p| p.0).chain([0.0])).unwrap_or((-0.01 * w, 0.01 * w));
     let x = padded((re_lo, re_hi.max(re_lo + 1e-6 * w)), 0.15);
     // Taller above than below, so the legend in the upper right clears the upper branch.
     let y = (-1.5 * w, 2.2 * w);
-    let start = upper.first().copied();
-    let description = text::describe_locus(r, start.map_or(f64::NAN, |p| p.0));
     let mut fig = Figure::plot(
         LOCUS_TITLE,
         Axis::linear("real part Re s", "1/s", x),
         Axis::linear("imaginary part Im s", "rad/s", y),
-    )
-    .with_line("upper pole", upper, LineStyle::solid(Ink::Blue, 2.5))
-    .with_line("lower pole", lower, LineStyle::dashed(Ink::Blue, 2.5));
-    if let Some(start) = start {
+    );
+    if let Some(&start) = upper.first() {
         fig = fig.with_marker(Marker::dot("U = 0", start, Ink::Green));
     }
-    if let Ok(poles) = m.poles(r.u) {
-        for (i, s) in poles.iter().enumerate() {
-            let label = if i == 0 {
-                format!("U = {}", si(r.u, "m/s", 3))
-            } else {
-                String::new()
-            };
-            fig = fig.with_marker(Marker::cross(label, (s.re, s.im), Ink::Vermillion));
-        }
+    fig = fig
+        .with_line("upper pole", upper, LineStyle::solid(Ink::Blue, 2.5))
+        .with_line("lower pole", lower, LineStyle::dashed(Ink::Blue, 2.5));
+    if let Some(s) = r.state {
+        let [p1, p2] = s.poles();
+        fig = fig
+            .with_marker(Marker::cross(
+                format!("U = {}", si(r.p.u, "m/s", 3)),
+                (p1.re, p1.im),
+                Ink::Vermillion,
+            ))
+            .with_marker(Marker::cross("", (p2.re, p2.im), Ink::Vermillion));
     }
     if let Some(wd) = text::crossing_frequency(r) {
         fig = fig.with_marker(Marker::dot("U_crit", (0.0, -wd), Ink::Purple));
     }
-    fig.with_origin_lines().described(description)
+    fig.with_origin_lines().described(text::describe_locus(r))
 }
 
-/// θ(t) in degrees over the window, inside its envelope ±A·e^(σt).
+/// θ(t) in degrees over the window (in minutes), inside its amplitude ±a(t), with the
+/// limit cycle where there is one.
 pub(super) fn response(r: &Results) -> Figure {
-    let m = &r.model;
-    let x = Axis::linear("time t", "s", (0.0, r.t_end));
-    let Ok(resp) = m.response(r.u, r.theta0, 0.0) else {
-        return Figure::plot(RESPONSE_TITLE, x, Axis::linear("twist θ", "°", (-1.0, 1.0)))
-            .described("No response: invalid parameters.");
-    };
-    let theta = curve((0.0, r.t_end), SAMPLES, |t| degrees(resp.displacement(t)));
-    let envelope = |sign: f64| {
-        curve((0.0, r.t_end), 101, |t| {
-            degrees(sign * m.envelope(r.u, r.theta0, t))
-        })
-    };
-    let amp = m.envelope_amplitude(r.u, r.theta0);
-    let end_factor = m.growth_factor(r.u, r.t_end);
-    let (lo, hi) = finite_extent(
-        theta
-            .iter()
-            .map(|p| p.1)
-            .chain([degrees(amp) * end_factor.max(1.0)]),
-    )
-    .unwrap_or((-1.0, 1.0));
-    let reach = lo.abs().max(hi.abs()).max(1e-9);
+    let h = &r.history;
+    let minutes: Vec<f64> = h.t.iter().map(|t| t / 60.0).collect();
+    let deg =
+        |xs: &[f64], sign: f64| -> Vec<f64> { xs.iter().map(|&x| sign * degrees(x)).collect() };
+    let theta = thin(&zip(&minutes, &deg(&h.theta, 1.0)), TWIST_POINTS);
+    let upper = thin(&zip(&minutes, &deg(&h.amplitude, 1.0)), TWIST_POINTS / 4);
+    let lower = thin(&zip(&minutes, &deg(&h.amplitude, -1.0)), TWIST_POINTS / 4);
+    let t_end = r.window / 60.0;
+    let limit = r.limit.map(degrees);
+    let reach = upper
+        .iter()
+        .map(|p| p.1)
+        .chain(limit)
+        .fold(r.p.theta0_deg, f64::max)
+        .max(1e-6);
     // Head room for the legend above the curve.
-    let y = (-1.15 * reach, 1.5 * reach);
-    let style = LineStyle::dashed(Ink::Vermillion, 1.5);
-    Figure::plot(RESPONSE_TITLE, x, Axis::linear("twist θ", "°", y))
-        .with_line("envelope ±A·e^(σt)", envelope(1.0), style)
-        .with_line("", envelope(-1.0), style)
-        .with_line(
-            format!("θ(t), U = {}", si(r.u, "m/s", 3)),
-            theta,
-            LineStyle::solid(Ink::Blue, 2.0),
-        )
-        .with_origin_lines()
-        .described(text::describe_response(r, end_factor))
+    let y = (-1.15 * reach, 1.55 * reach);
+    let envelope = LineStyle::dashed(Ink::Vermillion, 1.5);
+    let mut fig = Figure::plot(
+        RESPONSE_TITLE,
+        Axis::linear("time t", "min", (0.0, t_end)),
+        Axis::linear("twist θ", "°", y),
+    )
+    .with_line(
+        format!("θ(t), U = {}", si(r.p.u, "m/s", 3)),
+        theta,
+        LineStyle::solid(Ink::Blue, 1.0),
+    )
+    .with_line("amplitude ±a(t)", upper, envelope)
+    .with_line("", lower, envelope);
+    if let Some(lc) = limit {
+        fig = fig.with_line(
+            format!("limit cycle ±{}", si(lc, "°", 3)),
+            vec![(0.0, lc), (t_end, lc)],
+            LineStyle::dotted(Ink::Purple, 1.5),
+        );
+    }
+    fig.with_origin_lines()
+        .described(text::describe_response(r))
 }

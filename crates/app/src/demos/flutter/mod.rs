@@ -1,62 +1,130 @@
-//! `flutter`: the Tacoma Narrows bridge as single-degree-of-freedom torsional flutter.
+//! `flutter`: the Tacoma Narrows deck in a steady wind, on Scanlan's flutter derivatives.
 //!
-//! One torsional mode `θ'' + 2ζ_eff(U)·ω·θ' + ω²·θ = 0` with `ζ_eff(U) = ζ_s − g·U`
-//! (all maths in [`zeta_solver::flutter`]). Plots: the effective damping against wind
-//! speed with the critical speed, the root locus as the wind rises, and the twist `θ(t)`;
-//! a table contrasts self-excited flutter with forced resonance; the schematic is the deck
-//! cross-section twisting in the wind.
-//!
-//! Units: `U` in m/s, `omega` in rad/s, `slope` in s/m (damping ratio lost per m/s of
-//! wind), `theta0` in degrees.
+//! One torsional mode whose damping and stiffness come from the flutter derivatives
+//! `A₂*(K)`, `A₃*(K)` of the deck's section, its frequency iterated at each wind speed, with
+//! an amplitude-dependent bound on the motion (all maths in
+//! [`zeta_solver::flutter::scanlan`]). The linear model `ζ_eff = ζ_s − g·U` stays available
+//! as the "simplest picture". Plots: `A₂*` against reduced velocity with the current point,
+//! `ζ_eff(U)`, the root locus, and the twist over minutes; the schematic is the deck
+//! cross-section twisting in the wind. Angles are in degrees throughout.
 
 mod figures;
 mod schematic;
 mod text;
 
 use super::Model;
-use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::declare::{Choice, Declaration, Param, ReadoutDef};
 use crate::figure::Figure;
 use crate::spec::{PlotSpec, Preset};
+use zeta_solver::flutter::scanlan::{Aerodynamics, SATURATION_DEG, TACOMA_INERTIA, TACOMA_WIDTH};
 use zeta_solver::flutter::{
-    radians, FlutterConfig, FlutterModel, LocusPoint, TACOMA_FAILURE_WIND,
-    TACOMA_STRUCTURAL_DAMPING,
+    degrees, radians, DeckSection, FlutterState, ScanlanConfig, ScanlanModel, TwistHistory,
+    TACOMA_FAILURE_WIND, TACOMA_STRUCTURAL_DAMPING, TACOMA_TORSION_HZ,
 };
-use zeta_solver::Regime;
+use zeta_solver::{Regime, SecondOrder};
 
-/// Samples of the time response (≈ 16 per period over [`PERIODS`] periods).
-const SAMPLES: usize = 1000;
-/// Torsional periods shown in the time response and the animation.
-const PERIODS: f64 = 60.0;
-/// Samples of the damping line and the root locus.
+/// Samples of `ζ_eff(U)`, the root locus and the `A₂*` curve over the wind range.
 const LOCUS_SAMPLES: usize = 201;
 /// Highest wind speed on the slider and the plots \[m/s\].
 const U_MAX: f64 = 40.0;
+/// RK4 steps per period of the simulated twist.
+const STEPS_PER_PERIOD: usize = 20;
+/// Damping ratio lost per m/s in the simplest picture's preset: `U_crit` at the failure wind.
+const SIMPLEST_SLOPE: f64 = TACOMA_STRUCTURAL_DAMPING / TACOMA_FAILURE_WIND;
 
-/// The Tacoma Narrows flutter demo. Stateless: everything follows from the parameters.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Flutter;
+/// Which model of the wind's moment.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Aero {
+    /// Scanlan's flutter derivatives of the chosen section.
+    #[default]
+    Derivatives,
+    /// The simplest picture `ζ_eff = ζ_s − g·U`.
+    Simplest,
+}
+
+impl Choice for Aero {
+    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
+        (
+            Aero::Derivatives,
+            "scanlan",
+            "flutter derivatives (Scanlan)",
+        ),
+        (
+            Aero::Simplest,
+            "linear",
+            "simplest picture: ζ_eff = ζ_s − g·U",
+        ),
+    ];
+}
+
+/// The deck section, which decides its flutter derivatives.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Section {
+    /// The 1940 H-section.
+    #[default]
+    H,
+    /// A streamlined box girder.
+    Box,
+}
+
+impl Choice for Section {
+    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
+        (Section::H, "h", "1940 H-section (plate girders)"),
+        (Section::Box, "box", "streamlined box girder"),
+    ];
+}
+
+impl Section {
+    fn deck(self) -> DeckSection {
+        match self {
+            Section::H => DeckSection::HSection,
+            Section::Box => DeckSection::StreamlinedBox,
+        }
+    }
+}
+
+/// The Tacoma Narrows flutter demo. Keeps the last twist history for the animation.
+#[derive(Debug, Clone, Default)]
+pub struct Flutter {
+    last: Option<TwistHistory>,
+}
 
 /// Typed parameters, filled from the declaration.
 #[derive(Debug, Default, Clone, Copy)]
 pub struct P {
     /// Wind speed `U` \[m/s\].
     u: f64,
+    aero: Aero,
+    section: Section,
+    /// Deck width `B` \[m\].
+    width: f64,
+    /// Mass moment of inertia per length `I` \[kg·m²/m\].
+    inertia: f64,
+    /// Still-air torsional frequency `f₀` \[Hz\].
+    f0: f64,
     /// Structural damping ratio `ζ_s` \[-\].
     zeta_s: f64,
-    /// Torsional natural frequency `ω` \[rad/s\].
-    omega: f64,
-    /// Aerodynamic slope `g` \[s/m\].
-    slope: f64,
     /// Initial twist `θ₀` \[deg\].
     theta0_deg: f64,
+    /// Twist at which the wind's damping term halves `θ_s` \[deg\].
+    sat_deg: f64,
+    /// Simplest picture's slope `g` \[s/m\].
+    slope: f64,
 }
 
 impl P {
-    fn model(&self) -> Option<FlutterModel> {
-        FlutterModel::new(FlutterConfig {
-            omega: self.omega,
+    fn model(&self) -> Option<ScanlanModel> {
+        ScanlanModel::new(ScanlanConfig {
+            width: self.width,
+            inertia: self.inertia,
+            frequency: self.f0,
             structural_damping: self.zeta_s,
-            aero_slope: self.slope,
+            air_density: zeta_solver::flutter::scanlan::AIR_DENSITY,
+            saturation: radians(self.sat_deg),
+            aerodynamics: match self.aero {
+                Aero::Derivatives => Aerodynamics::Derivatives(self.section.deck()),
+                Aero::Simplest => Aerodynamics::SimplestPicture { slope: self.slope },
+            },
         })
         .ok()
     }
@@ -64,33 +132,43 @@ impl P {
 
 /// What one step computes.
 pub struct Results {
-    model: FlutterModel,
-    /// Wind speed \[m/s\].
-    u: f64,
-    /// Initial twist \[rad\].
-    theta0: f64,
-    zeta: f64,
-    sigma: f64,
+    model: ScanlanModel,
+    p: P,
+    /// The small-amplitude mode at `U`; `None` if the wind leaves no oscillation.
+    state: Option<FlutterState>,
     regime: Option<Regime>,
-    doubling: Option<f64>,
-    /// Envelope of the twist at the end of the window \[rad\].
-    amplitude_end: f64,
-    /// Plotted window \[s\]: [`PERIODS`] torsional periods.
-    t_end: f64,
-    /// Root locus from calm air to [`U_MAX`]; empty if it could not be computed.
-    locus: Vec<LocusPoint>,
+    u_crit: Option<f64>,
+    /// Limit-cycle amplitude \[rad\].
+    limit: Option<f64>,
+    /// Time from θ₀ to 90 % of the limit cycle \[s\].
+    t_large: Option<f64>,
+    /// Plotted window \[s\].
+    window: f64,
+    history: TwistHistory,
+    /// The mode from calm air to [`U_MAX`].
+    locus: Vec<FlutterState>,
 }
 
-fn tacoma_preset(label: &'static str, u: f64) -> Preset {
-    let c = FlutterConfig::tacoma_1940();
+impl Results {
+    fn amplitude_end(&self) -> Option<f64> {
+        self.history.amplitude.last().map(|&a| degrees(a))
+    }
+}
+
+fn preset(label: &'static str, u: f64, aero: Aero, section: Section) -> Preset {
     Preset {
         label,
         values: vec![
             ("U", u),
-            ("zeta_s", c.structural_damping),
-            ("omega", c.omega),
-            ("slope", c.aero_slope),
+            ("model", aero.index() as f64),
+            ("section", section.index() as f64),
+            ("B", TACOMA_WIDTH),
+            ("I", TACOMA_INERTIA),
+            ("f0", TACOMA_TORSION_HZ),
+            ("zeta_s", TACOMA_STRUCTURAL_DAMPING),
             ("theta0", 2.0),
+            ("theta_s", SATURATION_DEG),
+            ("slope", SIMPLEST_SLOPE),
         ],
     }
 }
@@ -100,91 +178,20 @@ impl Model for Flutter {
     type Results = Results;
 
     fn declare() -> Declaration<P, Results> {
-        let tacoma = FlutterConfig::tacoma_1940();
         Declaration {
             equation_mathml: text::EQUATION,
-            params: vec![
-                Param::linear(
-                    "U",
-                    "wind speed",
-                    "U",
-                    "m/s",
-                    (0.0, U_MAX, 0.1),
-                    10.0,
-                    |p, v| p.u = v,
-                ),
-                Param::linear(
-                    "zeta_s",
-                    "structural damping ratio",
-                    "ζ_s",
-                    "",
-                    (0.0, 0.05, 0.0005),
-                    TACOMA_STRUCTURAL_DAMPING,
-                    |p, v| p.zeta_s = v,
-                ),
-                Param::linear(
-                    "omega",
-                    "torsional natural frequency",
-                    "ω",
-                    "rad/s",
-                    (0.2, 6.0, 0.001),
-                    tacoma.omega,
-                    |p, v| p.omega = v,
-                ),
-                Param::linear(
-                    "slope",
-                    "aerodynamic slope (damping lost per m/s)",
-                    "g",
-                    "s/m",
-                    (0.0, 0.001, 0.000_001),
-                    tacoma.aero_slope,
-                    |p, v| p.slope = v,
-                ),
-                Param::linear(
-                    "theta0",
-                    "initial twist",
-                    "θ₀",
-                    "°",
-                    (0.1, 10.0, 0.1),
-                    2.0,
-                    |p, v| p.theta0_deg = v,
-                ),
-            ],
-            readouts: vec![
-                ReadoutDef::number("zeta_eff", "effective damping ratio ζ_eff", "", 3, |r| {
-                    Some(r.zeta)
-                }),
-                ReadoutDef::number("U_crit", "critical (flutter) speed U_crit", "m/s", 4, |r| {
-                    r.model.critical_speed()
-                }),
-                ReadoutDef::number(
-                    "growth_rate",
-                    "growth rate σ (< 0 decays)",
-                    "1/s",
-                    3,
-                    |r| Some(r.sigma),
-                ),
-                ReadoutDef::text("regime", "regime", |r| {
-                    r.regime
-                        .map_or("invalid parameters", |g: Regime| g.key())
-                        .to_string()
-                }),
-                ReadoutDef::number("doubling_time", "amplitude doubles every", "s", 3, |r| {
-                    r.doubling
-                }),
-                ReadoutDef::number(
-                    "amplitude_end",
-                    "twist amplitude at the end of the plot",
-                    "rad",
-                    3,
-                    |r| Some(r.amplitude_end),
-                ),
-            ],
+            params: params(),
+            readouts: readouts(),
             plots: vec![
+                PlotSpec {
+                    key: "derivative",
+                    title: figures::DERIVATIVE_TITLE,
+                    aspect: 1.6,
+                },
                 PlotSpec {
                     key: "damping",
                     title: figures::DAMPING_TITLE,
-                    aspect: 2.0,
+                    aspect: 1.6,
                 },
                 PlotSpec {
                     key: "locus",
@@ -197,11 +204,44 @@ impl Model for Flutter {
                     aspect: 2.2,
                 },
             ],
+            primary_plot: "response",
             presets: vec![
-                tacoma_preset("Tacoma 1940, 10 m/s (stable)", 10.0),
-                tacoma_preset("Tacoma 1940 at U_crit", TACOMA_FAILURE_WIND),
-                tacoma_preset("Tacoma 1940, 19 m/s (failure day, ≈ 42 mph)", 19.0),
-                tacoma_preset("Tacoma 1940, 30 m/s gale", 30.0),
+                preset(
+                    "Tacoma 1940, 10 m/s (stable)",
+                    10.0,
+                    Aero::Derivatives,
+                    Section::H,
+                ),
+                preset(
+                    "Tacoma 1940, 19 m/s (failure day, ≈ 42 mph)",
+                    19.0,
+                    Aero::Derivatives,
+                    Section::H,
+                ),
+                preset(
+                    "Tacoma 1940, 30 m/s gale",
+                    30.0,
+                    Aero::Derivatives,
+                    Section::H,
+                ),
+                preset(
+                    "Streamlined box deck, 19 m/s",
+                    19.0,
+                    Aero::Derivatives,
+                    Section::Box,
+                ),
+                preset(
+                    "Streamlined box deck, 40 m/s",
+                    40.0,
+                    Aero::Derivatives,
+                    Section::Box,
+                ),
+                preset(
+                    "Simplest picture, 19 m/s (ζ_eff = ζ_s − g·U)",
+                    19.0,
+                    Aero::Simplest,
+                    Section::H,
+                ),
             ],
             table: Some(text::table()),
             schematic: true,
@@ -215,46 +255,217 @@ impl Model for Flutter {
 
     fn step(&mut self, p: &P) -> Option<Results> {
         let model = p.model()?;
-        let u = p.u;
         let theta0 = radians(p.theta0_deg);
-        let t_end = PERIODS * model.torsional_period();
-        let mut locus = vec![LocusPoint::default(); LOCUS_SAMPLES];
-        if model.root_locus_into(0.0, U_MAX, &mut locus).is_err() {
-            locus.clear();
-        }
+        let state = model.state(p.u);
+        let regime = state
+            .and_then(|s| SecondOrder::new(1.0, s.damping, s.stiffness).ok())
+            .map(|sys| sys.regime());
+        let limit = model.limit_cycle(p.u);
+        let window = model.window(p.u, theta0);
+        let history = model
+            .simulate(p.u, theta0, window, STEPS_PER_PERIOD)
+            .unwrap_or_default();
+        self.last = Some(history.clone());
         Some(Results {
             model,
-            u,
-            theta0,
-            zeta: model.effective_damping(u),
-            sigma: model.growth_rate(u),
-            regime: model.regime(u).ok(),
-            doubling: model.doubling_time(u),
-            amplitude_end: model.envelope(u, theta0, t_end),
-            t_end,
-            locus,
+            p: *p,
+            state,
+            regime,
+            u_crit: model.critical_speed(),
+            limit,
+            t_large: limit.and_then(|lc| model.time_between(p.u, theta0, 0.9 * lc)),
+            window,
+            history,
+            locus: model.locus(0.0, U_MAX, LOCUS_SAMPLES),
         })
     }
 
     fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![figures::damping(r), figures::locus(r), figures::response(r)]
+        vec![
+            figures::derivative(r),
+            figures::damping(r),
+            figures::locus(r),
+            figures::response(r),
+        ]
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {
-        Some((0.0, r.t_end))
+        Some((0.0, r.window))
     }
 
     fn schematic(&self, p: &P, t: f64) -> Option<Figure> {
-        let model = p.model()?;
-        let theta0 = radians(p.theta0_deg);
-        let theta = model.response(p.u, theta0, 0.0).ok()?.displacement(t);
-        let t_end = PERIODS * model.torsional_period();
-        // Largest |θ| on the window: the envelope at its larger end.
-        let peak = model
-            .envelope(p.u, theta0, t_end)
-            .max(model.envelope_amplitude(p.u, theta0));
-        Some(schematic::deck(theta, peak, p.u, t))
+        let history = self.last.as_ref()?;
+        let peak = history.peak().max(radians(p.theta0_deg));
+        Some(schematic::deck(history.theta_at(t), peak, p.u, t))
     }
+}
+
+/// The parameter table.
+fn params() -> Vec<Param<P>> {
+    vec![
+        Param::linear(
+            "U",
+            "wind speed",
+            "U",
+            "m/s",
+            (0.0, U_MAX, 0.1),
+            19.0,
+            |p, v| p.u = v,
+        ),
+        Param::choice(
+            "model",
+            "model of the wind's moment",
+            Aero::Derivatives,
+            |p, v| p.aero = v,
+        ),
+        Param::choice("section", "deck cross-section", Section::H, |p, v| {
+            p.section = v
+        }),
+        Param::linear(
+            "B",
+            "deck width",
+            "B",
+            "m",
+            (5.0, 40.0, 0.1),
+            TACOMA_WIDTH,
+            |p, v| p.width = v,
+        ),
+        Param::log(
+            "I",
+            "mass moment of inertia per length (assumed for 1940)",
+            "I",
+            "kg·m²/m",
+            (2.0e4, 5.0e6, 1_000.0),
+            TACOMA_INERTIA,
+            |p, v| p.inertia = v,
+        ),
+        Param::linear(
+            "f0",
+            "torsional frequency in still air",
+            "f₀",
+            "Hz",
+            (0.05, 1.0, 0.001),
+            TACOMA_TORSION_HZ,
+            |p, v| p.f0 = v,
+        ),
+        Param::linear(
+            "zeta_s",
+            "structural damping ratio (assumed for 1940)",
+            "ζ_s",
+            "",
+            (0.0, 0.05, 0.0005),
+            TACOMA_STRUCTURAL_DAMPING,
+            |p, v| p.zeta_s = v,
+        ),
+        Param::linear(
+            "theta0",
+            "initial twist",
+            "θ₀",
+            "°",
+            (0.1, 10.0, 0.1),
+            2.0,
+            |p, v| p.theta0_deg = v,
+        ),
+        Param::linear(
+            "theta_s",
+            "twist at which the wind's damping halves (teaching assumption)",
+            "θ_s",
+            "°",
+            (10.0, 90.0, 1.0),
+            SATURATION_DEG,
+            |p, v| p.sat_deg = v,
+        ),
+        Param::linear(
+            "slope",
+            "simplest picture: damping lost per m/s",
+            "g",
+            "s/m",
+            (0.0, 0.001, 0.000_001),
+            SIMPLEST_SLOPE,
+            |p, v| p.slope = v,
+        ),
+    ]
+}
+
+/// The readout table.
+fn readouts() -> Vec<ReadoutDef<Results>> {
+    vec![
+        ReadoutDef::text("regime", "regime of a small twist", |r| {
+            r.regime
+                .map_or("no oscillation", |g: Regime| g.key())
+                .to_string()
+        }),
+        ReadoutDef::number(
+            "U_crit",
+            "critical (flutter) speed U_crit, searched up to 100 m/s",
+            "m/s",
+            4,
+            |r| r.u_crit,
+        ),
+        ReadoutDef::number(
+            "zeta_eff",
+            "effective damping ratio ζ_eff of a small twist",
+            "",
+            3,
+            |r| r.state.map(|s| s.damping_ratio()),
+        ),
+        ReadoutDef::number(
+            "growth_rate",
+            "growth rate σ of a small twist (< 0 decays)",
+            "1/s",
+            3,
+            |r| r.state.map(|s| s.growth_rate()),
+        ),
+        ReadoutDef::formatted("doubling_time", "a small twist doubles every", "s", |r| {
+            let t = r.state?.doubling_time()?;
+            Some((t, text::duration(t)))
+        }),
+        ReadoutDef::plain(
+            "frequency",
+            "torsional frequency in the wind f",
+            "Hz",
+            4,
+            |r| r.state.map(|s| s.frequency_hz()),
+        ),
+        ReadoutDef::number("K", "reduced frequency K = Bω/U", "", 3, |r| {
+            r.state
+                .map(|s| s.reduced_frequency)
+                .filter(|k| k.is_finite())
+        }),
+        ReadoutDef::number(
+            "reduced_velocity",
+            "reduced velocity U/(f·B) = 2π/K",
+            "",
+            3,
+            |r| r.state.map(|s| s.reduced_velocity),
+        ),
+        ReadoutDef::number("A2", "flutter derivative A₂*(K)", "", 3, |r| {
+            r.state.map(|s| s.a2)
+        }),
+        ReadoutDef::number("A3", "flutter derivative A₃*(K)", "", 3, |r| {
+            r.state.map(|s| s.a3)
+        }),
+        ReadoutDef::plain(
+            "limit_deg",
+            "limit-cycle twist amplitude (with the assumed bound θ_s)",
+            "°",
+            3,
+            |r| r.limit.map(degrees),
+        ),
+        ReadoutDef::formatted(
+            "time_to_large",
+            "time from θ₀ to 90 % of the limit cycle",
+            "s",
+            |r| r.t_large.map(|t| (t, text::duration(t))),
+        ),
+        ReadoutDef::plain(
+            "amplitude_end_deg",
+            "twist amplitude at the end of the plot",
+            "°",
+            3,
+            |r| r.amplitude_end(),
+        ),
+    ]
 }
 
 #[cfg(test)]

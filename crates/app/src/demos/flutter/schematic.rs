@@ -6,21 +6,26 @@ use crate::format::si;
 use crate::plot::Ink;
 use zeta_solver::flutter::{degrees, radians, rotate};
 
-/// Largest drawn twist of the deck \[deg\].
+/// How large a small twist is drawn \[deg\].
 const DRAWN_MAX_DEG: f64 = 30.0;
+/// Twists from this size on are drawn true to scale \[deg\].
+const TRUE_SCALE_FROM_DEG: f64 = 10.0;
+/// Largest drawn twist \[rad\] (≈ 69°): larger ones are clipped in the drawing.
+const CLIP: f64 = 1.2;
 
 /// The deck cross-section (an H: the deck plate between two plate girders, like the 1940
-/// deck, 12 units wide and 2.4 deep) twisted by `theta` \[rad\], drawn exaggerated so that
-/// the largest twist on the window, `peak` \[rad\], shows as [`DRAWN_MAX_DEG`]; wind `u`
+/// deck, 12 units wide and 2.4 deep) twisted by `theta` \[rad\]; when the largest twist on
+/// the window, `peak` \[rad\], is under [`DRAWN_MAX_DEG`] it is drawn that large; wind `u`
 /// \[m/s\] from the left, at time `t` \[s\].
 pub(super) fn deck(theta: f64, peak: f64, u: f64, t: f64) -> Figure {
-    let gain = if peak > 0.0 && peak.is_finite() {
+    // True to scale once the twist is large; small twists drawn larger.
+    let gain = if peak > 0.0 && peak < radians(TRUE_SCALE_FROM_DEG) {
         radians(DRAWN_MAX_DEG) / peak
     } else {
         1.0
     };
     let drawn = if (theta * gain).is_finite() {
-        (theta * gain).clamp(-1.2, 1.2)
+        (theta * gain).clamp(-CLIP, CLIP)
     } else {
         0.0
     };
@@ -71,17 +76,17 @@ pub(super) fn deck(theta: f64, peak: f64, u: f64, t: f64) -> Figure {
         .map(|i| rotate((7.5, 0.0), drawn * f64::from(i) / 20.0))
         .collect();
     fig = fig.with_line("", arc, LineStyle::solid(Ink::Vermillion, 2.0));
-    let shown_gain = if drawn.abs() > 0.0 && theta != 0.0 {
-        drawn / theta
+    let drawn_as = if (theta * gain).abs() > CLIP {
+        format!("drawn clipped at {}", si(degrees(CLIP), "°", 2))
+    } else if gain == 1.0 {
+        "drawn true to scale".to_string()
     } else {
-        gain
+        format!("drawn {} times larger", si(gain, "", 2))
     };
     let description = format!(
-        "Bridge deck cross-section at t = {}: twisted {} (drawn {} times larger), wind {} \
-         from the left.",
-        si(t, "s", 3),
+        "Bridge deck cross-section at t = {}: twisted {} ({drawn_as}), wind {} from the left.",
+        super::text::duration(t),
         si(degrees(theta), "°", 3),
-        si(shown_gain, "", 2),
         si(u, "m/s", 3)
     );
     fig.with_marker(Marker::text(
@@ -95,7 +100,7 @@ pub(super) fn deck(theta: f64, peak: f64, u: f64, t: f64) -> Figure {
         Ink::Black,
     ))
     .with_marker(Marker::text(
-        format!("(drawn × {})", si(shown_gain, "", 2)),
+        format!("({drawn_as})"),
         (3.5, -3.7),
         Ink::Black,
     ))
