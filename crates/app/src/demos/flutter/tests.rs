@@ -55,7 +55,7 @@ fn below_the_critical_speed_a_twist_dies_away() {
     assert_eq!(value(&f, "doubling_time"), "");
     assert_eq!(value(&f, "limit_deg"), "");
     assert!(number(&f, "amplitude_end_deg") < 2.0);
-    assert!(f.figures[3].description.contains("decays to"));
+    assert!(f.figures[3].description.contains("dies down to"));
 }
 
 #[test]

@@ -83,7 +83,7 @@ pub(super) fn response(r: &Results) -> Figure {
     fig = fig
         .with_line("linear model", lin, LineStyle::dashed(Ink::Vermillion, 2.0))
         .with_line("nonlinear (RK4)", nl, LineStyle::solid(Ink::Blue, 2.5));
-    if let Some(st) = r.sticking {
+    if let Some(st) = r.cmp.sticking {
         fig = fig.with_marker(Marker::dot("sticks", (st.t, st.x), Ink::Green));
     }
     fig.with_origin_lines()

@@ -32,7 +32,7 @@ fn linear_settings_reproduce_the_linear_model() {
     let dev = number(&f, "max_deviation");
     assert!(dev < 1e-8, "{dev}");
     let wn = (24_000.0f64 / 300.0).sqrt();
-    let c = 500.0 / (2.0 * (300.0f64 * 24_000.0).sqrt());
+    let c = 1_500.0 / (2.0 * (300.0f64 * 24_000.0).sqrt());
     let td = std::f64::consts::TAU / (wn * (1.0 - c * c).sqrt());
     assert!((number(&f, "period_linear") - td).abs() < 1e-4 * td);
 }
@@ -48,7 +48,8 @@ fn each_preset_shows_its_effect() {
     let fric = run(&preset_query("Friction stick–slip"));
     assert_eq!(value(&fric, "effect"), "stick-slip");
     let x = number(&fric, "stick_position");
-    assert!(x.abs() <= 300.0 / 24_000.0 + 1e-9, "{x}");
+    // Held where the spring cannot overcome static friction: |k·x| ≤ F_static = 1.2·300 N.
+    assert!(x.abs() <= 1.2 * 300.0 / 24_000.0 + 1e-9, "{x}");
     assert!(x.abs() > 1e-4, "{x}");
     let stop = run(&preset_query("Bump-stop impact"));
     assert_eq!(value(&stop, "effect"), "bump-stop impact");
@@ -94,4 +95,37 @@ fn every_table_row_is_a_possible_effect() {
         .rows
         .iter()
         .all(|(_, c)| c.len() == table.columns.len()));
+}
+
+#[test]
+fn the_defaults_are_a_plausible_car_corner() {
+    // m = 300 kg, k = 24 kN/m, c = 1 500 N·s/m: ζ = c/(2√(mk)) ≈ 0.28, a typical car value.
+    let f = run("");
+    assert_eq!(value(&f, "effect"), "hardening spring");
+    let wn = (24_000.0f64 / 300.0).sqrt();
+    let zeta = 1_500.0 / (2.0 * (300.0f64 * 24_000.0).sqrt());
+    assert!(zeta > 0.2 && zeta < 0.4);
+    let td = std::f64::consts::TAU / (wn * (1.0 - zeta * zeta).sqrt());
+    assert!((number(&f, "period_linear") - td).abs() < 1e-3 * td);
+}
+
+#[test]
+fn friction_holds_the_mass_for_good_once_it_stops() {
+    // 1 500 N of sliding friction on the default car from 25 mm: it sticks, and the
+    // schematic at the end of the window shows it exactly where it stuck (no creep).
+    let mut d = crate::demos::create("nonlinear").unwrap();
+    let spec = d.spec();
+    let (p, _) = crate::params::resolve_query(&spec, "friction=1500&x0=0.025&k3=0");
+    let f = d.update(&p);
+    assert_eq!(value(&f, "effect"), "stick-slip");
+    let x = number(&f, "stick_position");
+    assert!(x.abs() <= 1.2 * 1_500.0 / 24_000.0 + 1e-12, "{x}");
+    let (_, t_end) = f.time_span.unwrap();
+    let end = d.schematic(&p, t_end).unwrap();
+    let shown = crate::format::si(x, "m", 3);
+    assert!(
+        end.description.contains(&shown),
+        "{} vs {shown}",
+        end.description
+    );
 }

@@ -7,17 +7,20 @@ use crate::spec::{Preset, Table};
 use zeta_solver::nonlinear::NonlinearModel;
 
 pub(super) const SUMMARY: &str =
-    "A real suspension is only linear for small motions. Here the quarter car \
-                      gets a cubic spring (k₃ > 0 hardening, k₃ < 0 softening), a damper that is \
-                      stiffer in rebound (x′ > 0) than in compression, Coulomb friction in the \
-                      joints and rubber bump stops beyond ±gap. The motion is integrated with RK4 \
-                      and drawn against the linear model m·x″ + c̄·x′ + k·x = 0 (c̄ the mean damper \
-                      rate) from the same start. Watch where the prediction fails: the period \
-                      depends on the amplitude (hardening shortens it, softening lengthens it), \
-                      friction makes the amplitude fall in a straight line and then holds the \
-                      mass off-centre (stick–slip), a bump stop turns a smooth swing into an \
-                      impact, and an asymmetric damper shifts the mean position. x is the \
-                      suspension extension from static equilibrium (positive = body up).";
+    "A real suspension is only linear for small motions. Here the quarter car gets a cubic \
+     spring (k₃ > 0 hardening, k₃ < 0 softening), a damper that is stiffer in rebound \
+     (x′ > 0) than in compression, Coulomb friction in the joints and rubber bump stops beyond \
+     ±gap. Friction sticks and slips: while the mass slides it drags with the force F_c; once \
+     it stops, static friction holds it up to F_static = (F_static/F_c)·F_c, and it moves \
+     again only if the spring pulls harder. The motion is integrated with RK4, every stop \
+     located within its step, and drawn against the linear model m·x″ + c̄·x′ + k·x = 0 (c̄ \
+     the mean damper rate) from the same start. Watch where the prediction fails: the period \
+     depends on the amplitude (hardening shortens it, softening lengthens it), friction makes \
+     the amplitude fall in a straight line and then holds the mass off-centre for good \
+     (stick–slip), a bump stop turns a smooth swing into an impact, and an asymmetric damper \
+     shifts the mean position. The defaults are a plausible car corner: 300 kg, \
+     24 kN/m (1.4 Hz), a 1 500 N·s/m damper (ζ ≈ 0.28) and a mildly progressive spring. x is \
+     the suspension extension from static equilibrium (positive = body up).";
 
 pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mi>m</mi><mover><mi>x</mi><mo>¨</mo></mover><mo>+</mo>\
@@ -33,9 +36,10 @@ fn preset(label: &'static str, changes: &[(&'static str, f64)]) -> Preset {
         ("m", 300.0),
         ("k", 24_000.0),
         ("k3", 0.0),
-        ("c_comp", 500.0),
-        ("c_reb", 500.0),
+        ("c_comp", 1_500.0),
+        ("c_reb", 1_500.0),
         ("friction", 0.0),
+        ("stick_ratio", super::STICK_RATIO),
         ("gap", 0.06),
         ("k_stop", 0.0),
         ("x0", 0.08),
@@ -72,11 +76,13 @@ pub(super) fn presets() -> Vec<Preset> {
                 ("gap", 0.05),
                 ("x0", 0.0),
                 ("v0", 1.5),
+                ("c_comp", 500.0),
+                ("c_reb", 500.0),
             ],
         ),
         preset(
             "Asymmetric damper",
-            &[("c_comp", 300.0), ("c_reb", 1_500.0)],
+            &[("c_comp", 1_000.0), ("c_reb", 3_000.0)],
         ),
     ]
 }
@@ -123,9 +129,9 @@ pub(super) fn table() -> Table {
                 "stick-slip",
                 vec![
                     "Coulomb friction",
-                    "F_c·sgn(x′)",
+                    "F_c·sgn(x′) sliding; up to F_static at rest",
                     "amplitude falls by about 4F_c/k per cycle, in a straight line, then \
-                             the mass sticks where |k·x| ≤ F_c",
+                             the mass sticks for good where |k·x| ≤ F_static",
                     "straight-line envelope; a flat end off zero",
                 ],
             ),
@@ -174,16 +180,16 @@ pub(super) fn table() -> Table {
 pub(super) fn describe_response(r: &Results) -> String {
     let cmp = &r.cmp;
     let worst = cmp.largest_deviation();
-    let periods = match (cmp.period_nonlinear(), cmp.period_linear()) {
+    let periods = match (cmp.first_swing_nonlinear(), cmp.first_swing_linear()) {
         (Some(a), Some(b)) => format!(
-            "; period {} against the linear {} (ratio {})",
+            "; first swing {} against the linear {} (ratio {})",
             si(a, "s", 3),
             si(b, "s", 3),
             si(a / b, "", 3)
         ),
         _ => String::new(),
     };
-    let stick = r.sticking.map_or(String::new(), |st| {
+    let stick = cmp.sticking.map_or(String::new(), |st| {
         format!(
             "; friction holds the mass at {} from {}",
             si(st.x, "m", 3),
@@ -263,9 +269,10 @@ pub(super) fn describe_damper(model: &NonlinearModel, vmax: f64, c_mean: f64) ->
         si(c_mean * vmax, "N", 3),
         if cfg.friction > 0.0 {
             format!(
-                "; friction adds a jump of ±{} at v = 0 (smoothed over {})",
+                "; sliding friction adds a jump of ±{} at v = 0, and at rest static friction \
+                 holds up to ±{}",
                 si(cfg.friction, "N", 3),
-                si(cfg.friction_velocity, "m/s", 2)
+                si(model.static_limit(), "N", 3)
             )
         } else {
             String::new()
