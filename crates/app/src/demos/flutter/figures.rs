@@ -86,28 +86,33 @@ pub(super) fn derivative(r: &Results) -> Figure {
         .described(text::describe_derivative(r, a2_crit))
 }
 
-/// ζ_eff(U) from calm air to [`U_MAX`], the current wind marked, the critical speed drawn;
-/// with flutter derivatives, the simplest picture's straight line for comparison.
+/// ζ_eff(U) in percent from calm air to [`U_MAX`], the current wind marked, the critical
+/// speed drawn; with flutter derivatives, the simplest picture's straight line for
+/// comparison.
 pub(super) fn damping(r: &Results) -> Figure {
     let line: Vec<(f64, f64)> = r
         .locus
         .iter()
-        .map(|s| (s.wind_speed, s.damping_ratio()))
+        .map(|s| (s.wind_speed, 100.0 * s.damping_ratio()))
         .collect();
-    let simplest = (r.p.aero == Aero::Derivatives)
-        .then(|| vec![(0.0, r.p.zeta_s), (U_MAX, r.p.zeta_s - r.p.slope * U_MAX)]);
+    let simplest = (r.p.aero == Aero::Derivatives).then(|| {
+        vec![
+            (0.0, 100.0 * r.p.zeta_s),
+            (U_MAX, 100.0 * (r.p.zeta_s - r.p.slope * U_MAX)),
+        ]
+    });
     let values = line
         .iter()
         .chain(simplest.iter().flatten())
         .map(|p| p.1)
         .chain([0.0]);
-    let (lo, hi) = finite_extent(values).unwrap_or((-0.01, 0.01));
-    let mut y = padded((lo, hi.max(lo + 1e-4)), 0.1);
+    let (lo, hi) = finite_extent(values).unwrap_or((-1.0, 1.0));
+    let mut y = padded((lo, hi.max(lo + 1e-2)), 0.1);
     y.1 += 0.3 * (y.1 - y.0); // room for the legend
     let mut fig = Figure::plot(
         DAMPING_TITLE,
         Axis::linear("wind speed U", "m/s", (0.0, U_MAX)),
-        Axis::linear("effective damping ratio ζ_eff", "", y),
+        Axis::linear("effective damping ratio ζ_eff", "%", y),
     );
     if let Some(s) = simplest {
         fig = fig.with_line(
@@ -120,7 +125,7 @@ pub(super) fn damping(r: &Results) -> Figure {
     if let Some(s) = r.state {
         fig = fig.with_marker(Marker::dot(
             format!("U = {}", si(r.p.u, "m/s", 3)),
-            (r.p.u, s.damping_ratio()),
+            (r.p.u, 100.0 * s.damping_ratio()),
             Ink::Vermillion,
         ));
     }
@@ -193,7 +198,7 @@ pub(super) fn response(r: &Results) -> Figure {
         .fold(r.p.theta0_deg, f64::max)
         .max(1e-6);
     // Head room for the legend above the curve.
-    let y = (-1.15 * reach, 1.55 * reach);
+    let y = (-1.15 * reach, 1.9 * reach);
     let envelope = LineStyle::dashed(Ink::Vermillion, 1.5);
     let mut fig = Figure::plot(
         RESPONSE_TITLE,

@@ -290,7 +290,7 @@ fn params() -> Vec<Param<P>> {
         ),
         Param::linear(
             "stick_ratio",
-            "static-to-sliding friction ratio F_static/F_c",
+            "static-to-sliding friction ratio",
             "F_static/F_c",
             "",
             (1.0, 2.0, 0.05),

@@ -11,7 +11,7 @@ pub(super) const SUMMARY: &str =
      spring (k₃ > 0 hardening, k₃ < 0 softening), a damper that is stiffer in rebound \
      (x′ > 0) than in compression, Coulomb friction in the joints and rubber bump stops beyond \
      ±gap. Friction sticks and slips: while the mass slides it drags with the force F_c; once \
-     it stops, static friction holds it up to F_static = (F_static/F_c)·F_c, and it moves \
+     it stops, static friction holds it up to F_static, a set multiple of F_c, and it moves \
      again only if the spring pulls harder. The motion is integrated with RK4, every stop \
      located within its step, and drawn against the linear model m·x″ + c̄·x′ + k·x = 0 (c̄ \
      the mean damper rate) from the same start. Watch where the prediction fails: the period \
