@@ -5,14 +5,23 @@
 //!
 //! - spring `F_s = k·x + k3·x³` (Duffing: `k3 > 0` hardening, `k3 < 0` softening) (N);
 //! - damper `F_d = c_compression·x'` for `x' < 0`, `c_rebound·x'` for `x' > 0` (N);
-//! - Coulomb friction `F_f = F_c·tanh(x'/v_ε)` (N), a smooth stand-in for `F_c·sign(x')`
-//!   (the regularisation keeps the right-hand side smooth enough for RK4; within
-//!   `|x'| ≲ v_ε` the friction is smaller than `F_c`, so a "stuck" mass creeps slowly);
+//! - Coulomb friction with a static/kinetic switch (stick–slip): while the mass slides,
+//!   `F_f = F_c·sign(x')` with the kinetic force `F_c` (N); once it comes to rest it stays
+//!   stuck — exactly, it does not creep — as long as the restoring force
+//!   `|F_s(x) + F_stop(x)|` does not exceed the static force `F_static ≥ F_c` (N), and breaks
+//!   away into a slide only when it does;
 //! - bump stops `F_stop = k_stop·(x − gap)` for `x > gap`, `k_stop·(x + gap)` for
 //!   `x < −gap`, else 0 (N).
 //!
 //! Sign convention: `x` (m) is the suspension extension from static equilibrium (body up
 //! relative to the wheel); `x' > 0` is rebound (extension), `x' < 0` compression.
+//!
+//! Integration: RK4 on a fixed grid, with the contact state (sliding one way, sliding the
+//! other, stuck) as a mode. Within a step the right-hand side is smooth; when the velocity
+//! reaches zero inside a step, the instant is found by bisection on the step fraction (to
+//! 10⁻¹³ of the step), the stick test is made there, and the rest of the step continues in
+//! the new mode. Every reversal of the velocity — also of the asymmetric damper — is
+//! therefore resolved, not smoothed.
 //!
 //! ```
 //! use zeta_solver::nonlinear::{NonlinearConfig, NonlinearModel};
@@ -26,7 +35,7 @@
 
 use crate::error::{finite, non_negative, positive, ModelError};
 use crate::free::FreeResponse;
-use crate::integrate::{FixedStep, IntegrationError, Rk4, Solution, System};
+use crate::integrate::{IntegrationError, Solution, Stats};
 use crate::model::SecondOrder;
 
 /// Parameters of [`NonlinearModel`]; SI units.
@@ -43,10 +52,11 @@ pub struct NonlinearConfig {
     pub c_compression: f64,
     /// Damper rate in rebound (`x' > 0`) (N·s/m), finite. Default 1 610.
     pub c_rebound: f64,
-    /// Coulomb friction force `F_c` (N), ≥ 0. Default 0.
+    /// Kinetic Coulomb friction force `F_c` (N) while sliding, ≥ 0. Default 0.
     pub friction: f64,
-    /// Friction regularisation velocity `v_ε` (m/s), > 0. Default 1e−3.
-    pub friction_velocity: f64,
+    /// Static friction force `F_static` (N) that holds the mass at rest, ≥ 0; values below
+    /// `F_c` count as `F_c` (static friction is never weaker than kinetic). Default 0.
+    pub static_friction: f64,
     /// Free travel before a bump stop engages, `gap` (m), > 0. Default 0.1.
     pub stop_gap: f64,
     /// Bump-stop rate `k_stop` (N/m), ≥ 0 (0 = no stops). Default 0.
@@ -62,7 +72,7 @@ impl Default for NonlinearConfig {
             c_compression: 1_610.0,
             c_rebound: 1_610.0,
             friction: 0.0,
-            friction_velocity: 1e-3,
+            static_friction: 0.0,
             stop_gap: 0.1,
             stop_stiffness: 0.0,
         }
@@ -78,10 +88,17 @@ pub struct NonlinearModel {
 /// Where and when a mass held by Coulomb friction came to rest.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sticking {
-    /// Time of the first stop from which the restoring force cannot break away (s).
+    /// Time of the stop from which the restoring force cannot break away (s).
     pub t: f64,
-    /// Rest position `x` (m); `|F_s(x) + F_stop(x)| ≤ F_c` there.
+    /// Rest position `x` (m); `|F_s(x) + F_stop(x)| ≤ F_static` there.
     pub x: f64,
+}
+
+/// The friction contact during one step: sliding in direction `±1`, or stuck.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Contact {
+    Sliding(f64),
+    Stuck,
 }
 
 /// The nonlinear and the linear model from the same initial state on one time grid.
@@ -93,6 +110,11 @@ pub struct Comparison {
     pub nonlinear: Vec<[f64; 2]>,
     /// Linear states `[x, x']` (closed form, see [`NonlinearModel::linear_model`]).
     pub linear: Vec<[f64; 2]>,
+    /// Whether the nonlinear run was cut short because it left the allowed travel or
+    /// stopped being finite (see [`NonlinearModel::compare_steps`]).
+    pub escaped: bool,
+    /// Where and when friction stopped the nonlinear run for good (the exact event).
+    pub sticking: Option<Sticking>,
 }
 
 impl Comparison {
@@ -114,6 +136,44 @@ impl Comparison {
         Some(self.period_nonlinear()? / self.period_linear()?)
     }
 
+    /// Period of the first full swing of the nonlinear response (s), see
+    /// [`first_swing_period`].
+    pub fn first_swing_nonlinear(&self) -> Option<f64> {
+        let x: Vec<f64> = self.nonlinear.iter().map(|s| s[0]).collect();
+        first_swing_period(&self.t, &x)
+    }
+
+    /// Period of the first full swing of the linear response (s): `2π/ω_d` exactly, since
+    /// a damped sinusoid crosses zero every half damped period.
+    pub fn first_swing_linear(&self) -> Option<f64> {
+        let x: Vec<f64> = self.linear.iter().map(|s| s[0]).collect();
+        first_swing_period(&self.t, &x)
+    }
+
+    /// First-swing period ratio `T_nonlinear / T_linear` (-).
+    pub fn first_swing_ratio(&self) -> Option<f64> {
+        Some(self.first_swing_nonlinear()? / self.first_swing_linear()?)
+    }
+
+    /// The largest finite `|x_nl(t) − x_lin(t)|` (m) and the first time (s) it occurs;
+    /// `(0, 0)` on an empty run.
+    pub fn largest_deviation(&self) -> (f64, f64) {
+        self.nonlinear
+            .iter()
+            .zip(&self.linear)
+            .zip(&self.t)
+            .map(|((a, b), &t)| ((a[0] - b[0]).abs(), t))
+            .filter(|d| d.0.is_finite())
+            .fold((0.0, 0.0), |acc, d| if d.0 > acc.0 { d } else { acc })
+    }
+
+    /// The nonlinear displacement (m) at time `t` (s), linearly interpolated on the grid
+    /// and held at the ends; `None` on an empty run.
+    pub fn nonlinear_at(&self, t: f64) -> Option<f64> {
+        let x: Vec<f64> = self.nonlinear.iter().map(|s| s[0]).collect();
+        crate::grid::interpolate(&self.t, &x, t)
+    }
+
     /// `max |x_nl(t) − x_lin(t)|` over the grid (m).
     pub fn max_deviation(&self) -> f64 {
         self.nonlinear
@@ -125,6 +185,28 @@ impl Comparison {
                 |acc: f64, d| if d.is_nan() { f64::NAN } else { acc.max(d) },
             )
     }
+}
+
+/// Period (s) of the first full swing of `x(t)`: the time from its first zero crossing to
+/// its third (either direction, each located by linear interpolation; a sample exactly at
+/// zero does not count as a crossing). `None` with fewer than three crossings. For a
+/// decaying oscillation this reads the period while the amplitude is still large, where a
+/// nonlinear spring shows most.
+pub fn first_swing_period(t: &[f64], x: &[f64]) -> Option<f64> {
+    let mut crossings = [0.0; 3];
+    let mut n = 0;
+    for (tw, xw) in t.windows(2).zip(x.windows(2)) {
+        if let ([t0, t1], [x0, x1]) = (tw, xw) {
+            if (*x0 < 0.0 && *x1 >= 0.0) || (*x0 > 0.0 && *x1 <= 0.0) {
+                crossings[n] = t0 + (t1 - t0) * x0 / (x0 - x1);
+                n += 1;
+                if n == 3 {
+                    return Some(crossings[2] - crossings[0]);
+                }
+            }
+        }
+    }
+    None
 }
 
 /// Period (s) from the upward zero crossings of `x(t)` (`x[i] < 0 ≤ x[i+1]`), each located
@@ -148,6 +230,13 @@ pub fn period_from_zero_crossings(t: &[f64], x: &[f64]) -> Option<f64> {
     (count >= 2).then(|| (last - first) / (count - 1) as f64)
 }
 
+/// Undamped period of the linear spring alone, `T = 2π·√(m/k)` (s), for mass `m` (kg) and
+/// spring rate `k` (N/m); `None` unless both are positive and finite.
+pub fn undamped_period(mass: f64, k: f64) -> Option<f64> {
+    let t = std::f64::consts::TAU * (mass / k).sqrt();
+    (mass > 0.0 && k > 0.0 && t.is_finite()).then_some(t)
+}
+
 impl NonlinearModel {
     /// Validates the configuration (see the field docs for the ranges).
     pub fn new(cfg: NonlinearConfig) -> Result<Self, ModelError> {
@@ -157,11 +246,7 @@ impl NonlinearModel {
         finite("compression damping", "N·s/m", cfg.c_compression)?;
         finite("rebound damping", "N·s/m", cfg.c_rebound)?;
         non_negative("friction force F_c", "N", cfg.friction)?;
-        positive(
-            "friction regularisation velocity",
-            "m/s",
-            cfg.friction_velocity,
-        )?;
+        non_negative("static friction force", "N", cfg.static_friction)?;
         positive("bump-stop gap", "m", cfg.stop_gap)?;
         non_negative("bump-stop rate", "N/m", cfg.stop_stiffness)?;
         Ok(Self { cfg })
@@ -185,15 +270,142 @@ impl NonlinearModel {
         c.k * x + c.k3 * x * x * x + stop
     }
 
-    /// Damper plus friction force `F_d(v) + F_f(v)` (N) at velocity `v` (m/s).
+    /// Damper plus sliding friction force `F_d(v) + F_c·sign(v)` (N) at velocity `v` (m/s)
+    /// (0 at `v = 0`, where static friction holds up to [`Self::static_limit`]).
     pub fn dissipative_force(&self, v: f64) -> f64 {
+        self.damper_force(v) + self.cfg.friction * sign(v)
+    }
+
+    /// Damper force `F_d(v)` (N): `c_compression·v` for `v < 0`, `c_rebound·v` otherwise.
+    fn damper_force(&self, v: f64) -> f64 {
         let c = &self.cfg;
-        let damper = if v < 0.0 {
+        if v < 0.0 {
             c.c_compression * v
         } else {
             c.c_rebound * v
+        }
+    }
+
+    /// The largest restoring force static friction holds, `max(F_static, F_c)` (N).
+    pub fn static_limit(&self) -> f64 {
+        self.cfg.static_friction.max(self.cfg.friction)
+    }
+
+    /// Whether a mass at rest at `x` (m) stays stuck: `|F_s(x) + F_stop(x)| ≤ F_static`.
+    pub fn holds_at(&self, x: f64) -> bool {
+        self.elastic_force(x).abs() <= self.static_limit()
+    }
+
+    /// The contact of a mass at rest at `x`: stuck, or sliding away from the spring force.
+    fn contact_at_rest(&self, x: f64) -> Contact {
+        if self.holds_at(x) {
+            Contact::Stuck
+        } else {
+            Contact::Sliding(-sign(self.elastic_force(x)))
+        }
+    }
+
+    /// One RK4 step of length `h` sliding in direction `dir` (friction `−F_c·dir`).
+    fn slide(&self, y: [f64; 2], h: f64, dir: f64) -> [f64; 2] {
+        let m = self.cfg.mass;
+        let f = |y: [f64; 2]| {
+            let a =
+                -(self.damper_force(y[1]) + self.cfg.friction * dir + self.elastic_force(y[0])) / m;
+            [y[1], a]
         };
-        damper + c.friction * (v / c.friction_velocity).tanh()
+        let k1 = f(y);
+        let k2 = f([y[0] + 0.5 * h * k1[0], y[1] + 0.5 * h * k1[1]]);
+        let k3 = f([y[0] + 0.5 * h * k2[0], y[1] + 0.5 * h * k2[1]]);
+        let k4 = f([y[0] + h * k3[0], y[1] + h * k3[1]]);
+        [
+            y[0] + h / 6.0 * (k1[0] + 2.0 * k2[0] + 2.0 * k3[0] + k4[0]),
+            y[1] + h / 6.0 * (k1[1] + 2.0 * k2[1] + 2.0 * k3[1] + k4[1]),
+        ]
+    }
+
+    /// Advances `y` by `h` from contact `mode`, resolving every stop inside the step;
+    /// returns the new state and mode and, if the mass stuck in this step, how far into the
+    /// step (s).
+    fn advance(&self, y: [f64; 2], mode: Contact, h: f64) -> ([f64; 2], Contact, Option<f64>) {
+        let (mut y, mut mode, mut left) = (y, mode, h);
+        // A step holds at most a few reversals; the cap only guards against a loop.
+        for _ in 0..8 {
+            let Contact::Sliding(dir) = mode else {
+                return ([y[0], 0.0], Contact::Stuck, None);
+            };
+            let next = self.slide(y, left, dir);
+            if next[1] * dir > 0.0 || !next[1].is_finite() {
+                return (next, mode, None);
+            }
+            // The velocity reached zero inside the step: bisect on the step fraction.
+            let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+            while hi - lo > 1e-13 {
+                let mid = 0.5 * (lo + hi);
+                if self.slide(y, mid * left, dir)[1] * dir > 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            let tau = hi * left;
+            y = [self.slide(y, tau, dir)[0], 0.0];
+            left -= tau;
+            mode = self.contact_at_rest(y[0]);
+            if mode == Contact::Stuck {
+                return (y, mode, Some(h - left));
+            }
+            if left <= 0.0 {
+                return (y, mode, None);
+            }
+        }
+        (y, mode, None)
+    }
+
+    /// The contact at the start: sliding with `v0`, or from rest at `x0`.
+    fn initial(&self, x0: f64, v0: f64) -> Contact {
+        if v0 != 0.0 {
+            Contact::Sliding(sign(v0))
+        } else {
+            self.contact_at_rest(x0)
+        }
+    }
+
+    /// The free response from `[x0, v0]` on the grid `out[i]` = state at `i·h`, with the
+    /// stick event if friction stops it for good.
+    fn run_into(
+        &self,
+        x0: f64,
+        v0: f64,
+        h: f64,
+        out: &mut [[f64; 2]],
+    ) -> Result<Option<Sticking>, IntegrationError> {
+        if !(h.is_finite() && h > 0.0) {
+            return Err(IntegrationError::InvalidStep { h });
+        }
+        if !(x0.is_finite() && v0.is_finite()) {
+            return Err(IntegrationError::NonFinite { t: 0.0 });
+        }
+        let mut y = [x0, v0];
+        let mut mode = self.initial(x0, v0);
+        let mut sticking = (mode == Contact::Stuck).then_some(Sticking { t: 0.0, x: x0 });
+        for (i, slot) in out.iter_mut().enumerate() {
+            if i > 0 {
+                let (next, m, stuck) = self.advance(y, mode, h);
+                if !(next[0].is_finite() && next[1].is_finite()) {
+                    return Err(IntegrationError::NonFinite { t: h * i as f64 });
+                }
+                if let Some(dt) = stuck {
+                    sticking = Some(Sticking {
+                        t: h * (i - 1) as f64 + dt,
+                        x: next[0],
+                    });
+                }
+                y = next;
+                mode = m;
+            }
+            *slot = y;
+        }
+        Ok(sticking)
     }
 
     /// Potential energy `U(x) = ½k·x² + ¼k3·x⁴ + ½k_stop·(|x| − gap)²₊` (J).
@@ -215,9 +427,9 @@ impl NonlinearModel {
         SecondOrder::mechanical(c.mass, 0.5 * (c.c_compression + c.c_rebound), c.k)
     }
 
-    /// Free response from `[x0, v0]` over `[0, t_end]` by RK4 with step at most `h` (s)
-    /// (resolve the fastest dynamics: the bump-stop frequency `√((k + k_stop)/m)` and the
-    /// friction layer `m·v_ε/F_c`).
+    /// Free response from `[x0, v0]` over `[0, t_end]` by RK4 with the stick–slip switch
+    /// (module doc), `n = ⌈t_end/h⌉` equal steps of `t_end/n` ≤ `h` (s) (resolve the fastest
+    /// dynamics: the bump-stop frequency `√((k + k_stop)/m)`).
     pub fn simulate(
         &self,
         x0: f64,
@@ -225,18 +437,37 @@ impl NonlinearModel {
         t_end: f64,
         h: f64,
     ) -> Result<Solution<2>, IntegrationError> {
-        Rk4.solve(self, [x0, v0], 0.0, t_end, h)
+        if !(t_end.is_finite() && t_end > 0.0) {
+            return Err(IntegrationError::InvalidSpan { t0: 0.0, t_end });
+        }
+        if !(h.is_finite() && h > 0.0) {
+            return Err(IntegrationError::InvalidStep { h });
+        }
+        let n = (t_end / h).ceil().max(1.0) as usize;
+        let step = t_end / n as f64;
+        let mut y = vec![[0.0; 2]; n + 1];
+        self.run_into(x0, v0, step, &mut y)?;
+        let t = (0..=n).map(|i| step * i as f64).collect();
+        Ok(Solution {
+            t,
+            y,
+            stats: Stats {
+                n_accepted: n,
+                ..Stats::default()
+            },
+        })
     }
 
-    /// Allocation-free variant of [`Self::simulate`]: `out[i]` is the state at `i·h`.
+    /// Allocation-free variant of [`Self::simulate`]: `out[i]` is the state at `i·h`;
+    /// returns where friction stopped the mass for good, if it did.
     pub fn simulate_into(
         &self,
         x0: f64,
         v0: f64,
         h: f64,
         out: &mut [[f64; 2]],
-    ) -> Result<(), IntegrationError> {
-        Rk4.solve_into(self, [x0, v0], 0.0, h, out).map(|_| ())
+    ) -> Result<Option<Sticking>, IntegrationError> {
+        self.run_into(x0, v0, h, out)
     }
 
     /// The nonlinear (RK4) and linear (closed-form) responses from the same `[x0, v0]`.
@@ -248,6 +479,7 @@ impl NonlinearModel {
         h: f64,
     ) -> Result<Comparison, IntegrationError> {
         let sol = self.simulate(x0, v0, t_end, h)?;
+        let sticking = self.sticking(&sol);
         // A validated config always gives a valid linear model; fall back to NaN otherwise.
         let linear = match self.linear_model() {
             Ok(sys) => {
@@ -260,7 +492,49 @@ impl NonlinearModel {
             t: sol.t,
             nonlinear: sol.y,
             linear,
+            escaped: false,
+            sticking,
         })
+    }
+
+    /// Like [`Self::compare`], on the grid `t_i = i·h`, `i = 0 … steps`, and never failing:
+    /// the nonlinear run is cut (and [`Comparison::escaped`] set) at the first state that
+    /// is not finite or whose travel `|x|` exceeds `escape` (m) — a softening spring that
+    /// gave way. The linear closed form fills the same (possibly shortened) grid.
+    pub fn compare_steps(&self, x0: f64, v0: f64, h: f64, steps: usize, escape: f64) -> Comparison {
+        let n = steps + 1;
+        let mut nonlinear = vec![[0.0; 2]; n];
+        let (mut valid, mut sticking) = match self.simulate_into(x0, v0, h, &mut nonlinear) {
+            Ok(st) => (n, st),
+            // Slot i holds the state at i·h; the failing step was the one to `t`.
+            Err(IntegrationError::NonFinite { t }) => (((t / h).round() as usize).min(n), None),
+            Err(_) => (0, None),
+        };
+        let mut escaped = valid < n;
+        if let Some(i) = nonlinear[..valid]
+            .iter()
+            .position(|p| p[0].is_nan() || p[0].abs() > escape)
+        {
+            valid = i;
+            escaped = true;
+            sticking = None;
+        }
+        nonlinear.truncate(valid);
+        let t: Vec<f64> = (0..valid).map(|i| i as f64 * h).collect();
+        let linear = match self.linear_model() {
+            Ok(sys) => {
+                let lin = FreeResponse::new(sys, x0, v0);
+                t.iter().map(|&t| lin.state(t)).collect()
+            }
+            Err(_) => vec![[f64::NAN; 2]; valid],
+        };
+        Comparison {
+            t,
+            nonlinear,
+            linear,
+            escaped,
+            sticking,
+        }
     }
 
     /// Period (s) of the free response from `x(0) = amplitude`, `x'(0) = 0`, measured from
@@ -282,32 +556,39 @@ impl NonlinearModel {
         period_from_zero_crossings(&sol.t, &x)
     }
 
-    /// The first time the mass stops where friction can hold it: a grid point at which the
-    /// velocity reverses sign or `|x'| ≤ v_ε` while `|F_s(x) + F_stop(x)| ≤ F_c`. `None`
-    /// without friction or if it never happens in `sol`.
+    /// The first grid point from which the mass stays at rest for the rest of the run,
+    /// held by friction (`x' = 0` there and after, `|F_s(x) + F_stop(x)| ≤ F_static`); `None`
+    /// without friction or if it never happens in `sol`. The event itself lies within the
+    /// step before (see [`Comparison::sticking`] for the exact instant).
     pub fn sticking(&self, sol: &Solution<2>) -> Option<Sticking> {
-        let c = &self.cfg;
-        if c.friction <= 0.0 {
+        self.sticking_in(&sol.t, &sol.y)
+    }
+
+    /// [`Self::sticking`] on a run given as times `t` (s) and states `y` = `[x, x']`.
+    pub fn sticking_in(&self, t: &[f64], y: &[[f64; 2]]) -> Option<Sticking> {
+        if self.static_limit() <= 0.0 {
             return None;
         }
-        let mut prev_v: Option<f64> = None;
-        for (&t, s) in sol.t.iter().zip(&sol.y) {
-            let [x, v] = *s;
-            let reversed = prev_v.is_some_and(|p| p * v < 0.0);
-            let slow = v.abs() <= c.friction_velocity;
-            if (reversed || slow) && prev_v.is_some() && self.elastic_force(x).abs() <= c.friction {
-                return Some(Sticking { t, x });
-            }
-            prev_v = Some(v);
+        let last = y.last()?;
+        if last[1] != 0.0 || !self.holds_at(last[0]) {
+            return None;
         }
-        None
+        let first = y.iter().rposition(|s| s != last).map_or(0, |i| i + 1);
+        Some(Sticking {
+            t: *t.get(first)?,
+            x: last[0],
+        })
     }
 }
 
-impl System<2> for NonlinearModel {
-    fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
-        dy[0] = y[1];
-        dy[1] = -(self.dissipative_force(y[1]) + self.elastic_force(y[0])) / self.cfg.mass;
+/// `+1` for `v > 0`, `−1` for `v < 0`, `0` otherwise.
+fn sign(v: f64) -> f64 {
+    if v > 0.0 {
+        1.0
+    } else if v < 0.0 {
+        -1.0
+    } else {
+        0.0
     }
 }
 
@@ -350,7 +631,7 @@ mod tests {
             ..d
         }));
         assert!(bad(NonlinearConfig {
-            friction_velocity: 0.0,
+            static_friction: f64::NAN,
             ..d
         }));
         assert!(bad(NonlinearConfig { stop_gap: 0.0, ..d }));

@@ -200,8 +200,12 @@ const REGISTRY: &[(&str, Factory)] = &[
         Box::new(Typed::new(resonance::Resonance::default()))
     }),
     ("integrators", || Box::new(integrators::Integrators::new())),
-    ("flutter", || Box::new(flutter::Flutter::default())),
-    ("nonlinear", || Box::new(nonlinear::Nonlinear::default())),
+    ("flutter", || {
+        Box::new(Typed::new(flutter::Flutter::default()))
+    }),
+    ("nonlinear", || {
+        Box::new(Typed::new(nonlinear::Nonlinear::default()))
+    }),
     ("quarter-car-2dof", || {
         Box::new(quarter_car_2dof::QuarterCar2Dof::default())
     }),

@@ -1,5 +1,9 @@
 //! Flutter: a torsional mode whose effective damping falls with wind speed, until it goes
-//! negative and the twisting grows (the 1940 Tacoma Narrows failure, as a teaching model).
+//! negative and the twisting grows (the 1940 Tacoma Narrows failure).
+//!
+//! Two models: [`scanlan::ScanlanModel`], the deck on Scanlan's flutter derivatives
+//! `A₂*(K)`, `A₃*(K)` (tabulated in [`derivatives`]) with an amplitude-dependent bound on the
+//! motion, and, here, [`FlutterModel`], the *simplest picture*:
 //!
 //! Model: one torsional mode of the deck, angle `θ(t)` \[rad\],
 //!
@@ -30,6 +34,12 @@
 //! assert!(bridge.growth_rate(15.0) < 0.0 && bridge.growth_rate(25.0) > 0.0);
 //! assert_eq!(bridge.regime(25.0).unwrap(), Regime::NegativelyDamped);
 //! ```
+
+pub mod derivatives;
+pub mod scanlan;
+
+pub use derivatives::{DeckSection, DerivativeTable};
+pub use scanlan::{FlutterState, ScanlanConfig, ScanlanModel, TwistHistory};
 
 use crate::complex::Complex;
 use crate::error::{finite, non_negative, positive, ModelError};
@@ -191,6 +201,42 @@ impl FlutterModel {
         Ok(FreeResponse::new(self.system(wind_speed)?, theta0, rate0))
     }
 
+    /// Undamped torsional period `T = 2π/ω` \[s\].
+    pub fn torsional_period(&self) -> f64 {
+        TAU / self.omega
+    }
+
+    /// Amplitude `A` \[rad\] of the oscillation `θ = A·e^{σt}·cos(ω_d t − φ)` released from
+    /// `θ(0) = theta0` \[rad\] at rest: `A = √(θ₀² + (σθ₀/ω_d)²)`, with `σ` the growth rate
+    /// and `ω_d` the damped frequency; `|θ₀|` when the mode does not oscillate.
+    pub fn envelope_amplitude(&self, wind_speed: f64, theta0: f64) -> f64 {
+        let sigma = self.growth_rate(wind_speed);
+        match self.damped_frequency(wind_speed) {
+            Some(wd) if wd > 0.0 => (theta0 * theta0 + (sigma * theta0 / wd).powi(2)).sqrt(),
+            _ => theta0.abs(),
+        }
+    }
+
+    /// The envelope `A·e^{σt}` \[rad\] at time `t` \[s\] of the motion released from
+    /// `theta0` \[rad\] at rest (see [`Self::envelope_amplitude`]): the twist touches `±` this
+    /// curve once per half period.
+    pub fn envelope(&self, wind_speed: f64, theta0: f64, t: f64) -> f64 {
+        self.envelope_amplitude(wind_speed, theta0) * (self.growth_rate(wind_speed) * t).exp()
+    }
+
+    /// Factor `e^{σt}` \[-\] by which the amplitude changes over `t` \[s\] at wind speed `U`.
+    pub fn growth_factor(&self, wind_speed: f64, t: f64) -> f64 {
+        (self.growth_rate(wind_speed) * t).exp()
+    }
+
+    /// Time for the amplitude to double, `ln 2/σ` \[s\], while the twist grows (negatively
+    /// damped, `σ > 0`); `None` otherwise.
+    pub fn doubling_time(&self, wind_speed: f64) -> Option<f64> {
+        let sigma = self.growth_rate(wind_speed);
+        (self.regime(wind_speed).ok() == Some(Regime::NegativelyDamped) && sigma > 0.0)
+            .then(|| std::f64::consts::LN_2 / sigma)
+    }
+
     /// Root locus: fills `out` with the poles at `out.len()` wind speeds evenly spaced from
     /// `u_min` to `u_max` \[m/s\] (both included; a single point uses `u_min`). No
     /// allocation. Errors (leaving `out` untouched) when a bound is negative or not finite.
@@ -223,6 +269,23 @@ impl FlutterModel {
         }
         Ok(())
     }
+}
+
+/// Angle in degrees from radians: `deg = rad·180/π`.
+pub fn degrees(radians: f64) -> f64 {
+    radians.to_degrees()
+}
+
+/// Angle in radians from degrees: `rad = deg·π/180`.
+pub fn radians(degrees: f64) -> f64 {
+    degrees.to_radians()
+}
+
+/// The point `p = (x, y)` of a rigid deck section after it twists by `angle` \[rad\]
+/// about the origin: `(x·cos θ − y·sin θ, x·sin θ + y·cos θ)`, in the unit of `p`.
+pub fn rotate(p: (f64, f64), angle: f64) -> (f64, f64) {
+    let (s, c) = angle.sin_cos();
+    (c * p.0 - s * p.1, s * p.0 + c * p.1)
 }
 
 #[cfg(test)]

@@ -1,0 +1,188 @@
+//! The nonlinear demo's figures: both responses over time, the phase plane, the spring and
+//! damper force laws, and the animated quarter car.
+
+use super::{text, Results, ESCAPE};
+use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
+use crate::format::si;
+use crate::plot::Ink;
+use crate::schematic::{mass_spring_damper, MassLabels};
+use zeta_solver::nonlinear::NonlinearConfig;
+
+/// Every `STRIDE`-th state is plotted (≤ ~1000 points per curve).
+const STRIDE: usize = 4;
+/// Points of the force curves.
+const CURVE: usize = 241;
+
+pub(super) const RESPONSE_TITLE: &str = "Nonlinear and linear response x(t)";
+pub(super) const PHASE_TITLE: &str = "Phase plane (x, v)";
+pub(super) const SPRING_TITLE: &str = "Spring and bump-stop force";
+pub(super) const DAMPER_TITLE: &str = "Damper and friction force";
+
+/// Every [`STRIDE`]-th point of `pick(i)` for `i < n`, always including the last.
+fn strided(n: usize, pick: impl Fn(usize) -> (f64, f64)) -> Vec<(f64, f64)> {
+    let mut out: Vec<(f64, f64)> = (0..n).step_by(STRIDE).map(&pick).collect();
+    if n > 0 && !(n - 1).is_multiple_of(STRIDE) {
+        out.push(pick(n - 1));
+    }
+    out
+}
+
+/// `(t, x)` of a run.
+fn displacement(t: &[f64], states: &[[f64; 2]]) -> Vec<(f64, f64)> {
+    strided(t.len().min(states.len()), |i| (t[i], states[i][0]))
+}
+
+/// `(x, v)` of a run.
+fn phase_points(states: &[[f64; 2]]) -> Vec<(f64, f64)> {
+    strided(states.len(), |i| (states[i][0], states[i][1]))
+}
+
+/// `f` at [`CURVE`] points evenly spread over `[-reach, reach]`, both ends included.
+fn symmetric(reach: f64, f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
+    (0..CURVE)
+        .map(|i| {
+            let x = -reach + 2.0 * reach * i as f64 / (CURVE - 1) as f64;
+            (x, f(x))
+        })
+        .collect()
+}
+
+/// A range padded by 8 % with 30 % more on top for the legend.
+fn with_legend_room((lo, hi): (f64, f64)) -> (f64, f64) {
+    let mut y = padded((lo, hi.max(lo + 1e-6)), 0.08);
+    y.1 += 0.3 * (y.1 - y.0);
+    y
+}
+
+/// x(t) of the nonlinear run against the linear model, with the bump stops and the moment
+/// friction holds the mass.
+pub(super) fn response(r: &Results) -> Figure {
+    let cfg = r.model.config();
+    let nl = displacement(&r.cmp.t, &r.cmp.nonlinear);
+    let lin = displacement(&r.cmp.t, &r.cmp.linear);
+    let (lo, hi) =
+        finite_extent(nl.iter().chain(&lin).map(|p| p.1).chain([0.0])).unwrap_or((-0.1, 0.1));
+    let mut y = padded((lo, hi.max(lo + 1e-6)), 0.1);
+    y.1 += 0.25 * (y.1 - y.0); // room for the legend
+    let mut fig = Figure::plot(
+        RESPONSE_TITLE,
+        Axis::linear("time t", "s", (0.0, r.t_end)),
+        Axis::linear("extension x", "m", y),
+    );
+    if cfg.stop_stiffness > 0.0 {
+        let stop = LineStyle::dotted(Ink::Purple, 1.5);
+        let gap = cfg.stop_gap;
+        fig = fig
+            .with_line(
+                format!("bump stops ±{}", si(gap, "m", 3)),
+                vec![(0.0, gap), (r.t_end, gap)],
+                stop,
+            )
+            .with_line("", vec![(0.0, -gap), (r.t_end, -gap)], stop);
+    }
+    fig = fig
+        .with_line("linear model", lin, LineStyle::dashed(Ink::Vermillion, 2.0))
+        .with_line("nonlinear (RK4)", nl, LineStyle::solid(Ink::Blue, 2.5));
+    if let Some(st) = r.cmp.sticking {
+        fig = fig.with_marker(Marker::dot("sticks", (st.t, st.x), Ink::Green));
+    }
+    fig.with_origin_lines()
+        .described(text::describe_response(r))
+}
+
+/// The trajectories in the (x, v) plane.
+pub(super) fn phase(r: &Results) -> Figure {
+    let nl = phase_points(&r.cmp.nonlinear);
+    let lin = phase_points(&r.cmp.linear);
+    let xs = finite_extent(nl.iter().chain(&lin).map(|p| p.0).chain([0.0])).unwrap_or((-0.1, 0.1));
+    let vs = finite_extent(nl.iter().chain(&lin).map(|p| p.1).chain([0.0])).unwrap_or((-1.0, 1.0));
+    let x = padded((xs.0, xs.1.max(xs.0 + 1e-6)), 0.08);
+    let description = text::describe_phase(&nl, &lin);
+    let start = nl.first().copied();
+    let mut fig = Figure::plot(
+        PHASE_TITLE,
+        Axis::linear("extension x", "m", x),
+        Axis::linear("velocity v", "m/s", with_legend_room(vs)),
+    )
+    .with_line("linear model", lin, LineStyle::dashed(Ink::Vermillion, 2.0))
+    .with_line("nonlinear (RK4)", nl, LineStyle::solid(Ink::Blue, 2.0));
+    if let Some(p) = start {
+        fig = fig.with_marker(Marker::dot("start", p, Ink::Black));
+    }
+    fig.with_origin_lines().described(description)
+}
+
+/// Spring plus bump-stop force against extension, beside the linear spring.
+pub(super) fn spring(r: &Results) -> Figure {
+    let model = &r.model;
+    let cfg = model.config();
+    let max_travel = r.max_travel.unwrap_or(0.0);
+    let mut reach = max_travel.max(0.02);
+    if cfg.stop_stiffness > 0.0 {
+        reach = reach.max(1.3 * cfg.stop_gap);
+    }
+    let reach = reach.min(ESCAPE) * 1.15;
+    let nl = symmetric(reach, |x| model.elastic_force(x));
+    let lin = symmetric(reach, |x| cfg.k * x);
+    let extent = finite_extent(nl.iter().chain(&lin).map(|p| p.1)).unwrap_or((-1.0, 1.0));
+    Figure::plot(
+        SPRING_TITLE,
+        Axis::linear("extension x", "m", (-reach, reach)),
+        Axis::linear("force F", "N", with_legend_room(extent)),
+    )
+    .with_line("linear k·x", lin, LineStyle::dashed(Ink::Vermillion, 2.0))
+    .with_line("k·x + k₃·x³ + stops", nl, LineStyle::solid(Ink::Blue, 2.5))
+    .with_origin_lines()
+    .described(text::describe_spring(model, reach, max_travel))
+}
+
+/// Damper plus friction force against velocity, beside the linear model's mean damper.
+pub(super) fn damper(r: &Results) -> Figure {
+    let model = &r.model;
+    let cfg = model.config();
+    let cmp = &r.cmp;
+    let vmax = finite_extent(cmp.nonlinear.iter().chain(&cmp.linear).map(|p| p[1].abs()))
+        .map_or(0.5, |e| e.1)
+        .clamp(0.05, 10.0)
+        * 1.15;
+    let c_mean = 0.5 * (cfg.c_compression + cfg.c_rebound);
+    let nl = symmetric(vmax, |v| model.dissipative_force(v));
+    let lin = symmetric(vmax, |v| c_mean * v);
+    let extent =
+        finite_extent(nl.iter().chain(&lin).map(|p| p.1).chain([0.0])).unwrap_or((-1.0, 1.0));
+    Figure::plot(
+        DAMPER_TITLE,
+        Axis::linear("velocity v (+ rebound)", "m/s", (-vmax, vmax)),
+        Axis::linear("force F", "N", with_legend_room(extent)),
+    )
+    .with_line("linear c̄·v", lin, LineStyle::dashed(Ink::Vermillion, 2.0))
+    .with_line("damper + friction", nl, LineStyle::solid(Ink::Blue, 2.5))
+    .with_origin_lines()
+    .described(text::describe_damper(model, vmax, c_mean))
+}
+
+/// The quarter car extended `x` \[m\] at time `t` \[s\], drawn at `x / reach` of full travel.
+pub(super) fn schematic(cfg: &NonlinearConfig, x: f64, reach: f64, t: f64) -> Figure {
+    let labels = MassLabels {
+        mass: "m",
+        spring: "k, k₃",
+        damper: "c_c/c_r",
+        base: "",
+    };
+    let stops = if cfg.stop_stiffness > 0.0 {
+        if x.abs() > cfg.stop_gap {
+            ", pressing on a bump stop"
+        } else {
+            ", clear of the bump stops"
+        }
+    } else {
+        ""
+    };
+    let description = format!(
+        "Quarter car at t = {}: suspension extended {}{}.",
+        si(t, "s", 3),
+        si(x, "m", 3),
+        stops
+    );
+    mass_spring_damper(x / reach, 0.0, &labels, description)
+}

@@ -1,0 +1,340 @@
+//! `nonlinear`: the quarter car beyond the linear model — a Duffing spring, an asymmetric
+//! damper, Coulomb friction and bump stops, integrated with RK4 and drawn against the
+//! linear model from the same initial state (all maths in [`zeta_solver::nonlinear`]).
+//!
+//! Cost per update is bounded: [`STEPS`] RK4 steps. Coulomb friction sticks and slips: the
+//! solver switches between a kinetic force `F_c` while sliding and a static force
+//! `F_static = ratio·F_c` that holds the mass once it stops.
+
+mod figures;
+mod text;
+
+use super::Model;
+use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::figure::{finite_extent, Figure};
+use crate::spec::PlotSpec;
+use zeta_solver::nonlinear::{undamped_period, Comparison, NonlinearConfig, NonlinearModel};
+
+/// Default static-to-kinetic friction ratio (dry sliding joints hold about a fifth more
+/// than they drag).
+pub(super) const STICK_RATIO: f64 = 1.2;
+/// RK4 steps per update.
+const STEPS: usize = 3600;
+/// Undamped linear periods shown.
+const PERIODS: f64 = 5.0;
+/// Travel beyond which a trajectory counts as escaped (a softening spring that gave way) \[m\].
+const ESCAPE: f64 = 1.0;
+
+/// The nonlinear quarter-car demo. Keeps the last run for the animated schematic.
+#[derive(Debug, Clone, Default)]
+pub struct Nonlinear {
+    last: Option<Comparison>,
+}
+
+/// Typed parameters, filled from the declaration.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct P {
+    m: f64,
+    k: f64,
+    k3: f64,
+    c_comp: f64,
+    c_reb: f64,
+    friction: f64,
+    /// Static-to-kinetic friction ratio `F_static/F_c` \[-\].
+    stick_ratio: f64,
+    gap: f64,
+    k_stop: f64,
+    x0: f64,
+    v0: f64,
+}
+
+impl P {
+    /// The model and the step `h` \[s\] that covers [`PERIODS`] linear periods in [`STEPS`].
+    fn model(&self) -> Option<(NonlinearModel, f64)> {
+        let h = PERIODS * undamped_period(self.m, self.k)? / STEPS as f64;
+        let model = NonlinearModel::new(NonlinearConfig {
+            mass: self.m,
+            k: self.k,
+            k3: self.k3,
+            c_compression: self.c_comp,
+            c_rebound: self.c_reb,
+            friction: self.friction,
+            static_friction: self.stick_ratio * self.friction,
+            stop_gap: self.gap,
+            stop_stiffness: self.k_stop,
+        })
+        .ok()?;
+        Some((model, h))
+    }
+}
+
+/// What one step computes.
+pub struct Results {
+    model: NonlinearModel,
+    cmp: Comparison,
+    /// Largest |x| of the nonlinear run \[m\].
+    max_travel: Option<f64>,
+    /// The table row that names the dominant effect.
+    effect: &'static str,
+    /// End of the plotted window \[s\].
+    t_end: f64,
+}
+
+/// Which departure from the linear model dominates (the table's row key).
+fn effect(cfg: &NonlinearConfig, max_travel: f64, escaped: bool) -> &'static str {
+    if escaped {
+        return "escaped";
+    }
+    let mut found = Vec::with_capacity(5);
+    if cfg.k3 > 0.0 {
+        found.push("hardening spring");
+    }
+    if cfg.k3 < 0.0 {
+        found.push("softening spring");
+    }
+    if cfg.friction > 0.0 {
+        found.push("stick-slip");
+    }
+    if cfg.stop_stiffness > 0.0 && max_travel > cfg.stop_gap {
+        found.push("bump-stop impact");
+    }
+    if cfg.c_compression != cfg.c_rebound {
+        found.push("asymmetric damper");
+    }
+    match found.as_slice() {
+        [] => "linear",
+        [one] => one,
+        _ => "several at once",
+    }
+}
+
+impl Model for Nonlinear {
+    type Params = P;
+    type Results = Results;
+
+    fn declare() -> Declaration<P, Results> {
+        Declaration {
+            equation_mathml: text::EQUATION,
+            params: params(),
+            readouts: vec![
+                ReadoutDef::text("effect", "dominant nonlinearity", |r| r.effect.to_string()),
+                ReadoutDef::number(
+                    "period_ratio",
+                    "first-swing period ratio T_nonlinear / T_linear",
+                    "",
+                    4,
+                    |r| r.cmp.first_swing_ratio(),
+                ),
+                ReadoutDef::number(
+                    "max_deviation",
+                    "largest |x_nonlinear − x_linear|",
+                    "m",
+                    3,
+                    |r| (!r.cmp.t.is_empty()).then(|| r.cmp.max_deviation()),
+                ),
+                ReadoutDef::number(
+                    "period_nonlinear",
+                    "nonlinear period of the first full swing (three zero crossings)",
+                    "s",
+                    4,
+                    |r| r.cmp.first_swing_nonlinear(),
+                ),
+                ReadoutDef::number(
+                    "period_linear",
+                    "linear period of the first full swing (= 2π/ω_d)",
+                    "s",
+                    4,
+                    |r| r.cmp.first_swing_linear(),
+                ),
+                ReadoutDef::number("max_travel", "largest |x| (nonlinear)", "m", 3, |r| {
+                    r.max_travel
+                }),
+                ReadoutDef::number(
+                    "stick_position",
+                    "friction holds the mass at",
+                    "m",
+                    3,
+                    |r| r.cmp.sticking.map(|st| st.x),
+                ),
+            ],
+            plots: vec![
+                PlotSpec {
+                    key: "response",
+                    title: figures::RESPONSE_TITLE,
+                    aspect: 2.0,
+                },
+                PlotSpec {
+                    key: "phase",
+                    title: figures::PHASE_TITLE,
+                    aspect: 1.25,
+                },
+                PlotSpec {
+                    key: "spring",
+                    title: figures::SPRING_TITLE,
+                    aspect: 2.0,
+                },
+                PlotSpec {
+                    key: "damper",
+                    title: figures::DAMPER_TITLE,
+                    aspect: 1.25,
+                },
+            ],
+            presets: text::presets(),
+            table: Some(text::table()),
+            schematic: true,
+            ..Declaration::new("nonlinear", "Beyond the linear model", text::SUMMARY)
+        }
+    }
+
+    fn step(&mut self, p: &P) -> Option<Results> {
+        let Some((model, h)) = p.model() else {
+            self.last = None;
+            return None;
+        };
+        let cmp = model.compare_steps(p.x0, p.v0, h, STEPS, ESCAPE);
+        let max_travel = finite_extent(cmp.nonlinear.iter().map(|s| s[0].abs())).map(|e| e.1);
+        let effect = effect(&model.config(), max_travel.unwrap_or(0.0), cmp.escaped);
+        self.last = Some(cmp.clone());
+        Some(Results {
+            model,
+            cmp,
+            max_travel,
+            effect,
+            t_end: STEPS as f64 * h,
+        })
+    }
+
+    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
+        vec![
+            figures::response(r),
+            figures::phase(r),
+            figures::spring(r),
+            figures::damper(r),
+        ]
+    }
+
+    fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {
+        Some((0.0, r.t_end))
+    }
+
+    fn schematic(&self, p: &P, t: f64) -> Option<Figure> {
+        let (model, _) = p.model()?;
+        let cmp = self.last.as_ref()?;
+        let x = cmp.nonlinear_at(t)?;
+        let reach = cmp
+            .nonlinear
+            .iter()
+            .map(|s| s[0].abs())
+            .fold(p.x0.abs(), f64::max)
+            .max(1e-6);
+        Some(figures::schematic(&model.config(), x, reach, t))
+    }
+}
+
+/// The parameter table.
+fn params() -> Vec<Param<P>> {
+    vec![
+        Param::linear(
+            "m",
+            "sprung mass",
+            "m",
+            "kg",
+            (100.0, 600.0, 1.0),
+            300.0,
+            |p, v| p.m = v,
+        ),
+        Param::linear(
+            "k",
+            "linear spring rate",
+            "k",
+            "N/m",
+            (5_000.0, 60_000.0, 100.0),
+            24_000.0,
+            |p, v| p.k = v,
+        ),
+        Param::linear(
+            "k3",
+            "cubic spring coefficient (+ hardening, − softening)",
+            "k₃",
+            "N/m³",
+            (-4.0e6, 4.0e6, 10_000.0),
+            1.0e6,
+            |p, v| p.k3 = v,
+        ),
+        Param::linear(
+            "c_comp",
+            "damper rate in compression",
+            "c_c",
+            "N·s/m",
+            (0.0, 6_000.0, 10.0),
+            1_500.0,
+            |p, v| p.c_comp = v,
+        ),
+        Param::linear(
+            "c_reb",
+            "damper rate in rebound",
+            "c_r",
+            "N·s/m",
+            (0.0, 6_000.0, 10.0),
+            1_500.0,
+            |p, v| p.c_reb = v,
+        ),
+        Param::linear(
+            "friction",
+            "Coulomb friction force while sliding",
+            "F_c",
+            "N",
+            (0.0, 1_500.0, 10.0),
+            0.0,
+            |p, v| p.friction = v,
+        ),
+        Param::linear(
+            "stick_ratio",
+            "static-to-sliding friction ratio",
+            "F_static/F_c",
+            "",
+            (1.0, 2.0, 0.05),
+            STICK_RATIO,
+            |p, v| p.stick_ratio = v,
+        ),
+        Param::linear(
+            "gap",
+            "bump-stop clearance",
+            "gap",
+            "m",
+            (0.01, 0.2, 0.001),
+            0.06,
+            |p, v| p.gap = v,
+        ),
+        Param::linear(
+            "k_stop",
+            "bump-stop rate (0 = no stops)",
+            "k_stop",
+            "N/m",
+            (0.0, 500_000.0, 1_000.0),
+            0.0,
+            |p, v| p.k_stop = v,
+        ),
+        Param::linear(
+            "x0",
+            "initial extension",
+            "x₀",
+            "m",
+            (-0.15, 0.15, 0.001),
+            0.08,
+            |p, v| p.x0 = v,
+        ),
+        Param::linear(
+            "v0",
+            "initial velocity",
+            "v₀",
+            "m/s",
+            (-2.0, 2.0, 0.01),
+            0.0,
+            |p, v| p.v0 = v,
+        ),
+    ]
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,131 @@
+//! The nonlinear demo's own behaviour; its numbers at every preset are pinned by the
+//! snapshot tests (`crates/app/tests/snapshots.rs`).
+
+// Independent reference values (the linear closed form) are computed here by hand.
+#![allow(clippy::disallowed_methods)]
+
+use super::*;
+use crate::demos::testing::{self, number, value};
+use crate::demos::Frame;
+use crate::params::Params;
+
+fn run(query: &str) -> Frame {
+    testing::run("nonlinear", query)
+}
+
+fn preset_query(label: &str) -> String {
+    let spec = Nonlinear::declare().spec();
+    let p = spec.presets.iter().find(|p| p.label == label).unwrap();
+    p.values
+        .iter()
+        .map(|(k, v)| format!("{k}={v}"))
+        .collect::<Vec<_>>()
+        .join("&")
+}
+
+#[test]
+fn linear_settings_reproduce_the_linear_model() {
+    let f = run(&preset_query("Linear (all off)"));
+    assert_eq!(value(&f, "effect"), "linear");
+    assert!((number(&f, "period_ratio") - 1.0).abs() < 1e-6);
+    // RK4 with ~720 steps per period against the closed form.
+    let dev = number(&f, "max_deviation");
+    assert!(dev < 1e-8, "{dev}");
+    let wn = (24_000.0f64 / 300.0).sqrt();
+    let c = 1_500.0 / (2.0 * (300.0f64 * 24_000.0).sqrt());
+    let td = std::f64::consts::TAU / (wn * (1.0 - c * c).sqrt());
+    assert!((number(&f, "period_linear") - td).abs() < 1e-4 * td);
+}
+
+#[test]
+fn each_preset_shows_its_effect() {
+    let hard = run(&preset_query("Hardening spring"));
+    assert_eq!(value(&hard, "effect"), "hardening spring");
+    assert!(number(&hard, "period_ratio") < 0.95);
+    let soft = run(&preset_query("Softening spring"));
+    assert_eq!(value(&soft, "effect"), "softening spring");
+    assert!(number(&soft, "period_ratio") > 1.03);
+    let fric = run(&preset_query("Friction stick–slip"));
+    assert_eq!(value(&fric, "effect"), "stick-slip");
+    let x = number(&fric, "stick_position");
+    // Held where the spring cannot overcome static friction: |k·x| ≤ F_static = 1.2·300 N.
+    assert!(x.abs() <= 1.2 * 300.0 / 24_000.0 + 1e-9, "{x}");
+    assert!(x.abs() > 1e-4, "{x}");
+    let stop = run(&preset_query("Bump-stop impact"));
+    assert_eq!(value(&stop, "effect"), "bump-stop impact");
+    let travel = number(&stop, "max_travel");
+    let linear_reach = 1.5 / (24_000.0f64 / 300.0).sqrt();
+    assert!(travel > 0.05 && travel < linear_reach, "{travel}");
+    let asym = run(&preset_query("Asymmetric damper"));
+    assert_eq!(value(&asym, "effect"), "asymmetric damper");
+    assert!(number(&asym, "max_deviation") > 1e-3);
+    for f in [&hard, &soft, &fric, &stop, &asym] {
+        assert!(f.figures.iter().all(|g| g.has_visible_data()));
+    }
+}
+
+#[test]
+fn a_softening_spring_past_its_limit_escapes_without_panicking() {
+    let f = run("k3=-4000000&x0=0.15&v0=2&c_comp=0&c_reb=0&k=5000");
+    assert_eq!(value(&f, "effect"), "escaped");
+    assert!(f.figures[0].description.contains("leaves the plot"));
+    assert!(f.readouts.iter().all(|r| !r.data_value.contains("NaN")));
+}
+
+#[test]
+fn the_schematic_follows_the_run() {
+    let mut d = crate::demos::create("nonlinear").unwrap();
+    let p = Params::defaults(&d.spec());
+    d.update(&p);
+    let a = d.schematic(&p, 0.0).unwrap();
+    let b = d.schematic(&p, 0.3).unwrap();
+    assert_ne!(a.description, b.description);
+    assert!(a.description.contains("80.0 mm"), "{}", a.description);
+}
+
+#[test]
+fn every_table_row_is_a_possible_effect() {
+    let spec = Nonlinear::declare().spec();
+    let table = spec.table.unwrap();
+    for preset in &spec.presets {
+        let e = value(&run(&preset_query(preset.label)), "effect");
+        assert!(table.rows.iter().any(|(k, _)| *k == e), "{e}");
+    }
+    assert!(table
+        .rows
+        .iter()
+        .all(|(_, c)| c.len() == table.columns.len()));
+}
+
+#[test]
+fn the_defaults_are_a_plausible_car_corner() {
+    // m = 300 kg, k = 24 kN/m, c = 1 500 N·s/m: ζ = c/(2√(mk)) ≈ 0.28, a typical car value.
+    let f = run("");
+    assert_eq!(value(&f, "effect"), "hardening spring");
+    let wn = (24_000.0f64 / 300.0).sqrt();
+    let zeta = 1_500.0 / (2.0 * (300.0f64 * 24_000.0).sqrt());
+    assert!(zeta > 0.2 && zeta < 0.4);
+    let td = std::f64::consts::TAU / (wn * (1.0 - zeta * zeta).sqrt());
+    assert!((number(&f, "period_linear") - td).abs() < 1e-3 * td);
+}
+
+#[test]
+fn friction_holds_the_mass_for_good_once_it_stops() {
+    // 1 500 N of sliding friction on the default car from 25 mm: it sticks, and the
+    // schematic at the end of the window shows it exactly where it stuck (no creep).
+    let mut d = crate::demos::create("nonlinear").unwrap();
+    let spec = d.spec();
+    let (p, _) = crate::params::resolve_query(&spec, "friction=1500&x0=0.025&k3=0");
+    let f = d.update(&p);
+    assert_eq!(value(&f, "effect"), "stick-slip");
+    let x = number(&f, "stick_position");
+    assert!(x.abs() <= 1.2 * 1_500.0 / 24_000.0 + 1e-12, "{x}");
+    let (_, t_end) = f.time_span.unwrap();
+    let end = d.schematic(&p, t_end).unwrap();
+    let shown = crate::format::si(x, "m", 3);
+    assert!(
+        end.description.contains(&shown),
+        "{} vs {shown}",
+        end.description
+    );
+}
