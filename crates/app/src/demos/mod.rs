@@ -168,7 +168,9 @@ const REGISTRY: &[(&str, Factory)] = &[
     ("rlc", || Box::new(rlc::Rlc)),
     ("analogy", || Box::new(analogy::Analogy)),
     ("resonance", || Box::new(resonance::Resonance::default())),
-    ("integrators", || Box::new(integrators::Integrators::new())),
+    ("integrators", || {
+        Box::new(Typed::new(integrators::Integrators::new()))
+    }),
     ("flutter", || Box::new(flutter::Flutter::default())),
     ("nonlinear", || Box::new(nonlinear::Nonlinear::default())),
     ("quarter-car-2dof", || {

@@ -33,12 +33,14 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod analysis;
+pub mod convergence;
 mod dopri5;
 mod error;
 mod euler;
 mod heun;
 mod linalg;
 mod rk4;
+pub mod stability;
 mod symplectic_euler;
 pub mod tableau;
 mod trapezoid;

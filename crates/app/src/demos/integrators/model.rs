@@ -1,0 +1,278 @@
+//! The integrators demo's model step: solver calls only. Runs each fixed-step method at
+//! `h`, DP45 at `tol`, the (cached) convergence study and the stability analysis.
+
+use super::P;
+use zeta_solver::integrate::analysis::{error_norms, FitWindow, StepLimit};
+use zeta_solver::integrate::convergence::{nested_study, NestedGrids, NestedStudy, RunStatus};
+use zeta_solver::integrate::stability::{region_boundary, Stability, REGION_RAYS};
+use zeta_solver::integrate::{
+    Dopri5, Dopri5Config, Dopri5Solution, Euler, FixedStep, Grid, Heun, IntegrationError, Linear2,
+    Method, Rk4, Solution, Stats,
+};
+use zeta_solver::{Complex, FreeResponse, SecondOrder};
+
+/// The fixed-step methods, in readout order.
+pub(super) const FIXED: [Method; 4] = [
+    Method::Euler,
+    Method::SymplecticEuler,
+    Method::Heun,
+    Method::Rk4,
+];
+/// Step sizes of the convergence study (halving each time).
+pub(super) const LEVELS: usize = 10;
+/// Steps one method may spend on the whole study (summed over its step sizes); finer step
+/// sizes beyond this budget are skipped, which keeps a ζ/ωₙ/T/x₀ drag fast.
+pub(super) const STUDY_BUDGET: usize = 24_000;
+/// Coarsest study step, as `h₀·max|λ|`.
+const COARSEST_H_LAMBDA: f64 = 1.0;
+/// Fewest common check points of the study.
+const MIN_CHECKPOINTS: usize = 16;
+/// Tolerances of the DP45 sweep.
+const DP45_TOLS: [f64; 9] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
+/// DP45's order is fitted to this many of its finest usable runs.
+const DP45_FIT_POINTS: usize = 4;
+/// Smallest ratio of largest to smallest mean step for a DP45 fit.
+const DP45_MIN_SPAN: f64 = 1.5;
+/// Step budget of one DP45 run.
+const DP45_MAX_STEPS: usize = 8_000;
+/// Errors below this fraction of x₀ are rounding: left out of the fit.
+pub(super) const FIT_FLOOR: f64 = 1e-10;
+/// Errors above this fraction of x₀ are not yet asymptotic (or unstable): left out.
+pub(super) const FIT_CEILING: f64 = 0.05;
+
+/// The cached convergence studies.
+#[derive(Debug, Clone)]
+pub(super) struct Study {
+    /// `(ζ, ωₙ, T, x₀)` it was computed for.
+    key: [f64; 4],
+    /// The nested grids of the fixed-step studies.
+    pub(super) grids: NestedGrids,
+    /// One study per fixed-step method, in [`FIXED`] order.
+    pub(super) fixed: Vec<NestedStudy>,
+    /// DP45 over the tolerance sweep, against its mean step.
+    pub(super) dp45: NestedStudy,
+}
+
+impl Study {
+    /// Fitted order of fixed-step method `k`.
+    pub fn order(&self, k: usize) -> Option<f64> {
+        self.fixed.get(k).and_then(|s| s.study.order)
+    }
+}
+
+/// One fixed-step run at the current `h`.
+#[derive(Debug, Clone)]
+pub(super) struct Run {
+    pub(super) sol: Solution<2>,
+    /// Time at which the numbers overflowed, if they did.
+    pub(super) overflow: Option<f64>,
+}
+
+/// What one step computes.
+pub struct Results {
+    pub(super) resp: FreeResponse,
+    pub(super) poles: [Complex; 2],
+    /// The step used (s).
+    pub(super) h: f64,
+    /// Number of steps.
+    pub(super) n: usize,
+    /// The exact state at each grid point.
+    pub(super) exact: Vec<[f64; 2]>,
+    /// The fixed-step runs, in [`FIXED`] order.
+    pub(super) runs: Vec<Run>,
+    pub(super) max_err: [Option<f64>; 4],
+    pub(super) growth: [f64; 4],
+    pub(super) limit: [StepLimit; 4],
+    pub(super) stable: [bool; 4],
+    pub(super) dp45: Result<Dopri5Solution<2>, IntegrationError>,
+    pub(super) dp45_err: Option<f64>,
+    pub(super) study: Study,
+}
+
+/// What the demo keeps between steps.
+#[derive(Debug, Clone, Default)]
+pub(super) struct Cache {
+    study: Option<Study>,
+    regions: Option<[Vec<(f64, f64)>; 3]>,
+}
+
+impl Cache {
+    /// The stability-region boundaries of Euler, Heun and RK4 (empty before the first step).
+    pub fn regions(&self) -> &[Vec<(f64, f64)>] {
+        self.regions.as_ref().map_or(&[], |r| r.as_slice())
+    }
+
+    pub fn step(&mut self, p: &P) -> Option<Results> {
+        let sys = SecondOrder::from_natural(p.wn, p.zeta).ok()?;
+        if !(p.x0.is_finite() && p.x0 > 0.0 && p.t_end.is_finite() && p.t_end > 0.0 && p.tol > 0.0)
+        {
+            return None;
+        }
+        let key = [
+            sys.damping_ratio().unwrap_or(f64::NAN),
+            sys.natural_frequency().unwrap_or(f64::NAN),
+            p.t_end,
+            p.x0,
+        ];
+        let resp = FreeResponse::new(sys, p.x0, 0.0);
+        let lin = Linear2::free(sys);
+        if self.study.as_ref().map(|st| st.key) != Some(key) {
+            self.study = Some(compute_study(&sys, &lin, &resp, p, key)?);
+        }
+        if self.regions.is_none() {
+            let outline =
+                |pts: Vec<Complex>| pts.into_iter().map(|z| (z.re, z.im)).collect::<Vec<_>>();
+            self.regions = Some([
+                outline(region_boundary(&Euler, REGION_RAYS)),
+                outline(region_boundary(&Heun, REGION_RAYS)),
+                outline(region_boundary(&Rk4, REGION_RAYS)),
+            ]);
+        }
+        let study = self.study.clone()?;
+        Some(run_current(sys, resp, &lin, p, study))
+    }
+}
+
+fn dp45_config(tol: f64, x0: f64) -> Dopri5Config {
+    Dopri5Config {
+        rtol: tol,
+        atol: tol * x0,
+        max_steps: DP45_MAX_STEPS,
+        ..Dopri5Config::default()
+    }
+}
+
+fn run_dp45(
+    lin: &Linear2<fn(f64) -> f64>,
+    p: &P,
+    tol: f64,
+) -> Result<Dopri5Solution<2>, IntegrationError> {
+    Dopri5::new(dp45_config(tol, p.x0))?.solve(lin, [p.x0, 0.0], 0.0, p.t_end)
+}
+
+/// Largest displacement error of a DP45 run over its accepted steps (NaN if any is NaN).
+fn dp45_error(resp: &FreeResponse, sol: &Solution<2>) -> f64 {
+    error_norms(sol, |t| resp.state(t))[0].max
+}
+
+pub(super) fn fit_window(x0: f64) -> FitWindow {
+    FitWindow {
+        floor: FIT_FLOOR * x0,
+        ceiling: FIT_CEILING * x0,
+    }
+}
+
+fn compute_study(
+    sys: &SecondOrder,
+    lin: &Linear2<fn(f64) -> f64>,
+    resp: &FreeResponse,
+    p: &P,
+    key: [f64; 4],
+) -> Option<Study> {
+    let rho = sys.poles().iter().map(|q| q.abs()).fold(0.0f64, f64::max);
+    let grids = NestedGrids::for_rate(
+        p.t_end,
+        rho,
+        COARSEST_H_LAMBDA,
+        MIN_CHECKPOINTS,
+        LEVELS,
+        STUDY_BUDGET,
+    )
+    .ok()?;
+    let window = fit_window(p.x0);
+    let y0 = [p.x0, 0.0];
+    let exact = |t: f64| resp.displacement(t);
+    let fixed = FIXED
+        .iter()
+        .map(|m| nested_study(m, lin, y0, 0, exact, &grids, window))
+        .collect();
+    let mut status = Vec::with_capacity(DP45_TOLS.len());
+    let mut study = zeta_solver::integrate::analysis::convergence_study(
+        &DP45_TOLS,
+        window,
+        |tol| match run_dp45(lin, p, tol) {
+            Ok(out) => {
+                let n = out.solution.stats.n_accepted.max(1);
+                status.push(RunStatus::Measured);
+                Ok((p.t_end / n as f64, dp45_error(resp, &out.solution)))
+            }
+            Err(e) => {
+                status.push(RunStatus::Skipped);
+                Err(e)
+            }
+        },
+    );
+    study.refit_finest(DP45_FIT_POINTS, DP45_MIN_SPAN);
+    Some(Study {
+        key,
+        grids,
+        fixed,
+        dp45: NestedStudy { study, status },
+    })
+}
+
+fn run_current(
+    sys: SecondOrder,
+    resp: FreeResponse,
+    lin: &Linear2<fn(f64) -> f64>,
+    p: &P,
+    study: Study,
+) -> Results {
+    // h ≥ 1e−3 s and T ≤ 60 s keep this within 60 000 steps.
+    let grid = Grid::new(0.0, p.t_end, p.h).unwrap_or(Grid {
+        t0: 0.0,
+        h: p.t_end,
+        n: 1,
+    });
+    let n = grid.n.max(1);
+    let h = if grid.n == 0 { p.t_end } else { grid.h };
+    let exact: Vec<[f64; 2]> = (0..=n).map(|i| resp.state(i as f64 * h)).collect();
+    let lookup = |t: f64| {
+        let i = ((t / h).round().max(0.0) as usize).min(n);
+        exact.get(i).copied().unwrap_or([f64::NAN; 2])
+    };
+    let mut max_err = [None; 4];
+    let mut runs = Vec::with_capacity(FIXED.len());
+    for (k, m) in FIXED.iter().enumerate() {
+        let mut sol = Solution {
+            t: (0..=n).map(|i| i as f64 * h).collect(),
+            y: vec![[f64::NAN; 2]; n + 1],
+            stats: Stats::default(),
+        };
+        let mut overflow = None;
+        match m.solve_into(lin, [p.x0, 0.0], 0.0, h, &mut sol.y) {
+            Ok(stats) => sol.stats = stats,
+            Err(IntegrationError::NonFinite { t }) => overflow = Some(t),
+            Err(_) => overflow = Some(0.0),
+        }
+        if overflow.is_none() {
+            let e = error_norms(&sol, lookup)[0].max;
+            max_err[k] = e.is_finite().then_some(e);
+        }
+        runs.push(Run { sol, overflow });
+    }
+    let growth = FIXED.map(|m| m.growth_per_step(&sys, h));
+    let limit = FIXED.map(|m| m.stable_steps(&sys));
+    let stable = limit.map(|l| l.allows(h));
+    let dp45 = run_dp45(lin, p, p.tol);
+    let dp45_err = dp45
+        .as_ref()
+        .ok()
+        .map(|o| dp45_error(&resp, &o.solution))
+        .filter(|e| e.is_finite());
+    Results {
+        resp,
+        poles: sys.poles(),
+        h,
+        n,
+        exact,
+        runs,
+        max_err,
+        growth,
+        limit,
+        stable,
+        dp45,
+        dp45_err,
+        study,
+    }
+}
