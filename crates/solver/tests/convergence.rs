@@ -4,12 +4,13 @@
 
 use zeta_solver::integrate::analysis::{Amplification, FitWindow, StepLimit};
 use zeta_solver::integrate::convergence::{
-    fit_power_law, nested_study, NestedGrids, PowerLaw, RunStatus,
+    asymptotic_range, fit_power_law, nested_study, NestedGrids, PowerLaw, RunStatus,
 };
 use zeta_solver::integrate::stability::{region_boundary, Stability};
+use zeta_solver::integrate::work_precision::dopri5_sweep;
 use zeta_solver::integrate::{
-    Dopri5, Dopri5Config, Euler, FixedStep, Heun, IntegrationError, Linear2, Method, Rk4,
-    SymplecticEuler,
+    Dopri5, Dopri5Config, Euler, ExactStepGrid, FixedStep, Heun, IntegrationError, Linear2, Method,
+    Rk4, Scalar, SymplecticEuler,
 };
 use zeta_solver::{Complex, FreeResponse, SecondOrder};
 
@@ -200,4 +201,126 @@ fn region_boundaries_pass_through_the_real_axis_limits() {
         let (a, b) = (pts[0], pts[360]);
         assert!((a - b).abs() < 1e-12);
     }
+}
+
+#[test]
+fn an_exact_step_grid_uses_h_and_ends_with_a_shorter_step() {
+    // T = 20 s, h = 0.3 s: 66 steps of exactly 0.3 s, then 0.2 s to end at T.
+    let g = ExactStepGrid::new(0.0, 20.0, 0.3).unwrap();
+    assert_eq!(g.steps(), 67);
+    for i in 0..66 {
+        assert_eq!(g.step(i), g.time(i + 1) - g.time(i));
+        assert!((g.step(i) - 0.3).abs() < 1e-14);
+    }
+    assert_eq!(g.time(66), 66.0 * 0.3);
+    assert_eq!(g.time(67), 20.0);
+    assert!((g.last_step() - 0.2).abs() < 1e-13);
+    // h dividing T: every step is h, even where (n − 1)·h rounds.
+    let g = ExactStepGrid::new(0.0, 20.0, 0.1).unwrap();
+    assert_eq!((g.steps(), g.last_step()), (200, 0.1));
+    assert!(matches!(
+        ExactStepGrid::new(0.0, 1.0, 0.0),
+        Err(IntegrationError::InvalidStep { .. })
+    ));
+    // Forward Euler on y' = λy multiplies by (1 + λ·hᵢ) per step: closed form
+    // (1 + 0.3λ)⁶⁶·(1 + 0.2λ), to rounding.
+    let lambda = -0.7;
+    let mut out = vec![[f64::NAN]; 68];
+    let stats = Euler
+        .solve_exact_step_into(
+            &Scalar { lambda },
+            [1.0],
+            &ExactStepGrid::new(0.0, 20.0, 0.3).unwrap(),
+            &mut out,
+        )
+        .unwrap();
+    assert_eq!(stats.n_accepted, 67);
+    let want = (1.0 + 0.3 * lambda).powi(66) * (1.0 + 0.2 * lambda);
+    assert!(
+        (out[67][0] / want - 1.0).abs() < 1e-12,
+        "{} vs {want}",
+        out[67][0]
+    );
+}
+
+#[test]
+fn the_asymptotic_range_leaves_out_the_coarse_steps_that_bias_the_order() {
+    // e = h²·(1 + 3h): local orders 2 + O(h) drift down towards 2 as h halves. A fit over
+    // every point reads 2.2; the asymptotic range (finest local orders within 0.03) reads
+    // within 0.02 of 2.
+    let pts: Vec<(f64, f64)> = (0..10)
+        .map(|j| 0.5f64.powi(j))
+        .map(|h| (h, h * h * (1.0 + 3.0 * h)))
+        .collect();
+    let all = fit_power_law(&pts).unwrap().order;
+    let range = asymptotic_range(&pts, 0.03).unwrap();
+    assert_eq!(range.end, 10);
+    let fit = fit_power_law(&pts[range.clone()]).unwrap().order;
+    assert!(all > 2.15, "{all}");
+    assert!((fit - 2.0).abs() < 0.02, "{fit} over {range:?}");
+    // On an exact power law every point is in range and the fit is exact.
+    let exact: Vec<(f64, f64)> = pts.iter().map(|&(h, _)| (h, 7.0 * h.powi(3))).collect();
+    assert_eq!(asymptotic_range(&exact, 0.03), Some(0..10));
+    let mut study = zeta_solver::integrate::analysis::convergence_study(
+        &exact.iter().map(|p| p.0).collect::<Vec<_>>(),
+        FitWindow {
+            floor: 0.0,
+            ceiling: 1e9,
+        },
+        |h| Ok::<_, ()>((h, 7.0 * h.powi(3))),
+    );
+    study.restrict_to_asymptotic(0.03);
+    let law = study.power_law().unwrap();
+    assert!((law.order - 3.0).abs() < 1e-12 && (law.coefficient / 7.0 - 1.0).abs() < 1e-12);
+}
+
+#[test]
+fn dp45_work_precision_has_order_five_where_the_tolerance_sets_the_steps() {
+    let tols = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
+    let run = |zeta: f64, wn: f64, t_end: f64| {
+        let sys = SecondOrder::from_natural(wn, zeta).unwrap();
+        let exact = FreeResponse::new(sys, 1.0, 0.0);
+        let limit = Dopri5::new(Dopri5Config::default())
+            .unwrap()
+            .stable_steps(&sys);
+        dopri5_sweep(
+            &Linear2::free(sys),
+            [1.0, 0.0],
+            t_end,
+            &tols,
+            |tol| Dopri5Config {
+                rtol: tol,
+                atol: tol,
+                ..Dopri5Config::default()
+            },
+            |sol| {
+                sol.t
+                    .iter()
+                    .zip(&sol.y)
+                    .map(|(&t, y)| (y[0] - exact.displacement(t)).abs())
+                    .fold(0.0, f64::max)
+            },
+            limit,
+            FitWindow {
+                floor: 1e-10,
+                ceiling: 0.5,
+            },
+            0.03,
+        )
+    };
+    // Lightly damped over 20 s: the tolerance sets every step; e ∝ N^(−5) within 0.1.
+    let light = run(0.05, 2.0, 20.0);
+    assert_eq!(light.stability_set(), 0);
+    assert!(
+        (light.order().unwrap() - 5.0).abs() < 0.1,
+        "{:?}",
+        light.order()
+    );
+    for w in light.points.windows(2) {
+        assert!(w[1].work > w[0].work, "tighter tolerances cost more");
+    }
+    // Stiff and overdamped: stability sets the steps of every run; no order.
+    let stiff = run(2.0, 20.0, 5.0);
+    assert_eq!(stiff.stability_set(), tols.len());
+    assert_eq!(stiff.order(), None);
 }

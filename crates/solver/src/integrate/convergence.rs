@@ -80,6 +80,34 @@ pub fn fit_power_law(points: &[(f64, f64)]) -> Option<PowerLaw> {
     })
 }
 
+/// The local orders `qᵢ = ln(eᵢ/eᵢ₊₁)/ln(hᵢ/hᵢ₊₁)` between neighbouring points `(h, e)`:
+/// the slope of each segment of the log–log error curve.
+pub fn local_orders(points: &[(f64, f64)]) -> Vec<f64> {
+    points
+        .windows(2)
+        .map(|w| (w[0].1 / w[1].1).ln() / (w[0].0 / w[1].0).ln())
+        .collect()
+}
+
+/// The asymptotic range of an error curve `(h, e)` ordered from coarse to fine: the finest
+/// two points, extended towards coarser ones while each segment's local order
+/// ([`local_orders`]) stays within `spread` of the finest segment's. Coarse steps outside
+/// the asymptotic range have local orders that still drift (upward for an overdamped
+/// system, where `e ≈ C·hᵖ·(1 + D·h)`), so fitting over them biases the order. Returns the
+/// index range of the points, `None` with fewer than two points or a non-finite local order.
+pub fn asymptotic_range(points: &[(f64, f64)], spread: f64) -> Option<std::ops::Range<usize>> {
+    let q = local_orders(points);
+    let finest = *q.last()?;
+    if !finest.is_finite() {
+        return None;
+    }
+    let mut start = q.len() - 1;
+    while start > 0 && (q[start - 1] - finest).abs() <= spread {
+        start -= 1;
+    }
+    Some(start..points.len())
+}
+
 impl ConvergenceStudy {
     /// The points used by the fit, as `(h, error)`.
     pub fn used(&self) -> Vec<(f64, f64)> {
@@ -105,35 +133,30 @@ impl ConvergenceStudy {
         (lo <= hi).then_some((lo, hi))
     }
 
-    /// Keeps only the `count` smallest-step used points, and drops the fit altogether when
-    /// their steps span less than a factor `min_span`: a slope over a narrow span of steps
-    /// means nothing (e.g. an adaptive method whose steps are set by stability, so that a
-    /// tighter tolerance hardly changes them).
-    pub fn refit_finest(&mut self, count: usize, min_span: f64) {
-        let mut used: Vec<(usize, f64)> = self
+    /// Restricts the fit to the asymptotic range ([`asymptotic_range`]) of the finest run
+    /// of consecutive used points, and refits. Points outside it stay measured but unused.
+    pub fn restrict_to_asymptotic(&mut self, spread: f64) {
+        // The finest run of consecutive used points.
+        let end = self
             .points
             .iter()
-            .enumerate()
-            .filter(|(_, p)| p.used)
-            .map(|(i, p)| (i, p.h))
+            .rposition(|p| p.used)
+            .map_or(0, |i| i + 1);
+        let start = self.points[..end]
+            .iter()
+            .rposition(|p| !p.used)
+            .map_or(0, |i| i + 1);
+        let run: Vec<(f64, f64)> = self.points[start..end]
+            .iter()
+            .map(|p| (p.h, p.error))
             .collect();
-        used.sort_by(|a, b| a.1.total_cmp(&b.1));
-        let keep: Vec<usize> = used.iter().take(count).map(|u| u.0).collect();
+        let range = asymptotic_range(&run, spread);
         for (i, p) in self.points.iter_mut().enumerate() {
-            p.used = p.used && keep.contains(&i);
+            p.used = range
+                .as_ref()
+                .is_some_and(|r| i >= start && r.contains(&(i - start)));
         }
-        let fit = self.used();
-        let (lo, hi) = fit.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), p| {
-            (lo.min(p.0), hi.max(p.0))
-        });
-        self.order = if hi >= min_span * lo {
-            fit_power_law(&fit).map(|f| f.order)
-        } else {
-            for p in self.points.iter_mut() {
-                p.used = false;
-            }
-            None
-        };
+        self.order = fit_power_law(&self.used()).map(|f| f.order);
     }
 }
 
@@ -199,6 +222,11 @@ impl NestedGrids {
         Self::new(t_end, n0, levels, budget)
     }
 
+    /// The same grids with another step budget (e.g. a larger one for a cheap method).
+    pub fn with_budget(self, budget: usize) -> Self {
+        Self { budget, ..self }
+    }
+
     /// Number of check intervals `n₀`.
     pub fn intervals(&self) -> usize {
         self.n0
@@ -248,6 +276,22 @@ pub struct NestedStudy {
     pub study: ConvergenceStudy,
     /// One status per level.
     pub status: Vec<RunStatus>,
+    /// Right-hand-side evaluations of each measured level (0 for levels not measured).
+    pub work: Vec<usize>,
+}
+
+impl NestedStudy {
+    /// The measured levels as `(f-evaluations, error)`, coarsest first: the method's
+    /// points on a work–precision diagram.
+    pub fn work_precision(&self) -> Vec<(f64, f64)> {
+        self.status
+            .iter()
+            .zip(&self.study.points)
+            .zip(&self.work)
+            .filter(|((s, p), _)| **s == RunStatus::Measured && p.error.is_finite())
+            .map(|((_, p), &w)| (w as f64, p.error))
+            .collect()
+    }
 }
 
 /// Runs `method` on every level of `grids` from `y0` at `t = 0` and measures the error of
@@ -267,6 +311,7 @@ pub fn nested_study<const N: usize, S: System<N>, M: FixedStep>(
 ) -> NestedStudy {
     let reference: Vec<f64> = (0..=grids.n0).map(|k| exact(grids.check_time(k))).collect();
     let mut status = Vec::with_capacity(grids.levels);
+    let mut work = Vec::with_capacity(grids.levels);
     let mut level = 0usize;
     let mut resolved = false;
     let mut spent = 0usize;
@@ -276,25 +321,32 @@ pub fn nested_study<const N: usize, S: System<N>, M: FixedStep>(
         spent = spent.saturating_add(grids.n0.saturating_mul(stride));
         if resolved || spent > grids.budget {
             status.push(RunStatus::Skipped);
+            work.push(0);
             return Err(());
         }
         match checkpoint_error(method, sys, y0, component, h, stride, &reference) {
-            Some(e) => {
+            Some((e, n_rhs)) => {
                 resolved = e <= window.floor;
                 status.push(RunStatus::Measured);
+                work.push(n_rhs);
                 Ok((h, e))
             }
             None => {
                 status.push(RunStatus::Overflow);
+                work.push(0);
                 Err(())
             }
         }
     });
-    NestedStudy { study, status }
+    NestedStudy {
+        study,
+        status,
+        work,
+    }
 }
 
-/// Error at the check points of a run of `(reference.len() − 1)·stride` steps of `h`;
-/// `None` if the numbers overflow or a step fails.
+/// Error at the check points of a run of `(reference.len() − 1)·stride` steps of `h`, and
+/// the `rhs` calls it took; `None` if the numbers overflow or a step fails.
 fn checkpoint_error<const N: usize, S: System<N>, M: FixedStep>(
     method: &M,
     sys: &S,
@@ -303,12 +355,13 @@ fn checkpoint_error<const N: usize, S: System<N>, M: FixedStep>(
     h: f64,
     stride: usize,
     reference: &[f64],
-) -> Option<f64> {
+) -> Option<(f64, usize)> {
     let mut y = y0;
     let mut err = 0.0f64;
+    let mut n_rhs = 0usize;
     let n = reference.len().saturating_sub(1).saturating_mul(stride);
     for i in 1..=n {
-        method.step(sys, (i - 1) as f64 * h, h, &mut y).ok()?;
+        n_rhs += method.step(sys, (i - 1) as f64 * h, h, &mut y).ok()?;
         if i.is_multiple_of(stride) {
             let d = (y.get(component)? - reference.get(i / stride)?).abs();
             if !d.is_finite() {
@@ -317,5 +370,5 @@ fn checkpoint_error<const N: usize, S: System<N>, M: FixedStep>(
             err = err.max(d);
         }
     }
-    Some(err)
+    Some((err, n_rhs))
 }

@@ -1,9 +1,10 @@
-//! The convergence plot: largest error at the common check points against the step h,
-//! with the fitted power laws and reference slopes.
+//! The convergence plot: largest error at the common check points against the step h for
+//! the fixed-step methods, with the power laws fitted over each asymptotic range (drawn
+//! over exactly that range) and reference slopes.
 
 use super::axes::log_axis;
-use super::figures::{mark, DP45_MARK, DP45_STYLE, ERROR_CLIP, LOOKS};
-use super::model::{FIT_CEILING, FIT_FLOOR, LEVELS, STUDY_BUDGET};
+use super::figures::{mark, ERROR_CLIP, LOOKS};
+use super::model::{EULER_BUDGET, FIT_CEILING, FIT_FLOOR, LEVELS, SPREAD, STUDY_BUDGET};
 use super::{Results, P};
 use crate::figure::{Figure, LineStyle, Marker, MarkerShape, Series};
 use crate::format::si;
@@ -50,10 +51,15 @@ impl Canvas {
             .filter(|(st, _)| **st == RunStatus::Overflow)
             .map(|(_, q)| q.h)
             .fold(0.0f64, f64::max);
-        let order = study.order.map_or(
-            "no fit (too few points in the asymptotic range)".into(),
-            |o| format!("fitted slope {}", si(o, "", 3)),
-        );
+        let order = match (study.order, study.fitted_span()) {
+            (Some(o), Some((lo, hi))) => format!(
+                "fitted slope {} (h = {} … {})",
+                si(o, "", 3),
+                si(lo, "s", 3),
+                si(hi, "s", 3)
+            ),
+            _ => "no fit (too few points in the asymptotic range)".into(),
+        };
         let mut w = format!("{} {order}", s.name);
         if overflowed > 0.0 {
             w.push_str(&format!(", overflows for h ≥ {}", si(overflowed, "s", 3)));
@@ -78,7 +84,7 @@ impl Canvas {
             self.series.push(Series::new(
                 "",
                 vec![(lo, law.at(lo)), (hi, law.at(hi))],
-                LineStyle::solid(s.style.ink, 1.0),
+                LineStyle::solid(s.style.ink, 4.0),
             ));
         }
         let label = match study.order {
@@ -112,14 +118,6 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
             });
         }
     }
-    c.add(Sweep {
-        sweep: &study.dp45,
-        name: "DP45 (against the mean step T/steps over tolerances 1e-2 … 1e-10, its 4 finest usable runs; no fit when stability, not accuracy, sets its steps)",
-        legend: "DP45 (mean step)",
-        style: DP45_STYLE,
-        shape: Some(DP45_MARK),
-        show: p.show[4],
-    });
     let (mut ylo, mut yhi) = c.y;
     if !(ylo.is_finite() && yhi > 0.0) {
         ylo = FIT_FLOOR * p.x0;
@@ -164,14 +162,19 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
     ));
     let description = format!(
         "Largest error at {} common check points against the step h, for up to {} step sizes \
-         halving from {} (at most {} steps per method in all; finer steps are skipped). {}. Points \
-         with error above {} % or below 1e-10 of x₀ are left out of the fit; reference \
-         slopes 1 and 4 are dotted; the current h is the dashed vertical line.",
+         halving from {} (at most {} steps per method in all, {} for forward Euler; finer steps \
+         are skipped). {}. Each \
+         order is fitted over the asymptotic range only, drawn as the thick segment: the finest \
+         steps whose local slopes agree within {}, with errors below {} % and above 1e-10 of \
+         x₀. Reference slopes 1 and 4 are dotted; the current h is the dashed vertical line. \
+         DP45 has no single h: see the work–precision plot.",
         study.grids.intervals() + 1,
         LEVELS,
         si(study.grids.step(0), "s", 3),
         STUDY_BUDGET,
+        EULER_BUDGET,
         c.words.join("; "),
+        SPREAD,
         FIT_CEILING * 100.0
     );
     Figure {

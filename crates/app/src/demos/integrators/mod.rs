@@ -4,23 +4,28 @@
 //! Four fixed-step methods (forward Euler, symplectic Euler, Heun, RK4) run at the step `h`
 //! and Dormand–Prince 5(4) runs adaptively to the tolerance `tol`. Plots: each method
 //! against the exact solution, the error over time, a log–log convergence study with fitted
-//! orders, and the stability regions `|R(z)| ≤ 1` with the system's `z = hλ`.
+//! orders, a work–precision diagram (error against f-evaluations, all five methods) and the
+//! stability regions `|R(z)| ≤ 1` with the system's `z = hλ`.
 //!
 //! Choices documented here (and in the figures' text alternatives):
 //! - **Readouts of switched-off methods are still computed**; the toggles hide curves only.
+//! - Every step is exactly `h`; when `h` does not divide `T` the last step is shorter, so
+//!   the run ends at `T` (readouts `h_used` and `h_last`).
 //! - `max_err_<method>` is `max |x_num − x_exact|` over the run's own grid points in
 //!   `[0, T]` (for DP45, its accepted steps). A run that overflows shows `overflow` with an
 //!   empty `data-value`; a run that grows but stays finite reports its (huge) error.
 //! - The convergence study uses nested grids `h_j = T/(n₀·2ʲ)`, measuring the error at the
 //!   `n₀ + 1` points common to all of them; it depends on ζ, ωₙ, T and x₀ only and is cached,
-//!   so dragging `h`, `tol` or a toggle does not rerun it.
-//! - `order_dp45` is the slope of error against the *mean* step `T/steps` over a sweep of
-//!   tolerances 10⁻² … 10⁻¹⁰ (an adaptive method has no single `h`).
+//!   so dragging `h`, `tol` or a toggle does not rerun it. Orders are fitted over the
+//!   asymptotic range only: the finest levels whose local orders agree within 0.05.
+//! - `order_dp45` is minus the slope of error against f-evaluations over a sweep of
+//!   tolerances 10⁻² … 10⁻¹⁰ (an adaptive method has no single `h`), fitted only over runs
+//!   whose steps the tolerance set; when stability sets them it is undefined.
 //! - Symplectic Euler is not a scalar map `R(z)`: its stability comes from the spectral
 //!   radius of its 2×2 step matrix and is described in words, not drawn as a region.
 //!
 //! This file declares the demo; `model.rs` is its step (solver calls only), `figures.rs`,
-//! `convergence.rs` and `stability.rs` build the plots, `text.rs` holds the prose.
+//! `convergence.rs`, `work.rs` and `stability.rs` build the plots, `text.rs` holds the prose.
 
 mod axes;
 mod convergence;
@@ -28,6 +33,7 @@ mod figures;
 mod model;
 mod stability;
 mod text;
+mod work;
 
 use super::Model;
 use crate::declare::{Declaration, Param, ReadoutDef};
@@ -149,7 +155,16 @@ impl Model for Integrators {
                 }),
             ],
             readouts: vec![
-                ReadoutDef::number("h_used", "step used, T/⌈T/h⌉", "s", 4, |r| Some(r.h)),
+                ReadoutDef::number(
+                    "h_used",
+                    "step used: exactly h (a shorter last step ends the run at T)",
+                    "s",
+                    4,
+                    |r| Some(r.h),
+                ),
+                ReadoutDef::number("h_last", "last step, ending the run at T", "s", 4, |r| {
+                    Some(r.h_last)
+                }),
                 ReadoutDef::number_or_note(
                     "max_err_euler",
                     "max error, forward Euler",
@@ -194,10 +209,10 @@ impl Model for Integrators {
                 }),
                 ReadoutDef::number(
                     "order_dp45",
-                    "fitted order, DP45 (vs mean step)",
+                    "observed order, DP45 (error against f-evaluations, where the tolerance sets the steps)",
                     "",
                     3,
-                    |r| r.study.dp45.study.order,
+                    |r| r.study.dp45.order(),
                 ),
                 ReadoutDef::text("stable_euler", "stable at this h, forward Euler", |r| {
                     stable(r, 0)
@@ -257,6 +272,11 @@ impl Model for Integrators {
                     aspect: 1.25,
                 },
                 PlotSpec {
+                    key: "work",
+                    title: work::TITLE,
+                    aspect: 1.25,
+                },
+                PlotSpec {
                     key: "stability",
                     title: stability::TITLE,
                     aspect: 1.3,
@@ -290,6 +310,7 @@ impl Model for Integrators {
             figures::response(p, r),
             figures::error(p, r),
             convergence::figure(p, r),
+            work::figure(p, r),
             stability::figure(p, r, self.cache.regions()),
         ]
     }

@@ -3,11 +3,12 @@
 
 use super::P;
 use zeta_solver::integrate::analysis::{error_norms, FitWindow, StepLimit};
-use zeta_solver::integrate::convergence::{nested_study, NestedGrids, NestedStudy, RunStatus};
+use zeta_solver::integrate::convergence::{nested_study, NestedGrids, NestedStudy};
 use zeta_solver::integrate::stability::{region_boundary, Stability, REGION_RAYS};
+use zeta_solver::integrate::work_precision::{dopri5_sweep, WorkPrecision};
 use zeta_solver::integrate::{
-    Dopri5, Dopri5Config, Dopri5Solution, Euler, FixedStep, Grid, Heun, IntegrationError, Linear2,
-    Method, Rk4, Solution, Stats,
+    Dopri5, Dopri5Config, Dopri5Solution, Euler, ExactStepGrid, FixedStep, Heun, IntegrationError,
+    Linear2, Method, Rk4, Solution, Stats,
 };
 use zeta_solver::{Complex, FreeResponse, SecondOrder};
 
@@ -19,26 +20,29 @@ pub(super) const FIXED: [Method; 4] = [
     Method::Rk4,
 ];
 /// Step sizes of the convergence study (halving each time).
-pub(super) const LEVELS: usize = 10;
+pub(super) const LEVELS: usize = 12;
 /// Steps one method may spend on the whole study (summed over its step sizes); finer step
 /// sizes beyond this budget are skipped, which keeps a ζ/ωₙ/T/x₀ drag fast.
 pub(super) const STUDY_BUDGET: usize = 24_000;
+/// Forward Euler's budget: one evaluation per step, and the slowest to reach its
+/// asymptotic range (on an undamped oscillator its error only becomes small below
+/// h ≈ 0.01/ωₙ²T).
+pub(super) const EULER_BUDGET: usize = 48_000;
 /// Coarsest study step, as `h₀·max|λ|`.
 const COARSEST_H_LAMBDA: f64 = 1.0;
 /// Fewest common check points of the study.
 const MIN_CHECKPOINTS: usize = 16;
 /// Tolerances of the DP45 sweep.
-const DP45_TOLS: [f64; 9] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
-/// DP45's order is fitted to this many of its finest usable runs.
-const DP45_FIT_POINTS: usize = 4;
-/// Smallest ratio of largest to smallest mean step for a DP45 fit.
-const DP45_MIN_SPAN: f64 = 1.5;
+pub(super) const DP45_TOLS: [f64; 9] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
+/// The asymptotic range: neighbouring local orders within this of the finest one.
+pub(super) const SPREAD: f64 = 0.03;
 /// Step budget of one DP45 run.
 const DP45_MAX_STEPS: usize = 8_000;
 /// Errors below this fraction of x₀ are rounding: left out of the fit.
 pub(super) const FIT_FLOOR: f64 = 1e-10;
-/// Errors above this fraction of x₀ are not yet asymptotic (or unstable): left out.
-pub(super) const FIT_CEILING: f64 = 0.05;
+/// Errors above this fraction of x₀ are no longer small (or unstable): left out. Whether
+/// the smaller ones are asymptotic is decided by their local orders ([`SPREAD`]).
+pub(super) const FIT_CEILING: f64 = 0.5;
 
 /// The cached convergence studies.
 #[derive(Debug, Clone)]
@@ -49,8 +53,8 @@ pub(super) struct Study {
     pub(super) grids: NestedGrids,
     /// One study per fixed-step method, in [`FIXED`] order.
     pub(super) fixed: Vec<NestedStudy>,
-    /// DP45 over the tolerance sweep, against its mean step.
-    pub(super) dp45: NestedStudy,
+    /// DP45 over the tolerance sweep: error against f-evaluations.
+    pub(super) dp45: WorkPrecision,
 }
 
 impl Study {
@@ -72,8 +76,10 @@ pub(super) struct Run {
 pub struct Results {
     pub(super) resp: FreeResponse,
     pub(super) poles: [Complex; 2],
-    /// The step used (s).
+    /// The step used (s): exactly the chosen `h`.
     pub(super) h: f64,
+    /// The last step (s), shorter than `h` when `h` does not divide `T`.
+    pub(super) h_last: f64,
     /// Number of steps.
     pub(super) n: usize,
     /// The exact state at each grid point.
@@ -129,7 +135,7 @@ impl Cache {
             ]);
         }
         let study = self.study.clone()?;
-        Some(run_current(sys, resp, &lin, p, study))
+        run_current(sys, resp, &lin, p, study)
     }
 }
 
@@ -184,30 +190,32 @@ fn compute_study(
     let exact = |t: f64| resp.displacement(t);
     let fixed = FIXED
         .iter()
-        .map(|m| nested_study(m, lin, y0, 0, exact, &grids, window))
+        .map(|m| {
+            let grids = match m {
+                Method::Euler => grids.with_budget(EULER_BUDGET),
+                _ => grids,
+            };
+            let mut out = nested_study(m, lin, y0, 0, exact, &grids, window);
+            out.study.restrict_to_asymptotic(SPREAD);
+            out
+        })
         .collect();
-    let mut status = Vec::with_capacity(DP45_TOLS.len());
-    let mut study = zeta_solver::integrate::analysis::convergence_study(
+    let dp45 = dopri5_sweep(
+        lin,
+        y0,
+        p.t_end,
         &DP45_TOLS,
+        |tol| dp45_config(tol, p.x0),
+        |sol| dp45_error(resp, sol),
+        Dopri5::new(Dopri5Config::default()).ok()?.stable_steps(sys),
         window,
-        |tol| match run_dp45(lin, p, tol) {
-            Ok(out) => {
-                let n = out.solution.stats.n_accepted.max(1);
-                status.push(RunStatus::Measured);
-                Ok((p.t_end / n as f64, dp45_error(resp, &out.solution)))
-            }
-            Err(e) => {
-                status.push(RunStatus::Skipped);
-                Err(e)
-            }
-        },
+        SPREAD,
     );
-    study.refit_finest(DP45_FIT_POINTS, DP45_MIN_SPAN);
     Some(Study {
         key,
         grids,
         fixed,
-        dp45: NestedStudy { study, status },
+        dp45,
     })
 }
 
@@ -217,30 +225,30 @@ fn run_current(
     lin: &Linear2<fn(f64) -> f64>,
     p: &P,
     study: Study,
-) -> Results {
+) -> Option<Results> {
     // h ≥ 1e−3 s and T ≤ 60 s keep this within 60 000 steps.
-    let grid = Grid::new(0.0, p.t_end, p.h).unwrap_or(Grid {
-        t0: 0.0,
-        h: p.t_end,
-        n: 1,
-    });
-    let n = grid.n.max(1);
-    let h = if grid.n == 0 { p.t_end } else { grid.h };
-    let exact: Vec<[f64; 2]> = (0..=n).map(|i| resp.state(i as f64 * h)).collect();
+    let grid = ExactStepGrid::new(0.0, p.t_end, p.h).ok()?;
+    let n = grid.steps();
+    let h = grid.h();
+    let exact: Vec<[f64; 2]> = (0..=n).map(|i| resp.state(grid.time(i))).collect();
     let lookup = |t: f64| {
-        let i = ((t / h).round().max(0.0) as usize).min(n);
+        let i = if t >= p.t_end {
+            n
+        } else {
+            ((t / h).round().max(0.0) as usize).min(n)
+        };
         exact.get(i).copied().unwrap_or([f64::NAN; 2])
     };
     let mut max_err = [None; 4];
     let mut runs = Vec::with_capacity(FIXED.len());
     for (k, m) in FIXED.iter().enumerate() {
         let mut sol = Solution {
-            t: (0..=n).map(|i| i as f64 * h).collect(),
+            t: (0..=n).map(|i| grid.time(i)).collect(),
             y: vec![[f64::NAN; 2]; n + 1],
             stats: Stats::default(),
         };
         let mut overflow = None;
-        match m.solve_into(lin, [p.x0, 0.0], 0.0, h, &mut sol.y) {
+        match m.solve_exact_step_into(lin, [p.x0, 0.0], &grid, &mut sol.y) {
             Ok(stats) => sol.stats = stats,
             Err(IntegrationError::NonFinite { t }) => overflow = Some(t),
             Err(_) => overflow = Some(0.0),
@@ -260,10 +268,11 @@ fn run_current(
         .ok()
         .map(|o| dp45_error(&resp, &o.solution))
         .filter(|e| e.is_finite());
-    Results {
+    Some(Results {
         resp,
         poles: sys.poles(),
         h,
+        h_last: grid.last_step(),
         n,
         exact,
         runs,
@@ -274,5 +283,5 @@ fn run_current(
         dp45,
         dp45_err,
         study,
-    }
+    })
 }

@@ -145,9 +145,14 @@ pub(super) fn dp45_words(p: &P, r: &Results, steps: usize) -> String {
 
 /// The response plot's text alternative.
 pub(super) fn describe_response(p: &P, r: &Results, words: &[String]) -> String {
+    let last = if r.h_last < r.h {
+        format!(", the last {} to end at T", si(r.h_last, "s", 3))
+    } else {
+        String::new()
+    };
     format!(
-        "Each method against the exact decaying oscillation over {} with h = {} ({} steps). {}. \
-         The plot shows ±{} of the exact amplitude; curves beyond it are clipped at the edge.",
+        "Each method against the exact decaying oscillation over {} with h = {} ({} steps{last}). \
+         {}. The plot shows ±{} of the exact amplitude; curves beyond it are clipped at the edge.",
         si(p.t_end, "s", 3),
         si(r.h, "s", 3),
         r.n,
