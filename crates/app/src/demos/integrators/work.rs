@@ -72,8 +72,8 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
             ));
         }
         let label = match dp.order() {
-            Some(o) => format!("DP45 ● (× stability-set): {}", si(o, "", 3)),
-            None => "DP45 ● (× stability-set): no order".to_string(),
+            Some(o) => format!("DP45: {}", si(o, "", 3)),
+            None => "DP45: no order".to_string(),
         };
         drawn.extend(&pts);
         series.push(Series::new(label, pts, DP45_STYLE));
@@ -95,7 +95,8 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
          f, on log–log axes, for every method: fixed-step ones at the convergence study's step \
          sizes (error at its common check points), DP45 at tolerances {} … {} (error over its \
          accepted steps). Lower is more accurate, further left is cheaper; a method of order p \
-         falls with slope −p. {}.",
+         falls with slope −p; DP45's runs are dots where the tolerance sets their steps and \
+         crosses where stability does. {}.",
         sci(DP45_TOLS[0]),
         sci(DP45_TOLS[DP45_TOLS.len() - 1]),
         words.join("; ")
