@@ -1,10 +1,11 @@
-// End to end: the integrators demo in headless Chromium. Readouts are checked against an
-// independent JavaScript implementation of the exact solution and of forward Euler, Heun
-// and RK4 (in this test only), then every slider, toggle and preset is exercised.
+// End to end: the integrators demo in headless Chromium. Readouts and text alternatives are
+// checked against the golden snapshots written natively (crates/app/tests/snapshots/), not
+// against physics re-implemented here; then every slider, toggle and preset is exercised.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { serve } from './support/server.mjs';
 import { launch, open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { golden, goldenState } from './support/golden.mjs';
 
 let server;
 let browser;
@@ -19,68 +20,33 @@ after(async () => {
   await server?.close();
 });
 
-const PLOTS = ['response', 'error', 'convergence', 'stability'];
+const PLOTS = ['response', 'error', 'convergence', 'work', 'stability'];
 const PRESET = 'demo=integrators&zeta=0.05&wn=2&h=0.3';
+const LIGHT = 'Lightly damped, h = 0.3 s';
 
-// ---- Independent reference (underdamped free response, v0 = 0) -------------------------
-function exact(zeta, wn, x0, t) {
-  const a = zeta * wn;
-  const wd = wn * Math.sqrt(1 - zeta * zeta);
-  return Math.exp(-a * t) * (x0 * Math.cos(wd * t) + ((a * x0) / wd) * Math.sin(wd * t));
-}
+// Numbers are recorded in exponent form to 12 digits; text readouts as they are.
+const isNumber = (v) => /^-?\d\.\d+e[-+]?\d+$/.test(v);
 
-const rhs = (zeta, wn) => ([x, v]) => [v, -2 * zeta * wn * v - wn * wn * x];
+// DP45's step-size controller and the fits over errors near the rounding floor depend on
+// the last bits of powf, exp and cos, which differ between native code and wasm: those
+// readouts agree to 1e-6 relative (far below the 3 digits shown), the rest to 1e-11.
+const LOOSE = /^(order_|max_err_dp45$)/;
+const tolerance = (key) => (LOOSE.test(key) ? 1e-6 : 1e-11);
+const same = (key, shown, recorded) =>
+  isNumber(recorded)
+    ? Math.abs(Number(shown) - Number(recorded)) <= tolerance(key) * Math.max(1, Math.abs(Number(recorded)))
+    : shown === recorded;
 
-const STEPPERS = {
-  euler: (f, y, h) => {
-    const k = f(y);
-    return [y[0] + h * k[0], y[1] + h * k[1]];
-  },
-  heun: (f, y, h) => {
-    const k1 = f(y);
-    const k2 = f([y[0] + h * k1[0], y[1] + h * k1[1]]);
-    return [y[0] + (h / 2) * (k1[0] + k2[0]), y[1] + (h / 2) * (k1[1] + k2[1])];
-  },
-  rk4: (f, y, h) => {
-    const add = (a, b, s) => [a[0] + s * b[0], a[1] + s * b[1]];
-    const k1 = f(y);
-    const k2 = f(add(y, k1, h / 2));
-    const k3 = f(add(y, k2, h / 2));
-    const k4 = f(add(y, k3, h));
-    return [
-      y[0] + (h / 6) * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]),
-      y[1] + (h / 6) * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]),
-    ];
-  },
-};
-
-/** max |x_k − x(t_k)| over the grid t_k = k·T/n, n = ⌈T/h⌉. */
-function maxError(method, { zeta, wn, x0, T, h }) {
-  const n = Math.ceil((T / h) * (1 - 1e-9));
-  const dt = T / n;
-  const f = rhs(zeta, wn);
-  let y = [x0, 0];
-  let err = 0;
-  for (let k = 1; k <= n; k++) {
-    y = STEPPERS[method](f, y, dt);
-    err = Math.max(err, Math.abs(y[0] - exact(zeta, wn, x0, k * dt)));
+/** Every readout on the page equals the recorded one (see `tolerance`). */
+async function assertReadoutsMatch(page, state) {
+  const shown = new Map(
+    await page.$$eval('[data-readout]', (els) => els.map((e) => [e.dataset.readout, e.dataset.value])),
+  );
+  for (const r of state.readouts) {
+    assert.ok(shown.has(r.key), `${state.name}: readout ${r.key} is on the page`);
+    assert.ok(same(r.key, shown.get(r.key), r.value), `${state.name}: ${r.key} shows ${shown.get(r.key)}, recorded ${r.value}`);
   }
-  return { err, dt };
 }
-
-/** |R(z)| of a polynomial amplification factor with coefficients c (complex z = [re, im]). */
-function ampAbs(coefs, [re, im]) {
-  let pr = 0;
-  let pi = 0;
-  for (let i = coefs.length - 1; i >= 0; i--) {
-    const r = pr * re - pi * im + coefs[i];
-    pi = pr * im + pi * re;
-    pr = r;
-  }
-  return Math.hypot(pr, pi);
-}
-const R = { euler: [1, 1], heun: [1, 1, 1 / 2], rk4: [1, 1, 1 / 2, 1 / 6, 1 / 24] };
-const hLambda = (zeta, wn, h) => [-zeta * wn * h, wn * Math.sqrt(1 - zeta * zeta) * h];
 
 const num = async (page, key) => Number(await readout(page, key));
 
@@ -98,61 +64,30 @@ async function assertInk(page) {
   }
 }
 
-test('preset ζ = 0.05, ωn = 2, h = 0.3 s: stability, errors and orders', async () => {
+test('defaults and every preset show the readouts and text alternatives computed natively', async () => {
+  const { spec, states } = golden('integrators');
+  for (const state of states) {
+    const { page, errors, context } = await open(browser, `${server.url}?demo=integrators&${state.query}`);
+    await assertReadoutsMatch(page, state);
+    for (const [i, plot] of spec.plots.entries()) {
+      assert.equal(await page.textContent(`#desc-${plot.key}`), state.figures[i].description, `${state.name}: ${plot.key}`);
+    }
+    await assertInk(page);
+    assert.deepEqual(errors, []);
+    await context.close();
+  }
+});
+
+test('h = 0.3 s integrates with steps of exactly 0.3 s; the last one ends at T', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?${PRESET}`);
-  const p = { zeta: 0.05, wn: 2, x0: 1, T: 20, h: 0.3 };
-  // The step actually used: 67 steps of 20/67 s.
-  const hUsed = await num(page, 'h_used');
-  assert.ok(Math.abs(hUsed - 20 / 67) < 1e-15, `h_used ${hUsed}`);
-
-  // Stability: Euler needs h ≤ 2ζ/ωn = 0.05 s (|1 + hλ|² ≤ 1 ⇔ h ≤ −2Re λ/|λ|²), so it
-  // is unstable here; RK4's |R(hλ)| < 1.
-  assert.equal(await readout(page, 'stable_euler'), 'no');
-  assert.equal(await readout(page, 'stable_rk4'), 'yes');
-  assert.equal(await readout(page, 'stable_heun'), 'yes');
-  assert.equal(await readout(page, 'stable_symplectic_euler'), 'yes');
-  const z = hLambda(p.zeta, p.wn, hUsed);
-  for (const m of ['euler', 'heun', 'rk4']) {
-    const g = await num(page, `growth_${m}`);
-    const want = ampAbs(R[m], z);
-    assert.ok(Math.abs(g - want) < 1e-12, `growth_${m} ${g} vs ${want}`);
-  }
-  assert.ok((await num(page, 'growth_euler')) > 1.1, 'Euler grows ≈ ×1.14 per step');
-  assert.ok((await num(page, 'growth_rk4')) < 1);
-
-  // Max errors against an independent JS run (relative 1e-9: same arithmetic, different
-  // evaluation order).
-  const errs = {};
-  for (const m of ['euler', 'heun', 'rk4']) {
-    errs[m] = await num(page, `max_err_${m}`);
-    const { err } = maxError(m, p);
-    assert.ok(Math.abs(errs[m] - err) <= 1e-9 * err, `max_err_${m} ${errs[m]} vs JS ${err}`);
-  }
-  assert.ok(errs.rk4 < errs.heun && errs.heun < errs.euler, JSON.stringify(errs));
-  assert.ok(errs.euler > 1000, 'forward Euler has diverged to kilometres');
-  const dp = await num(page, 'max_err_dp45');
-  assert.ok(dp > 0 && dp < 1e-4, `DP45 within its tolerance scale: ${dp}`);
-  const steps = await num(page, 'steps_dp45');
-  assert.ok(Number.isInteger(steps) && steps > 10 && steps < 1000, `steps_dp45 ${steps}`);
-
-  // Fitted orders (ranges): Euler and symplectic Euler 0.8–1.3, Heun 1.7–2.3, RK4 3.6–4.4,
-  // DP45 against its mean step 4–6.5.
-  const ranges = {
-    order_euler: [0.8, 1.3],
-    order_symplectic_euler: [0.8, 1.3],
-    order_heun: [1.7, 2.3],
-    order_rk4: [3.6, 4.4],
-    order_dp45: [4, 6.5],
-  };
-  for (const [k, [lo, hi]] of Object.entries(ranges)) {
-    const o = await num(page, k);
-    assert.ok(o >= lo && o <= hi, `${k} = ${o} not in [${lo}, ${hi}]`);
-  }
-  await assertInk(page);
-  // The text alternatives say what the pixels show.
-  assert.match(await page.textContent('#desc-response'), /forward Euler diverges \(×1\.139 per step/);
-  assert.match(await page.textContent('#desc-stability'), /forward Euler: outside its region/);
-  assert.match(await page.textContent('#desc-convergence'), /RK4 fitted slope 4\.0/);
+  // 66 steps of 0.3 s reach 19.8 s; a last step of 0.2 s ends the run at T = 20 s.
+  assert.equal(await readout(page, 'h_used'), '0.3');
+  assert.ok(Math.abs(Number(await readout(page, 'h_last')) - 0.2) < 1e-12);
+  assert.match(await page.textContent('#desc-response'), /with h = 300 ms \(67 steps, the last 200 ms to end at T\)/);
+  assert.match(await page.textContent('#desc-error'), /\(h = 300 ms\)/);
+  // The same from the golden file, which the native tests computed with this h.
+  const light = goldenState('integrators', LIGHT);
+  assert.equal(light.readouts.find((r) => r.key === 'h_used').value, '3.00000000000e-1');
   await page.screenshot({ path: `${SHOTS}integrators-preset-1280.png`, fullPage: true });
   assert.deepEqual(errors, []);
   await context.close();
@@ -169,11 +104,11 @@ test('shrinking h with the keyboard reduces the RK4 error', async () => {
   await waitForChange(page, 'max_err_rk4', String(before));
   const h = await num(page, 'h_used');
   assert.ok(h < 0.29, `h decreased to ${h}`);
+  // The step used is the slider's value itself (the number box shows 4 digits of it).
+  const box = Number(await page.inputValue('input[type=number][data-key="h"]'));
+  assert.ok(Math.abs(h - box) <= 1e-3 * box, `h_used ${h} vs the box ${box}`);
   const after = await num(page, 'max_err_rk4');
   assert.ok(after < before, `RK4 error ${after} < ${before}`);
-  // Halving-ish h should cut RK4's error by roughly (h ratio)^4.
-  const ratio = (0.3 / h) ** 4;
-  assert.ok(before / after > ratio / 4, `error ratio ${before / after} vs (h ratio)^4 ${ratio}`);
   // The convergence study does not depend on h: the fitted order stays.
   assert.equal(await readout(page, 'order_rk4'), orders);
   assert.notDeepEqual(await canvasFingerprint(page, 'convergence'), conv, 'current-h line moved');
@@ -192,7 +127,8 @@ for (const [key, readoutKey] of [
   ['zeta', 'growth_euler'],
   ['wn', 'growth_rk4'],
   ['h', 'h_used'],
-  ['T', 'max_err_rk4'],
+  // Steps are exactly h, so a longer run changes the last step (20 s = 66 × 0.3 s + 0.2 s).
+  ['T', 'h_last'],
   ['x0', 'max_err_heun'],
   ['tol', 'steps_dp45'],
 ]) {
@@ -226,7 +162,9 @@ test('toggles hide curves but readouts are still computed', async () => {
   );
   for (const key of ['euler', 'symplectic_euler', 'heun', 'rk4', 'dp45']) {
     const before = await canvasFingerprint(page, 'response');
-    const conv = await canvasFingerprint(page, 'convergence');
+    // DP45 has no single h: it is drawn on the work–precision plot, the others on both.
+    const other = key === 'dp45' ? 'work' : 'convergence';
+    const conv = await canvasFingerprint(page, other);
     await page.click(`#p-${key}`);
     await waitForUrlParam(page, key, '0');
     await page.waitForFunction(
@@ -239,7 +177,7 @@ test('toggles hide curves but readouts are still computed', async () => {
       },
       [before[0]],
     );
-    assert.notDeepEqual(await canvasFingerprint(page, 'convergence'), conv, `${key} hidden in the convergence plot`);
+    assert.notDeepEqual(await canvasFingerprint(page, other), conv, `${key} hidden in the ${other} plot`);
   }
   const after = await page.evaluate(() =>
     [...document.querySelectorAll('[data-readout]')].map((r) => [r.dataset.readout, r.dataset.value]),
@@ -258,17 +196,24 @@ test('toggles hide curves but readouts are still computed', async () => {
   await context.close();
 });
 
+// Each preset's recorded stability verdicts and DP45 order (blank where stability sets
+// its steps), as the page must show them whether opened from the URL or the button.
 const PRESETS = [
-  ['Euler just stable', 'zeta=0.05&wn=2&h=0.04', { stable_euler: 'yes', stable_heun: 'yes', stable_rk4: 'yes' }],
-  ['RK4 beyond its limit', 'zeta=0.05&wn=2&h=1.6', { stable_euler: 'no', stable_rk4: 'no' }],
-  ['Undamped', 'zeta=0&wn=2&h=0.1', { stable_euler: 'no', stable_heun: 'no', stable_rk4: 'yes', stable_symplectic_euler: 'yes' }],
-  ['Stiff overdamped', 'zeta=2&wn=20&h=0.03&T=5', { stable_euler: 'no', stable_rk4: 'yes', order_dp45: '' }],
-];
+  ['Euler just stable', 'Euler just stable, h = 0.04 s'],
+  ['RK4 beyond its limit', 'RK4 beyond its limit, h = 1.6 s'],
+  ['Undamped', 'Undamped, h = 0.1 s'],
+  ['Stiff overdamped', 'Stiff overdamped ζ = 2, ωₙ = 20'],
+].map(([name, label]) => {
+  const state = goldenState('integrators', label);
+  const keys = ['stable_euler', 'stable_symplectic_euler', 'stable_heun', 'stable_rk4', 'order_euler', 'order_dp45'];
+  const want = Object.fromEntries(state.readouts.filter((r) => keys.includes(r.key)).map((r) => [r.key, r.value]));
+  return [name, state.query, want];
+});
 
 for (const [name, query, want] of PRESETS) {
   test(`preset "${name}" opens from the URL and from its button`, async () => {
     const { page, errors, context } = await open(browser, `${server.url}?demo=integrators&${query}`);
-    for (const [k, v] of Object.entries(want)) assert.equal(await readout(page, k), v, `${name}: ${k}`);
+    for (const [k, v] of Object.entries(want)) assert.ok(same(k, await readout(page, k), v), `${name}: ${k}`);
     await assertInk(page);
     const slug = name.toLowerCase().replace(/[^a-z0-9]+/g, '-');
     await page.screenshot({ path: `${SHOTS}integrators-${slug}-1280.png`, fullPage: true });
@@ -277,8 +222,11 @@ for (const [name, query, want] of PRESETS) {
     await other.page.getByRole('button', { name: new RegExp(name) }).click();
     for (const [k, v] of Object.entries(want)) {
       await other.page.waitForFunction(
-        ([key, val]) => document.querySelector(`[data-readout="${key}"]`).dataset.value === val,
-        [k, v],
+        ([key, val, tol]) => {
+          const shown = document.querySelector(`[data-readout="${key}"]`).dataset.value;
+          return /^-?\d\.\d+e[-+]?\d+$/.test(val) ? Math.abs(Number(shown) - Number(val)) <= tol * Math.abs(Number(val)) : shown === val;
+        },
+        [k, v, tolerance(k)],
       );
     }
     assert.deepEqual(other.errors, []);
@@ -290,13 +238,14 @@ for (const [name, query, want] of PRESETS) {
 
 test('RK4 beyond its limit: the growth factor is reported honestly', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=integrators&zeta=0.05&wn=2&h=1.6`);
-  const h = await num(page, 'h_used');
+  const state = goldenState('integrators', 'RK4 beyond its limit, h = 1.6 s');
   const g = await num(page, 'growth_rk4');
-  assert.ok(Math.abs(g - ampAbs(R.rk4, hLambda(0.05, 2, h))) < 1e-12);
-  assert.ok(g > 1);
-  // Still a finite number for the error; its JS twin agrees.
-  const { err } = maxError('rk4', { zeta: 0.05, wn: 2, x0: 1, T: 20, h: 1.6 });
-  assert.ok(Math.abs((await num(page, 'max_err_rk4')) - err) <= 1e-9 * err);
+  assert.ok(g > 1, `RK4 grows by ${g} per step`);
+  assert.equal(await readout(page, 'stable_rk4'), 'no');
+  // Still a finite number for the error, as recorded natively.
+  const err = Number(state.readouts.find((r) => r.key === 'max_err_rk4').value);
+  assert.ok(Number.isFinite(err) && Math.abs((await num(page, 'max_err_rk4')) - err) <= 1e-11 * err);
+  assert.match(await page.textContent('#desc-response'), /RK4 diverges/);
   assert.deepEqual(errors, []);
   await context.close();
 });

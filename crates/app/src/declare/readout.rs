@@ -82,6 +82,11 @@ enum Show<R> {
     Text(fn(&R) -> String),
     /// A number with its own text: `(data-value, text)`.
     Formatted(fn(&R) -> Option<(f64, String)>),
+    /// A number with an SI prefix, or a note instead of a number (empty `data-value`).
+    NumberOrNote {
+        sig: usize,
+        get: fn(&R) -> Result<Option<f64>, String>,
+    },
 }
 
 /// One row of a demo's readout table.
@@ -153,6 +158,24 @@ impl<R> ReadoutDef<R> {
         }
     }
 
+    /// A number shown with `sig` significant digits and an SI prefix on `unit`, or — where
+    /// no number can be given — a note saying why (e.g. "overflow at t = 3.1 s") with an
+    /// empty `data-value`.
+    pub const fn number_or_note(
+        key: &'static str,
+        label: &'static str,
+        unit: &'static str,
+        sig: usize,
+        get: fn(&R) -> Result<Option<f64>, String>,
+    ) -> Self {
+        Self {
+            key,
+            label,
+            unit,
+            show: Show::NumberOrNote { sig, get },
+        }
+    }
+
     /// The spec entry.
     pub fn spec(&self) -> ReadoutSpec {
         ReadoutSpec {
@@ -175,6 +198,14 @@ impl<R> ReadoutDef<R> {
                     data_value: format!("{v}"),
                 },
                 None => Readout::undefined(self.key),
+            },
+            Show::NumberOrNote { sig, get } => match get(r) {
+                Ok(v) => Readout::number(self.key, v, self.unit, *sig),
+                Err(note) => Readout {
+                    key: self.key,
+                    text: note,
+                    data_value: String::new(),
+                },
             },
         }
     }

@@ -199,7 +199,9 @@ const REGISTRY: &[(&str, Factory)] = &[
     ("resonance", || {
         Box::new(Typed::new(resonance::Resonance::default()))
     }),
-    ("integrators", || Box::new(integrators::Integrators::new())),
+    ("integrators", || {
+        Box::new(Typed::new(integrators::Integrators::new()))
+    }),
     ("flutter", || {
         Box::new(Typed::new(flutter::Flutter::default()))
     }),

@@ -33,7 +33,7 @@ const SCAN_RATIO: f64 = 1.002;
 const BISECTION_ITERATIONS: usize = 100;
 /// `|R| ≤ 1 + STABILITY_SLACK` counts as stable, so that rounding of an exact `|R| = 1`
 /// (the trapezoid or RK4 on the imaginary axis) does not count as growth.
-const STABILITY_SLACK: f64 = 1e-14;
+pub(crate) const STABILITY_SLACK: f64 = 1e-14;
 
 /// The step sizes for which a method keeps a linear problem's solution bounded.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -67,19 +67,39 @@ impl StepLimit {
     }
 }
 
-/// Finds the first instability along `y ∈ [SCAN_START, SCAN_END]` of `is_stable(y)` and
+/// A geometric scan `y = start, start·ratio, start·ratio², … < end` along which
+/// [`first_instability`] looks for the first unstable point before bisecting.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Scan {
+    /// First point scanned (must be stable for a boundary to be found).
+    pub start: f64,
+    /// The scan stops at the first point at or past `end`.
+    pub end: f64,
+    /// Ratio of consecutive points, > 1.
+    pub ratio: f64,
+}
+
+/// The scan of `|hλ|` used for step limits: 1e−3 to 10 by 0.2 % (about 4 600 points).
+pub(crate) const STEP_SCAN: Scan = Scan {
+    start: SCAN_START,
+    end: SCAN_END,
+    ratio: SCAN_RATIO,
+};
+
+/// Finds the first instability along `y ∈ [scan.start, scan.end]` of `is_stable(y)` and
 /// refines it by bisection; returns the last stable `y`, `None` if unstable at the start,
-/// `Some(∞)` if stable throughout.
-fn first_instability(is_stable: impl Fn(f64) -> bool) -> Option<f64> {
-    if !is_stable(SCAN_START) {
+/// `Some(∞)` if stable throughout. The one boundary search of the crate: step limits,
+/// symplectic Euler's limit and the stability-region boundaries all use it.
+pub(crate) fn first_instability(scan: Scan, is_stable: impl Fn(f64) -> bool) -> Option<f64> {
+    if !(scan.ratio > 1.0 && scan.start > 0.0 && is_stable(scan.start)) {
         return None;
     }
-    let mut lo = SCAN_START;
+    let mut lo = scan.start;
     let mut hi = f64::INFINITY;
-    // The scan has a fixed number of points: (ln 10 − ln 1e−3)/ln 1.002 ≈ 4 600.
-    let mut y = SCAN_START;
-    while y < SCAN_END {
-        let next = y * SCAN_RATIO;
+    // The scan has a fixed number of points, ln(end/start)/ln(ratio).
+    let mut y = scan.start;
+    while y < scan.end {
+        let next = y * scan.ratio;
         if !is_stable(next) {
             hi = next;
             break;
@@ -122,7 +142,7 @@ pub trait Amplification {
         }
         let dir = lambda * (1.0 / size);
         let stable = |y: f64| self.amplification(dir * y).abs() <= 1.0 + STABILITY_SLACK;
-        match first_instability(stable) {
+        match first_instability(STEP_SCAN, stable) {
             None => StepLimit::NoStableStep,
             Some(y) if y.is_infinite() => StepLimit::Unconditional,
             Some(y) => StepLimit::UpTo(y / size),
@@ -202,7 +222,7 @@ pub fn symplectic_euler_step_limit(sys: &SecondOrder) -> StepLimit {
         return StepLimit::NoStableStep;
     }
     let stable = |y: f64| symplectic_euler_spectral_radius(sys, y / scale) <= 1.0 + STABILITY_SLACK;
-    match first_instability(stable) {
+    match first_instability(STEP_SCAN, stable) {
         None => StepLimit::NoStableStep,
         Some(y) if y.is_infinite() => StepLimit::Unconditional,
         Some(y) => StepLimit::UpTo(y / scale),
@@ -298,22 +318,9 @@ pub struct ConvergenceStudy {
 }
 
 /// Least-squares slope `p` of `ln e = p·ln h + c` over the points; `None` with fewer than
-/// two points or all `h` equal.
+/// two points or all `h` equal. The order of [`super::convergence::fit_power_law`].
 pub fn fit_order(points: &[(f64, f64)]) -> Option<f64> {
-    let n = points.len() as f64;
-    if points.len() < 2 {
-        return None;
-    }
-    let mx = points.iter().map(|p| p.0.ln()).sum::<f64>() / n;
-    let my = points.iter().map(|p| p.1.ln()).sum::<f64>() / n;
-    let (mut sxy, mut sxx) = (0.0, 0.0);
-    for &(h, e) in points {
-        let dx = h.ln() - mx;
-        sxy += dx * (e.ln() - my);
-        sxx += dx * dx;
-    }
-    let slope = sxy / sxx;
-    (sxx > 0.0 && slope.is_finite()).then_some(slope)
+    super::convergence::fit_power_law(points).map(|f| f.order)
 }
 
 /// Runs `error_for(h)` — which returns `(h actually used, error)` — for each step size in

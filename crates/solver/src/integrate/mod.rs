@@ -33,15 +33,18 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod analysis;
+pub mod convergence;
 mod dopri5;
 mod error;
 mod euler;
 mod heun;
 mod linalg;
 mod rk4;
+pub mod stability;
 mod symplectic_euler;
 pub mod tableau;
 mod trapezoid;
+pub mod work_precision;
 
 pub use dopri5::{DenseOutput, Dopri5, Dopri5Config, Dopri5Solution, StepControl};
 pub use error::IntegrationError;
@@ -221,6 +224,75 @@ impl Grid {
     }
 }
 
+/// Steps of exactly `h` from `t0`, the last one shorter when `h` does not divide the span,
+/// so that the run still ends at `t_end`: `n = ⌈(t_end − t0)/h⌉` steps (a relative slack of
+/// 1e-9 keeps `T/h = 10.000000001` at 10 steps), `t_i = t0 + i·h` for `i < n` and
+/// `t_n = t_end`; the last step is `t_end − t0 − (n − 1)·h ∈ (0, h]` (up to the slack).
+///
+/// ```
+/// use zeta_solver::integrate::ExactStepGrid;
+/// let g = ExactStepGrid::new(0.0, 20.0, 0.3).unwrap();
+/// assert_eq!(g.steps(), 67);
+/// assert_eq!(g.step(0), 0.3);
+/// assert!((g.last_step() - 0.2).abs() < 1e-12);
+/// assert_eq!(g.time(67), 20.0);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ExactStepGrid {
+    t0: f64,
+    t_end: f64,
+    h: f64,
+    n: usize,
+}
+
+impl ExactStepGrid {
+    /// Validates `t0`, `t_end` (finite, `t_end ≥ t0`) and `h` (finite, > 0); errors with
+    /// [`IntegrationError::TooManySteps`] beyond [`MAX_STEPS`].
+    pub fn new(t0: f64, t_end: f64, h: f64) -> Result<Self, IntegrationError> {
+        // The same validation and step count as the evenly divided grid.
+        let n = Grid::new(t0, t_end, h)?.n;
+        Ok(Self { t0, t_end, h, n })
+    }
+
+    /// Number of steps `n`.
+    pub fn steps(&self) -> usize {
+        self.n
+    }
+
+    /// The chosen step `h` (s): every step but the last has exactly this length.
+    pub fn h(&self) -> f64 {
+        self.h
+    }
+
+    /// Time of grid point `i` (s): `t0 + i·h` for `i < n`, `t_end` for `i ≥ n`.
+    pub fn time(&self, i: usize) -> f64 {
+        if i >= self.n {
+            self.t_end
+        } else {
+            self.t0 + i as f64 * self.h
+        }
+    }
+
+    /// Length of step `i` (from point `i` to `i + 1`) (s).
+    pub fn step(&self, i: usize) -> f64 {
+        self.time(i + 1) - self.time(i)
+    }
+
+    /// Length of the last step (s): `h` when `h` divides the span (to the relative slack
+    /// 1e-9, so that rounding of `(n − 1)·h` does not show), 0 for an empty span.
+    pub fn last_step(&self) -> f64 {
+        if self.n == 0 {
+            return 0.0;
+        }
+        let last = self.step(self.n - 1);
+        if (last - self.h).abs() <= 1e-9 * self.h {
+            self.h
+        } else {
+            last
+        }
+    }
+}
+
 /// Checks that every component of `y` is finite.
 fn all_finite<const N: usize>(y: &[f64; N]) -> bool {
     y.iter().all(|v| v.is_finite())
@@ -277,6 +349,37 @@ pub trait FixedStep {
             ys.push(y);
         }
         Ok(Solution { t, y: ys, stats })
+    }
+
+    /// Integrates on an [`ExactStepGrid`]: steps of exactly `h`, the last one shorter to end
+    /// at the grid's end. Writes the state at `grid.time(i)` into `out[i]` for
+    /// `i ≤ min(n, out.len() − 1)` and returns the work counters. On failure the points
+    /// after the failing step are left as they were (e.g. NaN from the caller), so a run
+    /// that overflows can still be drawn up to where it went.
+    fn solve_exact_step_into<const N: usize, S: System<N>>(
+        &self,
+        sys: &S,
+        y0: [f64; N],
+        grid: &ExactStepGrid,
+        out: &mut [[f64; N]],
+    ) -> Result<Stats, IntegrationError> {
+        if !all_finite(&y0) {
+            return Err(IntegrationError::NonFinite { t: grid.time(0) });
+        }
+        let mut stats = Stats::default();
+        let mut y = y0;
+        for (i, slot) in out.iter_mut().enumerate().take(grid.steps() + 1) {
+            if i > 0 {
+                let t = grid.time(i - 1);
+                stats.n_rhs += self.step(sys, t, grid.step(i - 1), &mut y)?;
+                stats.n_accepted += 1;
+                if !all_finite(&y) {
+                    return Err(IntegrationError::NonFinite { t: grid.time(i) });
+                }
+            }
+            *slot = y;
+        }
+        Ok(stats)
     }
 
     /// Allocation-free run into a reused buffer: `out[0] = y0` and `out[i]` is the state at

@@ -1,0 +1,287 @@
+//! The integrators demo's model step: solver calls only. Runs each fixed-step method at
+//! `h`, DP45 at `tol`, the (cached) convergence study and the stability analysis.
+
+use super::P;
+use zeta_solver::integrate::analysis::{error_norms, FitWindow, StepLimit};
+use zeta_solver::integrate::convergence::{nested_study, NestedGrids, NestedStudy};
+use zeta_solver::integrate::stability::{region_boundary, Stability, REGION_RAYS};
+use zeta_solver::integrate::work_precision::{dopri5_sweep, WorkPrecision};
+use zeta_solver::integrate::{
+    Dopri5, Dopri5Config, Dopri5Solution, Euler, ExactStepGrid, FixedStep, Heun, IntegrationError,
+    Linear2, Method, Rk4, Solution, Stats,
+};
+use zeta_solver::{Complex, FreeResponse, SecondOrder};
+
+/// The fixed-step methods, in readout order.
+pub(super) const FIXED: [Method; 4] = [
+    Method::Euler,
+    Method::SymplecticEuler,
+    Method::Heun,
+    Method::Rk4,
+];
+/// Step sizes of the convergence study (halving each time).
+pub(super) const LEVELS: usize = 12;
+/// Steps one method may spend on the whole study (summed over its step sizes); finer step
+/// sizes beyond this budget are skipped, which keeps a ζ/ωₙ/T/x₀ drag fast.
+pub(super) const STUDY_BUDGET: usize = 24_000;
+/// Forward Euler's budget: one evaluation per step, and the slowest to reach its
+/// asymptotic range (on an undamped oscillator its error only becomes small below
+/// h ≈ 0.01/ωₙ²T).
+pub(super) const EULER_BUDGET: usize = 48_000;
+/// Coarsest study step, as `h₀·max|λ|`.
+const COARSEST_H_LAMBDA: f64 = 1.0;
+/// Fewest common check points of the study.
+const MIN_CHECKPOINTS: usize = 16;
+/// Tolerances of the DP45 sweep.
+pub(super) const DP45_TOLS: [f64; 9] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
+/// The asymptotic range: neighbouring local orders within this of the finest one.
+pub(super) const SPREAD: f64 = 0.03;
+/// Step budget of one DP45 run.
+const DP45_MAX_STEPS: usize = 8_000;
+/// Errors below this fraction of x₀ are rounding: left out of the fit.
+pub(super) const FIT_FLOOR: f64 = 1e-10;
+/// Errors above this fraction of x₀ are no longer small (or unstable): left out. Whether
+/// the smaller ones are asymptotic is decided by their local orders ([`SPREAD`]).
+pub(super) const FIT_CEILING: f64 = 0.5;
+
+/// The cached convergence studies.
+#[derive(Debug, Clone)]
+pub(super) struct Study {
+    /// `(ζ, ωₙ, T, x₀)` it was computed for.
+    key: [f64; 4],
+    /// The nested grids of the fixed-step studies.
+    pub(super) grids: NestedGrids,
+    /// One study per fixed-step method, in [`FIXED`] order.
+    pub(super) fixed: Vec<NestedStudy>,
+    /// DP45 over the tolerance sweep: error against f-evaluations.
+    pub(super) dp45: WorkPrecision,
+}
+
+impl Study {
+    /// Fitted order of fixed-step method `k`.
+    pub fn order(&self, k: usize) -> Option<f64> {
+        self.fixed.get(k).and_then(|s| s.study.order)
+    }
+}
+
+/// One fixed-step run at the current `h`.
+#[derive(Debug, Clone)]
+pub(super) struct Run {
+    pub(super) sol: Solution<2>,
+    /// Time at which the numbers overflowed, if they did.
+    pub(super) overflow: Option<f64>,
+}
+
+/// What one step computes.
+pub struct Results {
+    pub(super) resp: FreeResponse,
+    pub(super) poles: [Complex; 2],
+    /// The step used (s): exactly the chosen `h`.
+    pub(super) h: f64,
+    /// The last step (s), shorter than `h` when `h` does not divide `T`.
+    pub(super) h_last: f64,
+    /// Number of steps.
+    pub(super) n: usize,
+    /// The exact state at each grid point.
+    pub(super) exact: Vec<[f64; 2]>,
+    /// The fixed-step runs, in [`FIXED`] order.
+    pub(super) runs: Vec<Run>,
+    pub(super) max_err: [Option<f64>; 4],
+    pub(super) growth: [f64; 4],
+    pub(super) limit: [StepLimit; 4],
+    pub(super) stable: [bool; 4],
+    pub(super) dp45: Result<Dopri5Solution<2>, IntegrationError>,
+    pub(super) dp45_err: Option<f64>,
+    pub(super) study: Study,
+}
+
+/// What the demo keeps between steps.
+#[derive(Debug, Clone, Default)]
+pub(super) struct Cache {
+    study: Option<Study>,
+    regions: Option<[Vec<(f64, f64)>; 3]>,
+}
+
+impl Cache {
+    /// The stability-region boundaries of Euler, Heun and RK4 (empty before the first step).
+    pub fn regions(&self) -> &[Vec<(f64, f64)>] {
+        self.regions.as_ref().map_or(&[], |r| r.as_slice())
+    }
+
+    pub fn step(&mut self, p: &P) -> Option<Results> {
+        let sys = SecondOrder::from_natural(p.wn, p.zeta).ok()?;
+        if !(p.x0.is_finite() && p.x0 > 0.0 && p.t_end.is_finite() && p.t_end > 0.0 && p.tol > 0.0)
+        {
+            return None;
+        }
+        let key = [
+            sys.damping_ratio().unwrap_or(f64::NAN),
+            sys.natural_frequency().unwrap_or(f64::NAN),
+            p.t_end,
+            p.x0,
+        ];
+        let resp = FreeResponse::new(sys, p.x0, 0.0);
+        let lin = Linear2::free(sys);
+        if self.study.as_ref().map(|st| st.key) != Some(key) {
+            self.study = Some(compute_study(&sys, &lin, &resp, p, key)?);
+        }
+        if self.regions.is_none() {
+            let outline =
+                |pts: Vec<Complex>| pts.into_iter().map(|z| (z.re, z.im)).collect::<Vec<_>>();
+            self.regions = Some([
+                outline(region_boundary(&Euler, REGION_RAYS)),
+                outline(region_boundary(&Heun, REGION_RAYS)),
+                outline(region_boundary(&Rk4, REGION_RAYS)),
+            ]);
+        }
+        let study = self.study.clone()?;
+        run_current(sys, resp, &lin, p, study)
+    }
+}
+
+fn dp45_config(tol: f64, x0: f64) -> Dopri5Config {
+    Dopri5Config {
+        rtol: tol,
+        atol: tol * x0,
+        max_steps: DP45_MAX_STEPS,
+        ..Dopri5Config::default()
+    }
+}
+
+fn run_dp45(
+    lin: &Linear2<fn(f64) -> f64>,
+    p: &P,
+    tol: f64,
+) -> Result<Dopri5Solution<2>, IntegrationError> {
+    Dopri5::new(dp45_config(tol, p.x0))?.solve(lin, [p.x0, 0.0], 0.0, p.t_end)
+}
+
+/// Largest displacement error of a DP45 run over its accepted steps (NaN if any is NaN).
+fn dp45_error(resp: &FreeResponse, sol: &Solution<2>) -> f64 {
+    error_norms(sol, |t| resp.state(t))[0].max
+}
+
+pub(super) fn fit_window(x0: f64) -> FitWindow {
+    FitWindow {
+        floor: FIT_FLOOR * x0,
+        ceiling: FIT_CEILING * x0,
+    }
+}
+
+fn compute_study(
+    sys: &SecondOrder,
+    lin: &Linear2<fn(f64) -> f64>,
+    resp: &FreeResponse,
+    p: &P,
+    key: [f64; 4],
+) -> Option<Study> {
+    let rho = sys.poles().iter().map(|q| q.abs()).fold(0.0f64, f64::max);
+    let grids = NestedGrids::for_rate(
+        p.t_end,
+        rho,
+        COARSEST_H_LAMBDA,
+        MIN_CHECKPOINTS,
+        LEVELS,
+        STUDY_BUDGET,
+    )
+    .ok()?;
+    let window = fit_window(p.x0);
+    let y0 = [p.x0, 0.0];
+    let exact = |t: f64| resp.displacement(t);
+    let fixed = FIXED
+        .iter()
+        .map(|m| {
+            let grids = match m {
+                Method::Euler => grids.with_budget(EULER_BUDGET),
+                _ => grids,
+            };
+            let mut out = nested_study(m, lin, y0, 0, exact, &grids, window);
+            out.study.restrict_to_asymptotic(SPREAD);
+            out
+        })
+        .collect();
+    let dp45 = dopri5_sweep(
+        lin,
+        y0,
+        p.t_end,
+        &DP45_TOLS,
+        |tol| dp45_config(tol, p.x0),
+        |sol| dp45_error(resp, sol),
+        Dopri5::new(Dopri5Config::default()).ok()?.stable_steps(sys),
+        window,
+        SPREAD,
+    );
+    Some(Study {
+        key,
+        grids,
+        fixed,
+        dp45,
+    })
+}
+
+fn run_current(
+    sys: SecondOrder,
+    resp: FreeResponse,
+    lin: &Linear2<fn(f64) -> f64>,
+    p: &P,
+    study: Study,
+) -> Option<Results> {
+    // h ≥ 1e−3 s and T ≤ 60 s keep this within 60 000 steps.
+    let grid = ExactStepGrid::new(0.0, p.t_end, p.h).ok()?;
+    let n = grid.steps();
+    let h = grid.h();
+    let exact: Vec<[f64; 2]> = (0..=n).map(|i| resp.state(grid.time(i))).collect();
+    let lookup = |t: f64| {
+        let i = if t >= p.t_end {
+            n
+        } else {
+            ((t / h).round().max(0.0) as usize).min(n)
+        };
+        exact.get(i).copied().unwrap_or([f64::NAN; 2])
+    };
+    let mut max_err = [None; 4];
+    let mut runs = Vec::with_capacity(FIXED.len());
+    for (k, m) in FIXED.iter().enumerate() {
+        let mut sol = Solution {
+            t: (0..=n).map(|i| grid.time(i)).collect(),
+            y: vec![[f64::NAN; 2]; n + 1],
+            stats: Stats::default(),
+        };
+        let mut overflow = None;
+        match m.solve_exact_step_into(lin, [p.x0, 0.0], &grid, &mut sol.y) {
+            Ok(stats) => sol.stats = stats,
+            Err(IntegrationError::NonFinite { t }) => overflow = Some(t),
+            Err(_) => overflow = Some(0.0),
+        }
+        if overflow.is_none() {
+            let e = error_norms(&sol, lookup)[0].max;
+            max_err[k] = e.is_finite().then_some(e);
+        }
+        runs.push(Run { sol, overflow });
+    }
+    let growth = FIXED.map(|m| m.growth_per_step(&sys, h));
+    let limit = FIXED.map(|m| m.stable_steps(&sys));
+    let stable = limit.map(|l| l.allows(h));
+    let dp45 = run_dp45(lin, p, p.tol);
+    let dp45_err = dp45
+        .as_ref()
+        .ok()
+        .map(|o| dp45_error(&resp, &o.solution))
+        .filter(|e| e.is_finite());
+    Some(Results {
+        resp,
+        poles: sys.poles(),
+        h,
+        h_last: grid.last_step(),
+        n,
+        exact,
+        runs,
+        max_err,
+        growth,
+        limit,
+        stable,
+        dp45,
+        dp45_err,
+        study,
+    })
+}

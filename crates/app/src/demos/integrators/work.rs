@@ -1,0 +1,127 @@
+//! The work–precision plot: largest error against right-hand-side evaluations for every
+//! method on one plot, with DP45's order fitted where its tolerance sets its steps.
+
+use super::axes::log_axis;
+use super::figures::{mark, DP45_MARK, DP45_STYLE, ERROR_CLIP, LOOKS};
+use super::model::{DP45_TOLS, FIT_FLOOR};
+use super::text::sci;
+use super::{Results, P};
+use crate::figure::{finite_extent, Figure, LineStyle, Marker, Series};
+use crate::format::si;
+use zeta_solver::integrate::work_precision::{WorkPrecision, MAX_STABILITY_STEPS, STABILITY_SHARE};
+
+pub(super) const TITLE: &str = "Work–precision: max error against f-evaluations";
+
+/// Error against work, log–log, for every method.
+pub(super) fn figure(p: &P, r: &Results) -> Figure {
+    let clip = ERROR_CLIP * p.x0;
+    let mut series = Vec::new();
+    let mut markers = Vec::new();
+    let mut words = Vec::new();
+    let mut drawn: Vec<(f64, f64)> = Vec::new();
+    for (k, look) in LOOKS.iter().enumerate() {
+        let Some(sweep) = r.study.fixed.get(k) else {
+            continue;
+        };
+        let pts: Vec<(f64, f64)> = sweep
+            .work_precision()
+            .into_iter()
+            .filter(|q| q.1 > 0.0 && q.1 <= clip)
+            .collect();
+        if let (Some(first), Some(last)) = (pts.first(), pts.last()) {
+            words.push(format!(
+                "{} from {} with {} evaluations to {} with {}",
+                look.name,
+                si(first.1, "m", 3),
+                first.0,
+                si(last.1, "m", 3),
+                last.0
+            ));
+        }
+        if !p.show[k] {
+            continue;
+        }
+        if let Some(shape) = look.mark {
+            markers.extend(pts.iter().map(|&q| mark(shape, look.style.ink, q)));
+        }
+        drawn.extend(&pts);
+        series.push(Series::new(look.legend, pts, look.style));
+    }
+    let dp = &r.study.dp45;
+    words.push(dp45_words(dp));
+    if p.show[4] {
+        let pts: Vec<(f64, f64)> = dp
+            .points
+            .iter()
+            .filter(|q| q.work > 0 && q.error.is_finite() && q.error > 0.0 && q.error <= clip)
+            .map(|q| (q.work as f64, q.error))
+            .collect();
+        for q in dp.points.iter().filter(|q| q.work > 0 && q.error <= clip) {
+            let at = (q.work as f64, q.error);
+            markers.push(if q.tolerance_set() {
+                mark(DP45_MARK, DP45_STYLE.ink, at)
+            } else {
+                Marker::cross("", at, DP45_STYLE.ink)
+            });
+        }
+        if let (Some(law), Some((lo, hi))) = (dp.law, dp.fitted_span()) {
+            series.push(Series::new(
+                "",
+                vec![(lo, law.at(lo)), (hi, law.at(hi))],
+                LineStyle::solid(DP45_STYLE.ink, 4.0),
+            ));
+        }
+        let label = match dp.order() {
+            Some(o) => format!("DP45: {}", si(o, "", 3)),
+            None => "DP45: no order".to_string(),
+        };
+        drawn.extend(&pts);
+        series.push(Series::new(label, pts, DP45_STYLE));
+    }
+    let floor = FIT_FLOOR * p.x0 * 1e-3;
+    let (xlo, xhi) = finite_extent(drawn.iter().map(|q| q.0)).unwrap_or((10.0, 1e5));
+    let (ylo, yhi) = finite_extent(drawn.iter().map(|q| q.1)).unwrap_or((floor, p.x0));
+    Figure {
+        series,
+        markers,
+        ..Figure::plot(
+            TITLE,
+            log_axis("right-hand-side evaluations N", "", (xlo / 1.5, xhi * 1.5)),
+            log_axis("max error", "m", (ylo.max(floor) / 4.0, yhi * 10.0)),
+        )
+    }
+    .described(format!(
+        "Largest error against the work it cost, counted in evaluations of the right-hand side \
+         f, on log–log axes, for every method: fixed-step ones at the convergence study's step \
+         sizes (error at its common check points), DP45 at tolerances {} … {} (error over its \
+         accepted steps). Lower is more accurate, further left is cheaper; a method of order p \
+         falls with slope −p; DP45's runs are dots where the tolerance sets their steps and \
+         crosses where stability does. {}.",
+        sci(DP45_TOLS[0]),
+        sci(DP45_TOLS[DP45_TOLS.len() - 1]),
+        words.join("; ")
+    ))
+}
+
+/// What DP45's sweep shows, and why it has an order or not.
+fn dp45_words(dp: &WorkPrecision) -> String {
+    let runs = dp.points.iter().filter(|q| q.work > 0).count();
+    let tail = format!(
+        "runs whose steps stability sets (more than {} % of the steps at {} % or more of its \
+         largest stable step): {}/{runs}",
+        MAX_STABILITY_STEPS * 100.0,
+        STABILITY_SHARE * 100.0,
+        dp.stability_set()
+    );
+    match (dp.order(), dp.fitted_span()) {
+        (Some(o), Some((lo, hi))) => format!(
+            "DP45 observed order {} (fitted over {lo} … {hi} evaluations, where the tolerance \
+             sets its steps); {tail}",
+            si(o, "", 3),
+        ),
+        _ => format!(
+            "DP45 has no observed order: stability sets its steps, or too few runs remain in \
+             the asymptotic range; {tail}"
+        ),
+    }
+}
