@@ -33,6 +33,7 @@ pub mod metrics;
 pub mod model;
 pub mod nonlinear;
 pub mod regime;
+pub mod road;
 pub mod two_dof;
 
 pub use complex::Complex;

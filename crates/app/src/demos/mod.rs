@@ -172,7 +172,7 @@ const REGISTRY: &[(&str, Factory)] = &[
     ("flutter", || Box::new(flutter::Flutter::default())),
     ("nonlinear", || Box::new(nonlinear::Nonlinear::default())),
     ("quarter-car-2dof", || {
-        Box::new(quarter_car_2dof::QuarterCar2Dof::default())
+        Box::new(Typed::new(quarter_car_2dof::QuarterCar2Dof::default()))
     }),
     ("design", || Box::new(design::DesignSpace::default())),
     ("uncertainty", || {
