@@ -23,6 +23,7 @@ pub mod base;
 mod complex;
 pub mod design;
 mod error;
+pub mod expm;
 pub mod flutter;
 pub mod forced;
 pub mod free;
@@ -35,6 +36,7 @@ pub mod nonlinear;
 pub mod regime;
 pub mod road;
 pub mod two_dof;
+pub mod two_dof_exact;
 
 pub use complex::Complex;
 pub use error::ModelError;

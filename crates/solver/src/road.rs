@@ -54,6 +54,40 @@ impl SampledRoad {
         }
     }
 
+    /// Replaces the samples by `road` on consecutive segments of equal steps:
+    /// `segments = [(t₁, n₁), (t₂, n₂), …]` samples `[0, t₁]` in `n₁` equal intervals, then
+    /// `[t₁, t₂]` in `n₂`, and so on (`n ≥ 1`; a segment that does not advance is skipped),
+    /// e.g. fine over a short bump and coarse after it. A random road is sampled by its
+    /// fast recurrence.
+    pub fn fill_segments(&mut self, road: &Road, segments: &[(f64, usize)]) {
+        self.t.clear();
+        self.u.clear();
+        self.t.push(0.0);
+        self.u.push(road.at(0.0).0);
+        let mut start = 0.0;
+        for &(end, n) in segments {
+            if !(end.is_finite() && end > start) {
+                continue;
+            }
+            let n = n.max(1);
+            let h = (end - start) / n as f64;
+            let first = self.t.len();
+            self.t.extend((1..n).map(|i| start + i as f64 * h));
+            self.t.push(end);
+            match road {
+                Road::Random(r) => {
+                    self.u.resize(self.t.len(), 0.0);
+                    r.sample_uniform(start + h, h, &mut self.u[first..]);
+                }
+                _ => {
+                    let (t, u) = (&self.t, &mut self.u);
+                    u.extend(t[first..].iter().map(|&t| road.at(t).0));
+                }
+            }
+            start = end;
+        }
+    }
+
     /// Number of samples.
     pub fn len(&self) -> usize {
         self.t.len()

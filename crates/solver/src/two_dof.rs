@@ -254,9 +254,10 @@ impl RandomRoad {
 pub const RESYNC: usize = 256;
 
 /// Road height under the tyre as a function of time.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub enum Road {
     /// `u = 0`.
+    #[default]
     Flat,
     /// One `1 − cos` bump: `u = (h/2)·(1 − cos(2π·V·t/L))` for `0 ≤ V·t ≤ L`, else 0;
     /// `height` h (m), `length` L (m), `speed` V (m/s).

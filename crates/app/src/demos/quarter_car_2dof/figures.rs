@@ -6,7 +6,8 @@ use super::{text, RoadKind};
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
 use crate::plot::Ink;
 use std::f64::consts::TAU;
-use zeta_solver::two_dof::{RunMetrics, TwoDof, G};
+use zeta_solver::two_dof::{TwoDof, G};
+use zeta_solver::two_dof_exact::ExactMetrics;
 
 pub(super) const MOTION_TITLE: &str = "Body, wheel and road";
 pub(super) const ACCEL_TITLE: &str = "Body acceleration";
@@ -79,7 +80,7 @@ pub(super) fn acceleration(
     run: &Run,
     car: Option<&TwoDof>,
     t_end: f64,
-    m: Option<RunMetrics>,
+    m: Option<ExactMetrics>,
 ) -> Figure {
     let acc = match car {
         Some(car) => sampled(run, |y, _| car.body_acceleration(y)),
@@ -89,6 +90,7 @@ pub(super) fn acceleration(
     let y = range_with_legend(acc.iter().map(|p| p.1), 1.0, 0.2);
     let peak = lo.abs().max(hi.abs());
     let rms = m.map(|m| m.rms_body_acceleration);
+    let description = text::describe_acceleration(peak, peak / G, m);
     let mut fig = Figure::plot(
         ACCEL_TITLE,
         Axis::linear("time t", "s", (0.0, t_end)),
@@ -101,20 +103,38 @@ pub(super) fn acceleration(
             .with_line("± RMS", vec![(0.0, r), (t_end, r)], style)
             .with_line("", vec![(0.0, -r), (t_end, -r)], style);
     }
-    fig.with_origin_lines()
-        .described(text::describe_acceleration(peak, peak / G, rms))
+    fig.with_origin_lines().described(description)
 }
 
-/// Tyre deflection `z_u − u` over the run, with the static deflection (lift-off) when the
-/// deflection comes near it.
-pub(super) fn tyre(run: &Run, t_end: f64, static_tyre: f64, m: Option<RunMetrics>) -> Figure {
+/// The intervals `(from, to)` \[s\] during which the wheel is off the road.
+fn airborne(run: &Run) -> Vec<(f64, f64)> {
+    let mut out = Vec::new();
+    let mut from = None;
+    for (&t, &contact) in run.times.iter().zip(&run.contact) {
+        match (from, contact) {
+            (None, false) => from = Some(t),
+            (Some(f), true) => {
+                out.push((f, t));
+                from = None;
+            }
+            _ => {}
+        }
+    }
+    if let (Some(f), Some(&last)) = (from, run.times.last()) {
+        out.push((f, last));
+    }
+    out
+}
+
+/// Tyre deflection `z_u − u` over the run, with the static deflection (beyond which the
+/// wheel leaves the road) when the deflection comes near it, and the times off the road.
+pub(super) fn tyre(run: &Run, t_end: f64, static_tyre: f64, m: Option<ExactMetrics>) -> Figure {
     let defl = sampled(run, |y, u| y[1] - u);
     let (lo, hi) = finite_extent(defl.iter().map(|p| p.1).chain([0.0])).unwrap_or((-0.01, 0.01));
     let shows_limit = hi > 0.5 * static_tyre;
     let top = if shows_limit { hi.max(static_tyre) } else { hi };
     let mut y = padded((lo, top.max(lo + 1e-6)), 0.08);
     y.1 += 0.3 * (y.1 - y.0);
-    let lifted = defl.iter().any(|p| p.1 > static_tyre);
     let mut fig = Figure::plot(
         TYRE_TITLE,
         Axis::linear("time t", "s", (0.0, t_end)),
@@ -128,9 +148,16 @@ pub(super) fn tyre(run: &Run, t_end: f64, static_tyre: f64, m: Option<RunMetrics
             LineStyle::dashed(Ink::Vermillion, 1.5),
         );
     }
-    let rms = m.map_or(f64::NAN, |m| m.rms_tyre_deflection);
+    for (i, (from, to)) in airborne(run).into_iter().enumerate() {
+        let label = if i == 0 { "off the road" } else { "" };
+        fig = fig.with_line(
+            label,
+            vec![(from, static_tyre), (to, static_tyre)],
+            LineStyle::solid(Ink::Orange, 5.0),
+        );
+    }
     fig.with_origin_lines()
-        .described(text::describe_tyre(lo, hi, rms, lifted, static_tyre))
+        .described(text::describe_tyre(lo, hi, static_tyre, m))
 }
 
 /// Magnitudes clamped into a drawable positive band for the log axis.

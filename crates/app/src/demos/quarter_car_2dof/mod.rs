@@ -19,7 +19,8 @@ use crate::figure::Figure;
 use crate::spec::PlotSpec;
 use run::Run;
 use std::f64::consts::TAU;
-use zeta_solver::two_dof::{Frf, IsoClass, RunMetrics, TwoDof, TwoDofConfig};
+use zeta_solver::two_dof::{Frf, IsoClass, TwoDof, TwoDofConfig};
+use zeta_solver::two_dof_exact::ExactMetrics;
 
 /// Which road drives the car.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -133,7 +134,7 @@ pub struct Results {
     /// Undamped natural frequencies \[Hz\]: body bounce, wheel hop.
     f_body: f64,
     f_wheel: f64,
-    metrics: Option<RunMetrics>,
+    metrics: Option<ExactMetrics>,
     /// Static tyre deflection \[m\].
     static_tyre: f64,
     /// RMS height of the random road \[m\].
@@ -254,28 +255,57 @@ impl Model for QuarterCar2Dof {
                     Some(r.f_wheel)
                 }),
                 ReadoutDef::number(
-                    "rms_body_accel",
-                    "RMS body acceleration (comfort)",
-                    "m/s²",
+                    "window",
+                    "RMS window: the run from rest, 0 … T",
+                    "s",
                     3,
-                    |r| r.metrics.map(|m| m.rms_body_acceleration),
+                    |r| r.metrics.map(|m| m.window),
+                ),
+                ReadoutDef::formatted(
+                    "rms_body_accel",
+                    "RMS body acceleration over 0 … T (comfort)",
+                    "m/s²",
+                    |r| {
+                        r.metrics
+                            .map(|m| text::over_window(m.rms_body_acceleration, "m/s²", m.window))
+                    },
+                ),
+                ReadoutDef::formatted(
+                    "rms_tyre_deflection",
+                    "RMS tyre deflection z_u − u over 0 … T (road holding)",
+                    "m",
+                    |r| {
+                        r.metrics
+                            .map(|m| text::over_window(m.rms_tyre_deflection, "m", m.window))
+                    },
                 ),
                 ReadoutDef::number(
-                    "rms_tyre_deflection",
-                    "RMS tyre deflection (road holding)",
+                    "max_travel",
+                    "largest suspension travel |z_s − z_u|",
                     "m",
                     3,
-                    |r| r.metrics.map(|m| m.rms_tyre_deflection),
+                    |r| r.metrics.map(|m| m.max_suspension_travel),
                 ),
-                ReadoutDef::number("max_travel", "largest suspension travel", "m", 3, |r| {
-                    r.metrics.map(|m| m.max_suspension_travel)
-                }),
                 ReadoutDef::number(
                     "static_tyre_deflection",
-                    "static tyre deflection",
+                    "static tyre deflection (the wheel lifts off beyond it)",
                     "m",
                     3,
                     |r| Some(r.static_tyre),
+                ),
+                ReadoutDef::number(
+                    "lift_off",
+                    "first lift-off: the tyre force reaches zero",
+                    "s",
+                    3,
+                    |r| r.metrics.and_then(|m| m.first_lift_off),
+                ),
+                ReadoutDef::number(
+                    "airborne_time",
+                    "time the wheel is off the road",
+                    "s",
+                    3,
+                    |r| r.metrics.map(|m| m.airborne_time),
                 ),
                 ReadoutDef::number("rms_road", "RMS road height (random road)", "m", 3, |r| {
                     r.rms_road
@@ -331,7 +361,7 @@ impl Model for QuarterCar2Dof {
         let car = p.car()?;
         let [f_body, f_wheel] = car.natural_frequencies_hz();
         self.run.set_road(p);
-        let metrics = self.run.integrate(&car, p.duration(), f_wheel, p.f_road);
+        let metrics = self.run.integrate(&car, p.duration());
         self.run.sweep(&car);
         let random = p.road == RoadKind::Random;
         let sine = p.road == RoadKind::Sine;

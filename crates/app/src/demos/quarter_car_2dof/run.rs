@@ -1,26 +1,19 @@
-//! The run behind the plots: the road, the RK4 states on a uniform grid and the frequency
-//! sweep, kept in buffers between updates so that a moving slider does not allocate.
+//! The run behind the plots: the road, the exact response with a tyre that cannot pull
+//! ([`TwoDof::ride_exact`]) and the frequency sweep, kept between updates.
 //!
-//! Cost per update is bounded: at most [`MAX_STEPS`] RK4 steps, a random road of
-//! [`ROAD_COMPONENTS`] sinusoids rebuilt only when its class, speed or seed changes, and a
-//! [`FRF_POINTS`]-point frequency sweep.
+//! Cost per update is bounded: the solver's road samples and exact pieces (a few thousand
+//! at the defaults, at most ≈ 45 000 at the stiffest tyre on the slowest sine), a random
+//! road of [`ROAD_COMPONENTS`] sinusoids rebuilt only when its class, speed or seed
+//! changes, and a [`FRF_POINTS`]-point frequency sweep.
 
 use super::{RoadKind, P};
 use zeta_solver::grid::{interpolate, logspace_into};
-use zeta_solver::integrate::{FixedStep, Rk4};
-use zeta_solver::road::{SampledDriven, SampledRoad};
-use zeta_solver::two_dof::{Frf, IsoClass, RandomRoad, RandomRoadConfig, Road, RunMetrics, TwoDof};
+use zeta_solver::road::SampledRoad;
+use zeta_solver::two_dof::{Frf, IsoClass, RandomRoad, RandomRoadConfig, Road, TwoDof};
+use zeta_solver::two_dof_exact::{ExactMetrics, Tyre};
 
-/// Most RK4 steps per update.
-pub(super) const MAX_STEPS: usize = 4000;
-/// RK4 steps per wheel-hop period (accuracy; stability needs far fewer).
-const STEPS_PER_HOP: f64 = 30.0;
-/// Most RK4 steps per update on a random road.
-const MAX_STEPS_RANDOM: usize = 1500;
 /// Sinusoids in the random road.
 pub(super) const ROAD_COMPONENTS: usize = 64;
-/// Samples per second of the tabulated random road \[Hz\].
-const TABLE_RATE: f64 = 150.0;
 /// Temporal frequency band of the random road \[Hz\] (both modes, up to wheel hop).
 const ROAD_BAND: (f64, f64) = (0.5, 20.0);
 /// Frequencies of the response sweep.
@@ -32,36 +25,23 @@ pub(super) const FRF_RANGE: (f64, f64) = (0.1, 60.0);
 type RoadKey = (IsoClass, u64, u64);
 
 /// The last run and the buffers it reuses.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub(super) struct Run {
     /// States `[z_s, z_u, z_s', z_u']` at `times`.
     pub states: Vec<[f64; 4]>,
-    /// Grid times `t = i·h` \[s\].
+    /// Times of the states \[s\]: every road sample and every lift-off and landing.
     pub times: Vec<f64>,
-    /// Road height at each grid time \[m\].
+    /// Road height at each time \[m\].
     pub road_u: Vec<f64>,
-    /// The random road sampled at [`TABLE_RATE`].
-    table: SampledRoad,
+    /// Whether the tyre pushes on the road just after each time.
+    pub contact: Vec<bool>,
+    /// The road's samples (reused by the solver).
+    samples: SampledRoad,
     road: Road,
     random: Option<(RoadKey, RandomRoad)>,
     omegas: Vec<f64>,
     /// Frequency responses at `omegas`.
     pub frf: Vec<Frf>,
-}
-
-impl Default for Run {
-    fn default() -> Self {
-        Self {
-            states: Vec::with_capacity(MAX_STEPS + 1),
-            times: Vec::with_capacity(MAX_STEPS + 1),
-            road_u: Vec::with_capacity(MAX_STEPS + 1),
-            table: SampledRoad::default(),
-            road: Road::Flat,
-            random: None,
-            omegas: Vec::with_capacity(FRF_POINTS),
-            frf: Vec::with_capacity(FRF_POINTS),
-        }
-    }
 }
 
 impl Run {
@@ -129,50 +109,22 @@ impl Run {
         };
     }
 
-    /// RK4 from rest over `[0, t_end]` (step ≤ a thirtieth of the fastest period, at most
-    /// [`MAX_STEPS`] steps); fills the road height at every grid point and returns the
-    /// run's metrics. A random road is sampled once at [`TABLE_RATE`] and read back
-    /// linearly ([`SampledRoad`]), so RK4 does not re-sum its sinusoids at every stage.
-    pub fn integrate(
-        &mut self,
-        car: &TwoDof,
-        t_end: f64,
-        f_wheel: f64,
-        f_road: f64,
-    ) -> Option<RunMetrics> {
-        let random = matches!(self.road, Road::Random(_));
-        let f_fast = if random { f_wheel } else { f_wheel.max(f_road) };
-        let cap = if random { MAX_STEPS_RANDOM } else { MAX_STEPS };
-        let h = 1.0 / (STEPS_PER_HOP * f_fast.max(1e-3));
-        let n = ((t_end / h).ceil().max(1.0) as usize).min(cap);
-        let h = t_end / n as f64;
+    /// The exact response from rest over `[0, t_end]`, the tyre unable to pull; `None`
+    /// (and an empty run) if the solver refuses the run.
+    pub fn integrate(&mut self, car: &TwoDof, t_end: f64) -> Option<ExactMetrics> {
+        let run = car
+            .ride_exact(&self.road, t_end, Tyre::Unilateral, &mut self.samples)
+            .ok();
         self.states.clear();
-        self.states.resize(n + 1, [0.0; 4]);
-        let ok = if random {
-            self.table.fill_uniform(&self.road, TABLE_RATE, t_end);
-            let sys = SampledDriven::new(car, &self.table);
-            Rk4.solve_into(&sys, [0.0; 4], 0.0, h, &mut self.states)
-                .is_ok()
-        } else {
-            Rk4.solve_into(&car.driven(&self.road), [0.0; 4], 0.0, h, &mut self.states)
-                .is_ok()
-        };
-        if !ok {
-            self.states.clear();
-        }
         self.times.clear();
-        self.times
-            .extend((0..self.states.len()).map(|i| i as f64 * h));
         self.road_u.clear();
-        if random {
-            let table = &self.table;
-            self.road_u
-                .extend(self.times.iter().map(|&t| table.height(t)));
-        } else {
-            let road = &self.road;
-            self.road_u.extend(self.times.iter().map(|&t| road.at(t).0));
-        }
-        car.sampled_metrics(&self.states, &self.road_u)
+        self.contact.clear();
+        let run = run?;
+        self.times = run.t;
+        self.states = run.y;
+        self.road_u = run.u;
+        self.contact = run.contact;
+        Some(run.metrics)
     }
 
     /// The frequency responses over [`FRF_RANGE`] at log-spaced frequencies.

@@ -3,20 +3,22 @@
 use super::RoadKind;
 use crate::format::si;
 use crate::spec::Preset;
+use zeta_solver::two_dof_exact::ExactMetrics;
 
 pub(super) const SUMMARY: &str =
-    "Two masses, two modes. The body (sprung mass m_s) sits on the suspension \
-                      spring k_s and damper c_s; the wheel (unsprung mass m_u) sits on the tyre \
-                      spring k_t, which follows the road u(t). Body bounce, around 1–1.5 Hz, is \
-                      the body moving on the soft suspension; wheel hop, around 10–15 Hz, is the \
-                      light wheel bouncing between the stiff tyre and the suspension. The \
-                      frequency responses show both: the body follows slow road waves, rides \
-                      over fast ones, and shakes most near body bounce; the tyre deflection, \
-                      which decides grip, peaks at wheel hop — if it exceeds the static tyre \
-                      deflection the tyre leaves the road. Comfort is judged by the RMS body \
-                      acceleration, road holding by the RMS tyre deflection (both over the run, \
-                      starting from rest). Displacements are from static equilibrium, upward \
-                      positive; the random road sums 64 sinusoids with the ISO 8608 spectrum over 0.5–20 Hz.";
+    "Two masses, two modes. The body (sprung mass m_s) sits on the suspension spring k_s and \
+     damper c_s; the wheel (unsprung mass m_u) sits on the tyre spring k_t, which follows \
+     the road u(t). Body bounce, around 1–1.5 Hz, is the body moving on the soft \
+     suspension; wheel hop, around 10–15 Hz, is the light wheel bouncing between the stiff \
+     tyre and the suspension. The frequency responses show both: the body follows slow road \
+     waves, rides over fast ones, and shakes most near body bounce; the tyre deflection, \
+     which decides grip, peaks at wheel hop. The tyre can only push: when the wheel rises \
+     above its static deflection the tyre force is zero and the wheel leaves the road until \
+     it lands again. Comfort is judged by the RMS body acceleration, road holding by the RMS \
+     tyre deflection, both over the run from rest, 0 … T. The response is exact between road \
+     samples, which are close enough to follow every bump and wheel hop. Displacements are \
+     from static equilibrium, upward positive; the random road sums 64 sinusoids with the \
+     ISO 8608 spectrum over 0.5–20 Hz.";
 
 pub(super) const EQUATION: &str = "<math display=\"block\"><mtable>\
 <mtr><mtd><msub><mi>m</mi><mi>s</mi></msub><msub><mover><mi>z</mi><mo>¨</mo></mover><mi>s</mi></msub>\
@@ -58,28 +60,35 @@ pub(super) fn describe_motion(
     )
 }
 
-/// The acceleration plot in words: peak \[m/s²\], the same in g, RMS.
-pub(super) fn describe_acceleration(peak: f64, peak_g: f64, rms: Option<f64>) -> String {
+/// The acceleration plot in words: peak \[m/s²\], the same in g, and the RMS over the
+/// window.
+pub(super) fn describe_acceleration(peak: f64, peak_g: f64, m: Option<ExactMetrics>) -> String {
     format!(
-        "Body acceleration peaks at {} ({} g); its RMS over the run is {}.",
+        "Body acceleration peaks at {} ({} g); over the run from rest, 0 to {}, its RMS is {}.",
         si(peak, "m/s²", 3),
         si(peak_g, "", 2),
-        si(rms.unwrap_or(f64::NAN), "m/s²", 3)
+        si(m.map_or(f64::NAN, |m| m.window), "s", 3),
+        si(m.map_or(f64::NAN, |m| m.rms_body_acceleration), "m/s²", 3)
     )
 }
 
-/// The tyre plot in words: range `lo … hi` and RMS of the deflection \[m\], and whether it
-/// passes the static deflection.
-pub(super) fn describe_tyre(lo: f64, hi: f64, rms: f64, lifted: bool, static_tyre: f64) -> String {
-    let lift = if lifted {
-        "; it exceeds the static deflection, so the tyre force would be negative: the \
-         wheel leaves the road"
-            .to_string()
-    } else {
-        format!(
+/// The tyre plot in words: range `lo … hi` of the deflection \[m\], its RMS, and when and
+/// for how long the wheel leaves the road.
+pub(super) fn describe_tyre(lo: f64, hi: f64, static_tyre: f64, m: Option<ExactMetrics>) -> String {
+    let rms = m.map_or(f64::NAN, |m| m.rms_tyre_deflection);
+    let lift = match m.and_then(|m| m.first_lift_off.map(|t| (t, m))) {
+        Some((t, m)) => format!(
+            "; it reaches the static deflection {} first at {}, where the tyre force falls to \
+             zero and the wheel leaves the road: lift-offs {}; time off the road {}",
+            si(static_tyre, "m", 3),
+            si(t, "s", 3),
+            m.lift_offs,
+            si(m.airborne_time, "s", 3)
+        ),
+        None => format!(
             "; it stays below the static deflection {}, so the tyre keeps contact",
             si(static_tyre, "m", 3)
-        )
+        ),
     };
     format!(
         "Tyre deflection (wheel above road, positive = tyre unloading) ranges from {} to \
@@ -166,4 +175,9 @@ pub(super) fn presets() -> Vec<Preset> {
             ],
         ),
     ]
+}
+
+/// An RMS value with its window, e.g. `0.116 m/s² (0–2.50 s)`.
+pub(super) fn over_window(v: f64, unit: &str, window: f64) -> (f64, String) {
+    (v, format!("{} (0–{})", si(v, unit, 3), si(window, "s", 3)))
 }
