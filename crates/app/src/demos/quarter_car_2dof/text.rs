@@ -30,9 +30,10 @@ pub(super) const EQUATION: &str = "<math display=\"block\"><mtable>\
 <mo>=</mo><msub><mi>k</mi><mi>s</mi></msub><mo>(</mo><msub><mi>z</mi><mi>s</mi></msub><mo>−</mo>\
 <msub><mi>z</mi><mi>u</mi></msub><mo>)</mo><mo>+</mo><msub><mi>c</mi><mi>s</mi></msub><mo>(</mo>\
 <msub><mover><mi>z</mi><mo>˙</mo></mover><mi>s</mi></msub><mo>−</mo>\
-<msub><mover><mi>z</mi><mo>˙</mo></mover><mi>u</mi></msub><mo>)</mo><mo>−</mo><msub><mi>k</mi><mi>t</mi></msub>\
-<mo>(</mo><msub><mi>z</mi><mi>u</mi></msub><mo>−</mo><mi>u</mi><mo>(</mo><mi>t</mi><mo>)</mo><mo>)</mo>\
-</mtd></mtr></mtable></math>";
+<msub><mover><mi>z</mi><mo>˙</mo></mover><mi>u</mi></msub><mo>)</mo><mo>−</mo><mi>min</mi><mo>(</mo>\
+<msub><mi>k</mi><mi>t</mi></msub><mo>(</mo><msub><mi>z</mi><mi>u</mi></msub><mo>−</mo><mi>u</mi><mo>(</mo>\
+<mi>t</mi><mo>)</mo><mo>)</mo><mo>,</mo><mo>(</mo><msub><mi>m</mi><mi>s</mi></msub><mo>+</mo>\
+<msub><mi>m</mi><mi>u</mi></msub><mo>)</mo><mi>g</mi><mo>)</mo></mtd></mtr></mtable></math>";
 
 /// The motion plot in words: largest road height, and the body's and wheel's largest
 /// excursions `(t, z)`.
