@@ -34,6 +34,7 @@ pub mod metrics;
 pub mod model;
 pub mod nonlinear;
 pub mod regime;
+pub mod ride;
 pub mod road;
 pub mod two_dof;
 pub mod two_dof_exact;

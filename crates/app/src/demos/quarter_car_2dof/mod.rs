@@ -19,6 +19,7 @@ use crate::figure::Figure;
 use crate::spec::PlotSpec;
 use run::Run;
 use std::f64::consts::TAU;
+use zeta_solver::ride::{stationary, Stationary};
 use zeta_solver::two_dof::{Frf, IsoClass, TwoDof, TwoDofConfig};
 use zeta_solver::two_dof_exact::ExactMetrics;
 
@@ -139,6 +140,8 @@ pub struct Results {
     static_tyre: f64,
     /// RMS height of the random road \[m\].
     rms_road: Option<f64>,
+    /// Stationary RMS values on the full ISO 8608 road of the chosen class and speed.
+    stationary: Option<Stationary>,
     /// Frequency response at the sine road's frequency.
     sine_frf: Option<Frf>,
     /// End of the run \[s\].
@@ -311,6 +314,20 @@ impl Model for QuarterCar2Dof {
                     r.rms_road
                 }),
                 ReadoutDef::number(
+                    "stationary_accel",
+                    "stationary RMS body acceleration, full ISO 8608 road (random road)",
+                    "m/s²",
+                    3,
+                    |r| r.stationary.map(|s| s.rms_body_acceleration),
+                ),
+                ReadoutDef::number(
+                    "stationary_weighted_accel",
+                    "stationary a_w: RMS body acceleration weighted by ISO 2631-1 W_k (random road)",
+                    "m/s²",
+                    3,
+                    |r| r.stationary.map(|s| s.rms_weighted_body_acceleration),
+                ),
+                ReadoutDef::number(
                     "body_gain",
                     "body / road amplitude at the sine frequency",
                     "",
@@ -371,6 +388,9 @@ impl Model for QuarterCar2Dof {
             metrics,
             static_tyre: car.static_tyre_deflection(),
             rms_road: self.run.random_road().filter(|_| random).map(|r| r.rms()),
+            stationary: random
+                .then(|| stationary(&car, p.class, p.v).ok())
+                .flatten(),
             sine_frf: sine.then(|| car.frf(TAU * p.f_road)),
             t_end: self.run.t_end(),
         })

@@ -119,3 +119,15 @@ fn the_schematic_moves_with_the_run() {
     assert_ne!(a.series[0].points, b.series[0].points);
     assert_ne!(a.description, b.description);
 }
+
+#[test]
+fn the_random_road_shows_the_stationary_comfort_values() {
+    let f = run("road=random&class=C&V=20");
+    let a = number(&f, "stationary_accel");
+    let aw = number(&f, "stationary_weighted_accel");
+    // W_k weighs body bounce (≈ 1.3 Hz) by about one half: a_w is well below the
+    // unweighted value, which is of the order of the run's own RMS.
+    assert!(aw < 0.9 * a && aw > 0.3 * a, "{a} {aw}");
+    assert!((a / number(&f, "rms_body_accel") - 1.0).abs() < 0.5);
+    assert_eq!(value(&run(""), "stationary_weighted_accel"), "");
+}

@@ -18,7 +18,9 @@ pub(super) const SUMMARY: &str =
      tyre deflection, both over the run from rest, 0 … T. The response is exact between road \
      samples, which are close enough to follow every bump and wheel hop. Displacements are \
      from static equilibrium, upward positive; the random road sums 64 sinusoids with the \
-     ISO 8608 spectrum over 0.5–20 Hz.";
+     ISO 8608 spectrum over 0.5–20 Hz. On it the page also shows the stationary RMS body \
+     acceleration on the full ISO 8608 road, unweighted and weighted by ISO 2631-1's W_k \
+     (a_w, the comfort measure), from the Lyapunov equation of the car.";
 
 pub(super) const EQUATION: &str = "<math display=\"block\"><mtable>\
 <mtr><mtd><msub><mi>m</mi><mi>s</mi></msub><msub><mover><mi>z</mi><mo>¨</mo></mover><mi>s</mi></msub>\
