@@ -1,12 +1,13 @@
-//! `quarter-car-2dof`: sprung (body) and unsprung (wheel) mass on a suspension and a tyre,
-//! driven by a bump, a step, a sinusoid or a random ISO 8608 road (all maths in
-//! [`zeta_solver::two_dof`] and [`zeta_solver::road`]). Plots: body, wheel and road
-//! motion; body acceleration; tyre deflection; and the frequency responses with the two
-//! modes, body bounce and wheel hop.
+//! `quarter-car-2dof`: sprung (body) and unsprung (wheel) mass on a suspension and a tyre
+//! that cannot pull, driven by a bump, a step, a sinusoid or a random ISO 8608 road (all
+//! maths in [`zeta_solver::two_dof`], [`zeta_solver::two_dof_exact`],
+//! [`zeta_solver::road`] and [`zeta_solver::ride`]). Plots: body, wheel and road motion;
+//! body acceleration; tyre deflection with the time off the road; and the frequency
+//! responses with the two modes, body bounce and wheel hop.
 //!
-//! This file declares the demo and holds its model step; `run.rs` integrates the car into
-//! buffers kept between updates; `figures.rs` and `schematic.rs` draw; `text.rs` holds the
-//! prose.
+//! This file declares the demo and holds its model step; `readouts.rs` is the readout
+//! table; `run.rs` keeps the road and the exact run between updates; `figures.rs` and
+//! `schematic.rs` draw; `text.rs` holds the prose.
 
 mod figures;
 mod readouts;
