@@ -209,7 +209,7 @@ const REGISTRY: &[(&str, Factory)] = &[
         Box::new(Typed::new(nonlinear::Nonlinear::default()))
     }),
     ("quarter-car-2dof", || {
-        Box::new(quarter_car_2dof::QuarterCar2Dof::default())
+        Box::new(Typed::new(quarter_car_2dof::QuarterCar2Dof::default()))
     }),
     ("design", || {
         Box::new(Typed::new(design::DesignSpace::default()))

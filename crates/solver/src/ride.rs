@@ -1,0 +1,317 @@
+//! Ride comfort as engineers measure it: the RMS body acceleration of the two-DOF quarter
+//! car ([`crate::two_dof`]) on an ISO 8608 road, frequency-weighted by ISO 2631-1's `W_k`
+//! (vertical whole-body vibration, seated), beside the unweighted value, as stationary
+//! values from a Lyapunov equation.
+//!
+//! **The weighting** (ISO 2631-1:1997 Annex A, Table A.1; the same parameters in ISO 8041
+//! Table 3.1) is the product of four second-order sections in `s = iω` (rad/s):
+//!
+//! ```text
+//! band limiting   H_h = s²/(s² + ω₁s/Q₁ + ω₁²)          f₁ = 0.4 Hz, Q₁ = 1/√2
+//!                 H_l = ω₂²/(s² + ω₂s/Q₂ + ω₂²)          f₂ = 100 Hz, Q₂ = 1/√2
+//! a–v transition  H_t = (1 + s/ω₃)/(1 + s/(Q₄ω₄) + s²/ω₄²)   f₃ = f₄ = 12.5 Hz, Q₄ = 0.63
+//! upward step     H_s = (s² + ω₅s/Q₅ + ω₅²)/(s² + ω₆s/Q₆ + ω₆²)   f₅ = 2.37 Hz, Q₅ = 0.91,
+//!                                                           f₆ = 3.35 Hz, Q₆ = 0.91
+//! W_k = K·H_h·H_l·H_t·H_s,  K = 1,  ωᵢ = 2π·fᵢ.
+//! ```
+//!
+//! **The road** of ISO 8608 has the one-sided displacement PSD `G_d(n) = G_d(n₀)·(n₀/n)²`
+//! (m³, `n` in cycles/m, `n₀ = 0.1`); driven at `V` (m/s) its height has the temporal PSD
+//! `G_u(f) = G_d(n₀)·n₀²·V/f²` (m²/Hz), i.e. the road velocity is white with
+//! `G_u' = (2π·n₀)²·G_d(n₀)·V`. So that the height stays stationary, the road is the
+//! shaping filter `u' = −2π·n_c·V·u + w` with `n_c` = [`ROAD_CUT_ON`] (ISO 8608's lowest
+//! band), white `w` of intensity `q = G_u'/2` (two-sided); above `n_c·V` its spectrum is
+//! ISO 8608's.
+//!
+//! **Stationary values**: with the state `x` = car `[z_s, z_u, z_s', z_u']`, road `u` and
+//! the eight states of `W_k` (input: the body acceleration), `x' = A·x + b·w`; the
+//! stationary covariance `P` solves the Lyapunov equation `A·P + P·Aᵀ + q·b·bᵀ = 0`
+//! (solved as the linear system `(I ⊗ A + A ⊗ I)·vec P = −q·vec(b·bᵀ)`), and each RMS is
+//! `√(c·P·cᵀ)` for its output row `c`.
+//!
+//! ```
+//! use zeta_solver::ride::{stationary, W_K};
+//! use zeta_solver::two_dof::{IsoClass, TwoDof, TwoDofConfig};
+//! // ISO 2631-1 Table 3: W_k = 1.039 at 5 Hz, 0.482 at 1 Hz.
+//! assert!((W_K.magnitude(5.0118723) - 1.039).abs() < 2e-3);
+//! let car = TwoDof::new(TwoDofConfig::default()).unwrap();
+//! let r = stationary(&car, IsoClass::C, 20.0).unwrap();
+//! assert!(r.rms_weighted_body_acceleration < r.rms_body_acceleration);
+//! ```
+
+use crate::complex::Complex;
+use crate::error::{positive, ModelError};
+use crate::two_dof::{IsoClass, TwoDof, ISO_N0};
+use std::f64::consts::{FRAC_1_SQRT_2, TAU};
+
+/// A frequency weighting of ISO 2631-1 / ISO 8041 by its parameters (Hz, -).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Weighting {
+    /// High-pass corner `f₁` (Hz) and quality `Q₁`.
+    pub f1: f64,
+    /// Quality of the high pass.
+    pub q1: f64,
+    /// Low-pass corner `f₂` (Hz).
+    pub f2: f64,
+    /// Quality of the low pass.
+    pub q2: f64,
+    /// a–v transition zero `f₃` (Hz).
+    pub f3: f64,
+    /// a–v transition pole `f₄` (Hz).
+    pub f4: f64,
+    /// Quality of the a–v transition.
+    pub q4: f64,
+    /// Upward-step zero `f₅` (Hz).
+    pub f5: f64,
+    /// Quality of the step's zero.
+    pub q5: f64,
+    /// Upward-step pole `f₆` (Hz).
+    pub f6: f64,
+    /// Quality of the step's pole.
+    pub q6: f64,
+    /// Gain `K`.
+    pub k: f64,
+}
+
+/// `W_k`, vertical (z-axis) whole-body vibration of a seated person (ISO 2631-1:1997
+/// Table A.1).
+pub const W_K: Weighting = Weighting {
+    f1: 0.4,
+    q1: FRAC_1_SQRT_2,
+    f2: 100.0,
+    q2: FRAC_1_SQRT_2,
+    f3: 12.5,
+    f4: 12.5,
+    q4: 0.63,
+    f5: 2.37,
+    q5: 0.91,
+    f6: 3.35,
+    q6: 0.91,
+    k: 1.0,
+};
+
+/// `(b₂s² + b₁s + b₀)/(s² + a₁s + a₀)`.
+#[derive(Debug, Clone, Copy)]
+struct Section {
+    b: [f64; 3],
+    a: [f64; 2],
+}
+
+impl Section {
+    fn at(&self, s: Complex) -> Complex {
+        let num = s * s * self.b[2] + s * self.b[1] + Complex::real(self.b[0]);
+        let den = s * s + s * self.a[1] + Complex::real(self.a[0]);
+        num / den
+    }
+}
+
+impl Weighting {
+    /// The four sections `H_h, H_l, H_t, H_s` as ratios of monic quadratics.
+    fn sections(&self) -> [Section; 4] {
+        let w = |f: f64| TAU * f;
+        let (w1, w2, w3, w4, w5, w6) = (
+            w(self.f1),
+            w(self.f2),
+            w(self.f3),
+            w(self.f4),
+            w(self.f5),
+            w(self.f6),
+        );
+        [
+            Section {
+                b: [0.0, 0.0, 1.0],
+                a: [w1 * w1, w1 / self.q1],
+            },
+            Section {
+                b: [w2 * w2, 0.0, 0.0],
+                a: [w2 * w2, w2 / self.q2],
+            },
+            // (1 + s/ω₃)/(1 + s/(Q₄ω₄) + s²/ω₄²) = ω₄²(1 + s/ω₃)/(s² + ω₄s/Q₄ + ω₄²).
+            Section {
+                b: [w4 * w4, w4 * w4 / w3, 0.0],
+                a: [w4 * w4, w4 / self.q4],
+            },
+            Section {
+                b: [w5 * w5, w5 / self.q5, 1.0],
+                a: [w6 * w6, w6 / self.q6],
+            },
+        ]
+    }
+
+    /// The weighting's frequency response `W(i·2πf)` at `f` (Hz).
+    pub fn response(&self, f_hz: f64) -> Complex {
+        let s = Complex::new(0.0, TAU * f_hz);
+        self.sections()
+            .iter()
+            .fold(Complex::real(self.k), |acc, sec| acc * sec.at(s))
+    }
+
+    /// `|W(i·2πf)|` (-) at `f` (Hz): the factor ISO 2631-1 Table 3 tabulates (×1000).
+    pub fn magnitude(&self, f_hz: f64) -> f64 {
+        self.response(f_hz).abs()
+    }
+}
+
+/// Lowest spatial frequency of the road model `n_c = 0.011` cycles/m (ISO 8608's band):
+/// the shaping filter's corner, below which the road's PSD levels off.
+pub const ROAD_CUT_ON: f64 = 0.011;
+
+/// Stationary RMS responses of the two-DOF car on an ISO 8608 road.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Stationary {
+    /// Unweighted RMS body acceleration (m/s²).
+    pub rms_body_acceleration: f64,
+    /// RMS body acceleration weighted by `W_k` (m/s²): ISO 2631-1's comfort measure `a_w`.
+    pub rms_weighted_body_acceleration: f64,
+    /// RMS tyre deflection `z_u − u` (m).
+    pub rms_tyre_deflection: f64,
+    /// RMS suspension travel `z_s − z_u` (m).
+    pub rms_suspension_travel: f64,
+}
+
+/// Car (4) + road (1) + `W_k` (8) states.
+const N: usize = 13;
+
+/// The stationary RMS responses of `car` driven at `speed` (m/s) over a road of `class`,
+/// weighted by [`W_K`] (see the module docs). Errors: a non-positive speed, or a car whose
+/// response does not settle (no damping at all: `c_s = c_t = 0`).
+pub fn stationary(car: &TwoDof, class: IsoClass, speed: f64) -> Result<Stationary, ModelError> {
+    stationary_weighted(car, class, speed, &W_K)
+}
+
+/// [`stationary`] with another weighting.
+pub fn stationary_weighted(
+    car: &TwoDof,
+    class: IsoClass,
+    speed: f64,
+    weighting: &Weighting,
+) -> Result<Stationary, ModelError> {
+    let v = positive("speed", "m/s", speed)?;
+    let c = car.config();
+    let (ms, mu) = (c.sprung_mass, c.unsprung_mass);
+    let mut a = [[0.0; N]; N];
+    let mut b = [0.0; N];
+    // Car: rows 0–3; road: row 4.
+    a[0][2] = 1.0;
+    a[1][3] = 1.0;
+    let accel = [-c.k_s / ms, c.k_s / ms, -c.c_s / ms, c.c_s / ms, 0.0];
+    a[2][..5].copy_from_slice(&accel);
+    let road_pole = TAU * ROAD_CUT_ON * v;
+    a[3][..5].copy_from_slice(&[
+        c.k_s / mu,
+        -(c.k_s + c.k_t) / mu,
+        c.c_s / mu,
+        -(c.c_s + c.c_t) / mu,
+        (c.k_t - c.c_t * road_pole) / mu,
+    ]);
+    b[3] = c.c_t / mu;
+    a[4][4] = -road_pole;
+    b[4] = 1.0;
+    // W_k: each section's input is a linear combination of the states (`input`).
+    let mut input = [0.0; N];
+    input[..5].copy_from_slice(&accel);
+    let mut next = 5;
+    for sec in weighting.sections() {
+        let (i, j) = (next, next + 1);
+        a[i][j] = 1.0;
+        for (k, &w) in input.iter().enumerate() {
+            a[j][k] += w;
+        }
+        a[j][i] -= sec.a[0];
+        a[j][j] -= sec.a[1];
+        // Output (b₀ − b₂a₀)·x_i + (b₁ − b₂a₁)·x_j + b₂·input.
+        let mut out = input.map(|w| sec.b[2] * w);
+        out[i] += sec.b[0] - sec.b[2] * sec.a[0];
+        out[j] += sec.b[1] - sec.b[2] * sec.a[1];
+        input = out;
+        next += 2;
+    }
+    let weighted = input.map(|w| weighting.k * w);
+    let q = 0.5 * (TAU * ISO_N0).powi(2) * class.g_d_n0() * v;
+    let p = lyapunov(&a, &b, q).ok_or(ModelError::OutOfRange {
+        name: "suspension damping",
+        reason: "the response to a random road never settles without damping",
+    })?;
+    let rms = |row: &[f64; N]| {
+        let mut s = 0.0;
+        for (i, ri) in row.iter().enumerate() {
+            for (j, rj) in row.iter().enumerate() {
+                s += ri * p[i * N + j] * rj;
+            }
+        }
+        s.max(0.0).sqrt()
+    };
+    let mut accel_row = [0.0; N];
+    accel_row[..5].copy_from_slice(&accel);
+    let mut tyre = [0.0; N];
+    tyre[1] = 1.0;
+    tyre[4] = -1.0;
+    let mut travel = [0.0; N];
+    travel[0] = 1.0;
+    travel[1] = -1.0;
+    Ok(Stationary {
+        rms_body_acceleration: rms(&accel_row),
+        rms_weighted_body_acceleration: rms(&weighted),
+        rms_tyre_deflection: rms(&tyre),
+        rms_suspension_travel: rms(&travel),
+    })
+}
+
+/// Index of the unknown `P[i][j] = P[j][i]` among the `N(N+1)/2` of a symmetric matrix.
+fn sym(i: usize, j: usize) -> usize {
+    let (lo, hi) = if i <= j { (i, j) } else { (j, i) };
+    lo * N - lo * (lo + 1) / 2 + hi
+}
+
+/// The solution `P` (row-major, `N×N`) of `A·P + P·Aᵀ + q·b·bᵀ = 0`: the `N(N+1)/2`
+/// equations `Σₖ A[i][k]·P[k][j] + Σₖ A[j][k]·P[i][k] = −q·bᵢ·bⱼ` (`i ≤ j`) in the as
+/// many unknowns of the symmetric `P`, by Gaussian elimination with partial pivoting;
+/// `None` when singular (eigenvalues with `λᵢ + λⱼ = 0`, e.g. an undamped mode) or when a
+/// variance comes out negative or not finite (`A` not stable).
+fn lyapunov(a: &[[f64; N]; N], b: &[f64; N], q: f64) -> Option<Vec<f64>> {
+    let n = N * (N + 1) / 2;
+    let mut m = vec![0.0; n * n];
+    let mut rhs = vec![0.0; n];
+    for i in 0..N {
+        for j in i..N {
+            let r = sym(i, j);
+            for k in 0..N {
+                m[r * n + sym(k, j)] += a[i][k];
+                m[r * n + sym(i, k)] += a[j][k];
+            }
+            rhs[r] = -q * b[i] * b[j];
+        }
+    }
+    let scale = m.iter().fold(0.0f64, |s, v| s.max(v.abs()));
+    for col in 0..n {
+        let pivot =
+            (col..n).max_by(|&x, &y| m[x * n + col].abs().total_cmp(&m[y * n + col].abs()))?;
+        let pv = m[pivot * n + col];
+        if !pv.is_finite() || pv.abs() <= 1e-14 * scale {
+            return None;
+        }
+        if pivot != col {
+            for k in 0..n {
+                m.swap(col * n + k, pivot * n + k);
+            }
+            rhs.swap(col, pivot);
+        }
+        for row in col + 1..n {
+            let f = m[row * n + col] / pv;
+            if f != 0.0 {
+                for k in col..n {
+                    m[row * n + k] -= f * m[col * n + k];
+                }
+                rhs[row] -= f * rhs[col];
+            }
+        }
+    }
+    let mut x = vec![0.0; n];
+    for r in (0..n).rev() {
+        let s: f64 = (r + 1..n).map(|k| m[r * n + k] * x[k]).sum();
+        x[r] = (rhs[r] - s) / m[r * n + r];
+    }
+    let p: Vec<f64> = (0..N * N).map(|ij| x[sym(ij / N, ij % N)]).collect();
+    let stable = (0..N).all(|i| p[i * N + i].is_finite() && p[i * N + i] >= 0.0);
+    stable.then_some(p)
+}
