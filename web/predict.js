@@ -1,0 +1,145 @@
+// Predict, then reveal: with `predict=<readout>` the plots and that readout stay hidden
+// until the student types a prediction; the page then reveals the value, says how far off
+// the prediction was, and posts an xAPI-shaped statement to the host page:
+//
+//   {type: 'zeta:prediction', prediction, value, difference, success, tolerance, unit,
+//    readout, demo, params, token, timestamp,
+//    statement: {verb, object, result, context, timestamp}}     (no actor: the host adds it)
+//
+// `tol=0.5` is an absolute tolerance in the readout's unit; `tol=5%` is relative to the
+// value (default 10 %). The form works with the keyboard alone (type, Enter); the result
+// is announced through a polite live region and receives focus.
+import { parseNumber } from '../zeta-app.js';
+
+const VERB = { id: 'http://adlnet.gov/expapi/verbs/answered', display: { 'en-US': 'answered' } };
+const INTERACTION = 'http://adlnet.gov/expapi/activities/cmi.interaction';
+const EXT = 'urn:zeta-lab:xapi:';
+const DEFAULT_TOL = '10%';
+
+function el(tag, attrs = {}, text) {
+  const node = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, v);
+  if (text !== undefined) node.textContent = text;
+  return node;
+}
+
+/** `{abs, text}` of a tolerance string around `value`; null when malformed. */
+export function tolerance(raw, value) {
+  const s = String(raw ?? DEFAULT_TOL).trim();
+  const pct = s.endsWith('%');
+  const n = parseNumber(pct ? s.slice(0, -1) : s);
+  if (n === undefined || n < 0) return null;
+  return pct ? { abs: Math.abs(value) * n / 100, text: `±${n} %` } : { abs: n, text: `±${n}` };
+}
+
+const show = (v) => String(Number(v.toPrecision(4)));
+
+/**
+ * Hides the plots and readout `opts.predict` of `view` behind a prediction form.
+ * `io`: {post(msg), context() → {demo, params, token}}.
+ */
+export function setupPrediction(view, opts, io) {
+  const key = opts.predict;
+  const spec = view.spec.readouts.find((r) => r.key === key);
+  const item = view.readouts.get(key);
+  if (!spec || !item) return;
+  const hidden = [];
+  const hide = (node) => {
+    if (node && !node.hidden) {
+      node.hidden = true;
+      hidden.push(node);
+    }
+  };
+  for (const canvas of view.canvases.values()) hide(canvas.closest('figure'));
+  hide(item);
+  const unit = spec.unit ? ` ${spec.unit}` : '';
+  const box = el('section', { class: 'zeta-predict', 'aria-labelledby': 'zeta-predict-title' });
+  box.append(el('h2', { id: 'zeta-predict-title' }, 'Predict first'));
+  box.append(el('p', { id: 'zeta-predict-hint' },
+    `The plots and the ${spec.label} stay hidden until you predict it. Type your prediction and press Enter.`));
+  // Not a <form> submission: sandboxed frames without allow-forms never fire `submit`.
+  const form = el('div', { class: 'zeta-predict-form', role: 'group', 'aria-labelledby': 'zeta-predict-title' });
+  const input = el('input', {
+    id: 'zeta-predict-input', type: 'text', inputmode: 'decimal', autocomplete: 'off',
+    'aria-describedby': 'zeta-predict-hint zeta-predict-error', enterkeyhint: 'done',
+  });
+  const button = el('button', { type: 'button' }, 'Reveal');
+  form.append(el('label', { for: 'zeta-predict-input' }, `Your prediction of the ${spec.label}${unit ? ` (${spec.unit})` : ''}`), input, button);
+  const error = el('p', { id: 'zeta-predict-error', class: 'zeta-predict-error', role: 'alert' });
+  const result = el('p', { id: 'zeta-predict-result', class: 'zeta-predict-result', role: 'status', 'aria-live': 'polite', tabindex: '-1' });
+  box.append(form, error, result);
+  const root = document.getElementById('demo');
+  const head = root && root.querySelector('.demo-head');
+  if (head) head.after(box);
+  else if (root) root.prepend(box);
+
+  input.addEventListener('keydown', (ev) => {
+    if (ev.key === 'Enter') {
+      ev.preventDefault();
+      reveal();
+    }
+  });
+  button.addEventListener('click', () => reveal());
+  const reveal = () => {
+    if (button.disabled) return;
+    const prediction = parseNumber(input.value.replace(',', '.'));
+    const value = Number(item.getAttribute('data-value'));
+    if (prediction === undefined) {
+      error.textContent = `“${input.value.slice(0, 40)}” is not a number. Type a number such as 0.25.`;
+      input.setAttribute('aria-invalid', 'true');
+      input.focus();
+      return;
+    }
+    if (item.getAttribute('data-value') === '' || !Number.isFinite(value)) {
+      error.textContent = `The ${spec.label} is not defined for these parameters; change them and try again.`;
+      return;
+    }
+    error.textContent = '';
+    input.removeAttribute('aria-invalid');
+    const tol = tolerance(opts.tol, value) || tolerance(DEFAULT_TOL, value);
+    const difference = prediction - value;
+    const success = Math.abs(difference) <= tol.abs;
+    for (const node of hidden) node.hidden = false;
+    hidden.length = 0;
+    input.readOnly = true;
+    button.disabled = true;
+    const how = difference === 0 ? 'exactly right'
+      : `${show(Math.abs(difference))}${unit} ${difference > 0 ? 'too high' : 'too low'}`;
+    result.textContent = `You predicted ${show(prediction)}${unit}; the ${spec.label} is ${show(value)}${unit}: ` +
+      `${how}, ${success ? 'within' : 'outside'} the tolerance ${tol.text}${tol.text.endsWith('%') ? '' : unit}.`;
+    result.classList.toggle('ok', success);
+    result.focus();
+    const ctx = io.context();
+    const timestamp = new Date().toISOString();
+    const activity = `${window.location.origin}${window.location.pathname}?demo=${encodeURIComponent(ctx.demo || '')}#predict-${key}`;
+    const statement = {
+      verb: VERB,
+      object: {
+        objectType: 'Activity',
+        id: activity,
+        definition: {
+          type: INTERACTION,
+          interactionType: 'numeric',
+          name: { 'en-US': `Predict the ${spec.label}` },
+          correctResponsesPattern: [`${value - tol.abs}[:]${value + tol.abs}`],
+        },
+      },
+      result: {
+        response: String(prediction),
+        success,
+        extensions: {
+          [`${EXT}value`]: value,
+          [`${EXT}difference`]: difference,
+          [`${EXT}tolerance`]: tol.abs,
+          [`${EXT}unit`]: spec.unit,
+        },
+      },
+      context: { extensions: { [`${EXT}params`]: ctx.params || {}, [`${EXT}state`]: ctx.token || '' } },
+      timestamp,
+    };
+    io.post({
+      type: 'zeta:prediction', readout: key, unit: spec.unit, prediction, value, difference, success,
+      tolerance: tol.abs, demo: ctx.demo, params: ctx.params, token: ctx.token, timestamp, statement,
+    });
+  };
+}
