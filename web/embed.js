@@ -21,6 +21,12 @@ import { notify } from './ui.js';
 import { decodeToken, encodeToken, loaded, tokenInText, tokenNotice, viewQuery } from './state.js';
 import { setupPrediction } from './predict.js';
 import { cancelPendingWrite } from './url.js';
+import { LANG } from './i18n.js';
+
+const FULLSCREEN = {
+  en: ['Full screen', 'Exit full screen'],
+  es: ['Pantalla completa', 'Salir de pantalla completa'],
+};
 
 const MAX_KEYS = 64;
 const THEMES = ['light', 'dark', 'projector'];
@@ -103,7 +109,8 @@ function addFullscreenButton() {
   const button = document.createElement('button');
   button.type = 'button';
   button.className = 'zeta-fullscreen';
-  const label = () => (document.fullscreenElement ? 'Exit full screen' : 'Full screen');
+  const words = FULLSCREEN[LANG] || FULLSCREEN.en;
+  const label = () => words[document.fullscreenElement ? 1 : 0];
   button.textContent = label();
   button.setAttribute('aria-pressed', String(Boolean(document.fullscreenElement)));
   button.addEventListener('click', () => {
