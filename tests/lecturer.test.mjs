@@ -269,10 +269,12 @@ test('the Share dialog authors ranges, readouts, theme, language, a prediction a
     await page.selectOption('#share-lang', 'es');
     await page.selectOption('#share-predict', 'wd');
     await page.uncheck('#share-fullscreen');
+    await page.fill('#share-preset-name', 'Light damping');
+    await page.click('#share-preset-add');
     const link = await page.inputValue('#share-link');
     const snippet = await page.inputValue('#share-snippet');
     const token = await page.inputValue('#share-token');
-    for (const part of ['range.zeta=0%2C0.2', 'step.zeta=0.001', 'theme=projector', 'lang=es', 'predict=wd', 'tol=10%25']) {
+    for (const part of ['presets=Light+damping%3Awn%3D6%2Czeta%3D0.1%2Cx0%3D0.06%2Cv0%3D0', 'range.zeta=0%2C0.2', 'step.zeta=0.001', 'theme=projector', 'lang=es', 'predict=wd', 'tol=10%25']) {
       assert.ok(link.includes(part), `${part} in ${link}`);
     }
     assert.match(snippet, /embed=1.*fullscreen=0/);
@@ -300,6 +302,12 @@ test('the Share dialog authors ranges, readouts, theme, language, a prediction a
     await page.waitForSelector('html[data-ready="true"]');
     assert.equal(await page.getAttribute('input[type=range][data-key="zeta"]', 'max'), '0.2');
     assert.equal(await page.getAttribute('html', 'lang'), 'es');
+    // The lecturer's preset came along in the token; it sets values through the Rust parser.
+    await page.fill('input[type=number][data-key="zeta"]', '0.15');
+    await page.press('input[type=number][data-key="zeta"]', 'Enter');
+    await page.waitForFunction(() => Math.abs(Number(document.querySelector('[data-readout="zeta"]').dataset.value) - 0.15) < 1e-12);
+    await page.click('.lecturer-presets button:has-text("Light damping")');
+    await page.waitForFunction(() => Math.abs(Number(document.querySelector('[data-readout="zeta"]').dataset.value) - 0.1) < 1e-12);
     assert.deepEqual(errors, []);
   } finally {
     await context.close();

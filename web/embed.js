@@ -18,7 +18,7 @@
 // only, and with `origin=` only to that origin. Anything malformed is ignored.
 import { demoList, describeDemo, stampExport } from '../zeta-app.js';
 import { notify } from './ui.js';
-import { decodeToken, encodeToken, loaded, tokenInText, tokenNotice, viewQuery } from './state.js';
+import { decodeToken, encodeToken, loaded, parsePresets, tokenInText, tokenNotice, viewQuery } from './state.js';
 import { setupPrediction } from './predict.js';
 import { cancelPendingWrite } from './url.js';
 import { LANG } from './i18n.js';
@@ -54,6 +54,7 @@ export function embedOptions(search = window.location.search) {
     fullscreen: q.get('fullscreen') !== '0',
     predict: word('predict'),
     tol: q.get('tol'),
+    presets: parsePresets(q.get('presets')),
     origin: q.get('origin'),
   };
 }
@@ -97,9 +98,35 @@ export function applyEmbedView(view, opts) {
     if (opts.plots && !opts.plots.includes(key)) fig.hidden = true;
     else shown.push(key);
   }
+  if (opts.presets && opts.presets.length) addPresets(view, opts.presets);
   if (opts.embed && opts.fullscreen) addFullscreenButton();
   if (opts.predict) setupPrediction(view, opts, { post: (msg) => host.post(msg), context: () => host.context() });
   return shown;
+}
+
+/** The lecturer's presets from the link, as buttons beside the demo's own. */
+function addPresets(view, presets) {
+  const form = view.reset && view.reset.closest('form');
+  if (!form) return;
+  const box = document.createElement('div');
+  box.className = 'presets lecturer-presets';
+  box.setAttribute('role', 'group');
+  box.setAttribute('aria-label', 'Lecturer presets');
+  const title = document.createElement('span');
+  title.className = 'presets-label';
+  title.textContent = 'Lecturer presets';
+  box.append(title);
+  for (const p of presets) {
+    const b = document.createElement('button');
+    b.type = 'button';
+    b.className = 'preset';
+    b.textContent = p.label;
+    b.addEventListener('click', () => host.set(p.values.filter(([k]) => view.controls.has(k))));
+    box.append(b);
+  }
+  const actions = form.querySelector('.form-actions');
+  if (actions) actions.before(box);
+  else form.append(box);
 }
 
 function addFullscreenButton() {
@@ -127,6 +154,7 @@ function addFullscreenButton() {
 /** What the host connection knows of the page once connected (see connectHost). */
 const host = {
   post() {},
+  set() {},
   context() { return {}; },
 };
 
@@ -282,6 +310,7 @@ export function connectHost(opts, handlers) {
     if (note && notices) notify(notices, note, 'warn');
     wireRestore(h);
   }
+  host.set = (entries) => h.set(entries);
   host.context = () => (h.app ? { demo: h.app.demoId, params: h.state().params, token: currentToken(h) } : {});
   if (window.parent === window) return { notify() {} };
   const target = opts.origin && /^https?:\/\/[^/]+$/.test(opts.origin) ? opts.origin : '*';

@@ -1,5 +1,5 @@
 import { t } from './i18n.js';
-import { encodeToken, viewQuery } from './state.js';
+import { encodeToken, formatPresets, parsePresets, viewQuery } from './state.js';
 
 // The "Share / Embed" dialog: builds the link, the <iframe> snippet and the state token for
 // the current view and the chosen options (embed view, sliders shown and locked, plots and
@@ -28,6 +28,7 @@ export function shareUrl(base, demoId, values, opts) {
   if (opts.readouts && opts.allReadouts && opts.readouts.length !== opts.allReadouts.length) q.set('readouts', opts.readouts.join(','));
   if (opts.lang && opts.lang !== 'auto') q.set('lang', opts.lang);
   if (opts.embed && opts.fullscreen === false) q.set('fullscreen', '0');
+  if (opts.presets) q.set('presets', opts.presets);
   if (opts.predict) {
     q.set('predict', opts.predict);
     if (opts.tol) q.set('tol', opts.tol);
@@ -124,6 +125,32 @@ function predictionTask(spec) {
   return { box, readout: () => select.value, tol: () => tol.value.trim() };
 }
 
+// Presets authored in this visit, kept while the page is open: set the sliders, open the
+// dialog, add; change the sliders, open it again, add another.
+let authored = '';
+
+/** Named lecturer presets carried in the link (`presets=`). */
+function presetEditor(values) {
+  const box = el('fieldset', { class: 'share-list share-presets' });
+  box.append(el('legend', {}, 'Lecturer presets (carried in the link)'));
+  const name = el('input', { type: 'text', id: 'share-preset-name', maxlength: '40', placeholder: 'e.g. Light damping' });
+  const add = el('button', { type: 'button', id: 'share-preset-add' }, 'Add the values on screen');
+  const text = el('input', { type: 'text', id: 'share-presets', value: authored, 'aria-describedby': 'share-presets-help' });
+  const help = el('p', { id: 'share-presets-help', class: 'share-help' }, 'Format: name:key=value,key=value; next name:…');
+  add.addEventListener('click', () => {
+    const label = name.value.trim() || `Preset ${parsePresets(text.value).length + 1}`;
+    text.value = formatPresets([...parsePresets(text.value), { label, values: values.map(([k, v]) => [k, String(v)]) }]);
+    name.value = '';
+    text.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+  const row1 = el('div', {});
+  row1.append(el('label', { for: 'share-preset-name' }, 'Name '), name, add);
+  const row2 = el('div', {});
+  row2.append(el('label', { for: 'share-presets' }, 'Presets '), text);
+  box.append(row1, row2, help);
+  return { box, value: () => { authored = text.value.trim(); return formatPresets(parsePresets(authored)); } };
+}
+
 /** Opens the dialog for the current state: {demoId, values, spec}. */
 export function openShareDialog({ demoId, values, spec }) {
   document.getElementById('share-dialog')?.remove();
@@ -162,6 +189,7 @@ export function openShareDialog({ demoId, values, spec }) {
   lists.append(shown.box, locked.box, plots.box, readouts.box);
   const ranges = rangeTable(spec);
   const task = predictionTask(spec);
+  const presets = presetEditor(values);
 
   const link = el('input', { type: 'text', readonly: '', id: 'share-link', 'aria-label': t('link') });
   const copyLink = el('button', { type: 'button' }, t('copy'));
@@ -178,7 +206,7 @@ export function openShareDialog({ demoId, values, spec }) {
   snipRow.append(el('label', { for: 'share-snippet' }, t('embedCode')), snippet, copySnippet);
   const tokenRow = el('div', { class: 'share-row' });
   tokenRow.append(el('label', { for: 'share-token' }, 'State token'), token, copyToken);
-  dialog.append(opts, lists, ranges.box, task.box, linkRow, snipRow, tokenRow, preview, close);
+  dialog.append(opts, lists, ranges.box, task.box, presets.box, linkRow, snipRow, tokenRow, preview, close);
 
   let timer = null;
   const refresh = () => {
@@ -196,6 +224,7 @@ export function openShareDialog({ demoId, values, spec }) {
       steps: ranges.steps(),
       predict: task.readout(),
       tol: task.tol(),
+      presets: presets.value(),
       allParams: spec.params,
       allPlots: spec.plots,
       allReadouts: spec.readouts,

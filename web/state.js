@@ -17,9 +17,37 @@
 export const TOKEN_VERSION = '1';
 /** View options carried by a token, in token order. */
 export const VIEW_KEYS = ['embed', 'controls', 'lock', 'plots', 'readouts', 'theme', 'lang', 'autoplay',
-  'fullscreen', 'predict', 'tol'];
+  'fullscreen', 'predict', 'tol', 'presets'];
 const ANIM_KEYS = ['t', 'play', 'speed'];
 const MAX_TOKEN = 8192;
+
+const MAX_PRESETS = 8;
+
+/**
+ * Lecturer presets from `presets=Light:zeta=0.1,wn=4;Heavy:zeta=2`: [{label, values:
+ * [[key, text]]}]. Labels are plain text (at most 40 characters); values are passed as text
+ * to the Rust parser when the button is pressed. Malformed entries are dropped.
+ */
+export function parsePresets(text) {
+  if (typeof text !== 'string' || !text) return [];
+  const out = [];
+  for (const part of text.split(';').slice(0, MAX_PRESETS)) {
+    const colon = part.lastIndexOf(':');
+    if (colon <= 0) continue;
+    const label = part.slice(0, colon).trim().slice(0, 40);
+    const values = part.slice(colon + 1).split(',')
+      .map((kv) => kv.split('='))
+      .filter((kv) => kv.length === 2 && /^[A-Za-z0-9_]{1,40}$/.test(kv[0].trim()) && kv[1].trim().length <= 40)
+      .map(([k, v]) => [k.trim(), v.trim()]);
+    if (label && values.length) out.push({ label, values });
+  }
+  return out;
+}
+
+/** The `presets=` text of [{label, values}] (the inverse of parsePresets). */
+export function formatPresets(presets) {
+  return presets.map((p) => `${p.label.replace(/[;:]/g, ' ')}:${p.values.map(([k, v]) => `${k}=${v}`).join(',')}`).join(';');
+}
 
 /** Whether `key` is an authoring override (`range.zeta`, `step.zeta`). */
 export function isOverrideKey(key) {
