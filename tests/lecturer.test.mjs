@@ -208,6 +208,7 @@ test('predict, then reveal: keyboard only, announced, and reported to the host a
     const f = h.frame;
     assert.equal(await f.locator('[data-readout="overshoot"]').isHidden(), true);
     assert.equal(await f.locator('figure:has(canvas[data-plot="response"])').isHidden(), true);
+    assert.equal(await f.getAttribute('#plot-announcer', 'aria-live'), 'off', 'plot descriptions are not read out before the reveal');
     const before = await h.page.evaluate(() => window.messages.filter((m) => m.type === 'zeta:resize').length);
     // Keyboard only: Tab from the top of the frame to the prediction box, type, Enter.
     await f.locator('body').evaluate(() => document.activeElement?.blur());
@@ -247,6 +248,7 @@ test('predict, then reveal: keyboard only, announced, and reported to the host a
     assert.equal(await result.getAttribute('role'), 'status');
     assert.match(await result.textContent(), /You predicted 30 %; the .* is [\d.]+ %/);
     assert.equal(await f.evaluate(() => document.activeElement?.id), 'zeta-predict-result');
+    assert.equal(await f.getAttribute('#plot-announcer', 'aria-live'), 'polite');
     // The plots appeared, so the page grew and told the host.
     await h.page.waitForFunction((n) => window.messages.filter((m) => m.type === 'zeta:resize').length > n, before);
     await h.page.screenshot({ path: `${SHOTS}lecturer-host.png` });

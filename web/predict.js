@@ -90,6 +90,11 @@ export function setupPrediction(view, opts, io) {
   };
   for (const canvas of view.canvases.values()) hide(canvas.closest('figure'));
   hide(item);
+  // The page announces each plot's description as it changes: mute that until the reveal,
+  // so a screen reader does not read out the answer first.
+  const live = view.live;
+  const liveWas = live ? live.getAttribute('aria-live') : null;
+  if (live) live.setAttribute('aria-live', 'off');
   const unit = spec.unit ? ` ${spec.unit}` : '';
   const box = el('section', { class: 'zeta-predict', 'aria-labelledby': 'zeta-predict-title' });
   box.append(el('h2', { id: 'zeta-predict-title' }, w('title')));
@@ -138,6 +143,10 @@ export function setupPrediction(view, opts, io) {
     const success = Math.abs(difference) <= tol.abs;
     for (const node of hidden) node.hidden = false;
     hidden.length = 0;
+    if (live) {
+      if (liveWas === null) live.removeAttribute('aria-live');
+      else live.setAttribute('aria-live', liveWas);
+    }
     input.readOnly = true;
     button.disabled = true;
     const d = `${show(Math.abs(difference))}${unit}`;
