@@ -1,5 +1,10 @@
-// Saves a Blob as a file through a temporary object URL.
-export function download(blob, name) {
+// Saves a Blob as a file through a temporary object URL. PNG, SVG and CSV files get the
+// view's state token and the app version written in (see embed.js / export.rs), so that
+// dropping the file back onto the page reopens the same view.
+import { stampExport } from '../zeta-app.js';
+import { tokenNow } from './embed.js';
+
+function save(blob, name) {
   const url = URL.createObjectURL(blob);
   const a = document.createElement('a');
   a.href = url;
@@ -8,4 +13,17 @@ export function download(blob, name) {
   a.click();
   a.remove();
   setTimeout(() => URL.revokeObjectURL(url), 10000);
+}
+
+export function download(blob, name) {
+  const format = /\.(png|svg|csv)$/.exec(name);
+  const token = format && tokenNow();
+  if (!token) {
+    save(blob, name);
+    return;
+  }
+  blob.arrayBuffer().then(
+    (buf) => save(new Blob([stampExport(format[1], new Uint8Array(buf), token)], { type: blob.type }), name),
+    () => save(blob, name),
+  );
 }

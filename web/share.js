@@ -1,7 +1,11 @@
 import { t } from './i18n.js';
+import { encodeToken, formatPresets, parsePresets, viewQuery } from './state.js';
 
-// The "Share / Embed" dialog: builds the link and the <iframe> snippet for the current
-// view and the chosen embed options, with copy buttons and a live preview.
+// The "Share / Embed" dialog: builds the link, the <iframe> snippet and the state token for
+// the current view and the chosen options (embed view, sliders shown and locked, plots and
+// readouts shown, theme, language, per-slider range and step, fullscreen button, a
+// prediction task), with copy buttons and a live preview. Overrides are only written into
+// the link: the page that opens it validates them in Rust (crates/app/src/lecturer.rs).
 
 function el(tag, attrs = {}, text) {
   const node = document.createElement(tag);
@@ -10,7 +14,7 @@ function el(tag, attrs = {}, text) {
   return node;
 }
 
-/** The page URL for a demo, its values and embed options. */
+/** The page URL for a demo, its values and the chosen options. */
 export function shareUrl(base, demoId, values, opts) {
   const q = new URLSearchParams();
   q.set('demo', demoId);
@@ -21,7 +25,23 @@ export function shareUrl(base, demoId, values, opts) {
   if (opts.plots && opts.plots.length !== opts.allPlots.length) q.set('plots', opts.plots.join(','));
   if (opts.autoplay) q.set('autoplay', '1');
   if (opts.theme && opts.theme !== 'auto') q.set('theme', opts.theme);
+  if (opts.readouts && opts.allReadouts && opts.readouts.length !== opts.allReadouts.length) q.set('readouts', opts.readouts.join(','));
+  if (opts.lang && opts.lang !== 'auto') q.set('lang', opts.lang);
+  if (opts.embed && opts.fullscreen === false) q.set('fullscreen', '0');
+  if (opts.presets) q.set('presets', opts.presets);
+  if (opts.predict) {
+    q.set('predict', opts.predict);
+    if (opts.tol) q.set('tol', opts.tol);
+  }
+  for (const [key, lo, hi] of opts.ranges || []) q.set(`range.${key}`, `${lo},${hi}`);
+  for (const [key, step] of opts.steps || []) q.set(`step.${key}`, String(step));
   return `${base}?${q.toString()}`;
+}
+
+/** The state token of a share URL (the same view, as one value). */
+export function shareToken(url, demoId, values) {
+  const search = new URL(url).search;
+  return encodeToken(viewQuery({ demo: demoId, values, search }));
 }
 
 /** The iframe snippet for `url`. */
@@ -59,6 +79,78 @@ function checkboxList(legend, items, checked, group) {
   return { box, selected: () => inputs.filter((i) => i.checked).map((i) => i.value) };
 }
 
+/** Per-slider range and step overrides: a small table of number boxes (empty = declared). */
+function rangeTable(spec) {
+  const box = el('fieldset', { class: 'share-ranges' });
+  box.append(el('legend', {}, 'Slider ranges and steps (leave empty to keep the declared ones)'));
+  const table = el('table', {});
+  const head = el('tr', {});
+  for (const h of ['slider', 'from', 'to', 'step']) head.append(el('th', { scope: 'col' }, h));
+  table.append(head);
+  const rows = [];
+  for (const p of spec.params.filter((p) => p.kind === 'slider')) {
+    const tr = el('tr', {});
+    tr.append(el('th', { scope: 'row' }, `${p.label} (${p.key})`));
+    const cell = (what, placeholder) => {
+      const input = el('input', { type: 'number', id: `share-${what}-${p.key}`, placeholder: String(placeholder), step: 'any',
+        'aria-label': `${p.label}: ${what}` });
+      const td = el('td', {});
+      td.append(input);
+      tr.append(td);
+      return input;
+    };
+    rows.push({ p, lo: cell('min', p.min), hi: cell('max', p.max), step: cell('step', p.step) });
+    table.append(tr);
+  }
+  box.append(table);
+  const filled = (input) => input.value.trim() !== '' && Number.isFinite(Number(input.value));
+  return {
+    box,
+    ranges: () => rows.filter((r) => filled(r.lo) || filled(r.hi))
+      .map((r) => [r.p.key, filled(r.lo) ? Number(r.lo.value) : r.p.min, filled(r.hi) ? Number(r.hi.value) : r.p.max]),
+    steps: () => rows.filter((r) => filled(r.step)).map((r) => [r.p.key, Number(r.step.value)]),
+  };
+}
+
+/** "Predict, then reveal": which readout to predict, and the tolerance. */
+function predictionTask(spec) {
+  const box = el('fieldset', { class: 'share-list' });
+  box.append(el('legend', {}, 'Prediction task'));
+  const select = el('select', { id: 'share-predict' });
+  select.append(el('option', { value: '' }, 'none'));
+  for (const r of spec.readouts) select.append(el('option', { value: r.key }, `${r.label}${r.unit ? ` (${r.unit})` : ''}`));
+  const tol = el('input', { type: 'text', id: 'share-tol', value: '10%', size: '6' });
+  box.append(el('label', { for: 'share-predict' }, 'Students predict '), select,
+    el('label', { for: 'share-tol' }, ' within '), tol);
+  return { box, readout: () => select.value, tol: () => tol.value.trim() };
+}
+
+// Presets authored in this visit, kept while the page is open: set the sliders, open the
+// dialog, add; change the sliders, open it again, add another.
+let authored = '';
+
+/** Named lecturer presets carried in the link (`presets=`). */
+function presetEditor(values) {
+  const box = el('fieldset', { class: 'share-list share-presets' });
+  box.append(el('legend', {}, 'Lecturer presets (carried in the link)'));
+  const name = el('input', { type: 'text', id: 'share-preset-name', maxlength: '40', placeholder: 'e.g. Light damping' });
+  const add = el('button', { type: 'button', id: 'share-preset-add' }, 'Add the values on screen');
+  const text = el('input', { type: 'text', id: 'share-presets', value: authored, 'aria-describedby': 'share-presets-help' });
+  const help = el('p', { id: 'share-presets-help', class: 'share-help' }, 'Format: name:key=value,key=value; next name:…');
+  add.addEventListener('click', () => {
+    const label = name.value.trim() || `Preset ${parsePresets(text.value).length + 1}`;
+    text.value = formatPresets([...parsePresets(text.value), { label, values: values.map(([k, v]) => [k, String(v)]) }]);
+    name.value = '';
+    text.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+  const row1 = el('div', {});
+  row1.append(el('label', { for: 'share-preset-name' }, 'Name '), name, add);
+  const row2 = el('div', {});
+  row2.append(el('label', { for: 'share-presets' }, 'Presets '), text);
+  box.append(row1, row2, help);
+  return { box, value: () => { authored = text.value.trim(); return formatPresets(parsePresets(authored)); } };
+}
+
 /** Opens the dialog for the current state: {demoId, values, spec}. */
 export function openShareDialog({ demoId, values, spec }) {
   document.getElementById('share-dialog')?.remove();
@@ -70,7 +162,11 @@ export function openShareDialog({ demoId, values, spec }) {
   embed.checked = true;
   const autoplay = el('input', { type: 'checkbox', id: 'share-autoplay' });
   const theme = el('select', { id: 'share-theme' });
-  for (const t of ['auto', 'light', 'dark']) theme.append(el('option', { value: t }, t));
+  for (const [v, label] of [['auto', 'auto'], ['light', 'light'], ['dark', 'dark'], ['projector', 'projector (high contrast)']]) theme.append(el('option', { value: v }, label));
+  const lang = el('select', { id: 'share-lang' });
+  for (const [v, label] of [['auto', 'visitor’s language'], ['en', 'English'], ['es', 'Español']]) lang.append(el('option', { value: v }, label));
+  const fullscreen = el('input', { type: 'checkbox', id: 'share-fullscreen' });
+  fullscreen.checked = true;
   const width = el('input', { type: 'number', id: 'share-width', value: '800', min: '320', max: '4000' });
   const height = el('input', { type: 'number', id: 'share-height', value: '720', min: '320', max: '4000' });
   const opts = el('div', { class: 'share-options' });
@@ -79,30 +175,38 @@ export function openShareDialog({ demoId, values, spec }) {
     d.append(input, el('label', { for: input.id }, text));
     return d;
   };
-  opts.append(row(embed, t('embedView')), row(autoplay, t('autoplay')));
+  opts.append(row(embed, t('embedView')), row(autoplay, t('autoplay')), row(fullscreen, ' Full-screen button'));
   const sizes = el('div', { class: 'share-sizes' });
-  sizes.append(el('label', { for: 'share-theme' }, t('theme')), theme,
+  sizes.append(el('label', { for: 'share-theme' }, t('theme')), theme, el('label', { for: 'share-lang' }, ' Language '), lang,
     el('label', { for: 'share-width' }, t('width')), width, el('label', { for: 'share-height' }, t('height')), height);
   opts.append(sizes);
   const params = spec.params.map((p) => [p.key, `${p.label} (${p.key})`]);
   const shown = checkboxList(t('slidersShown'), params, () => true, 'shown');
   const locked = checkboxList(t('slidersLocked'), params, () => false, 'locked');
   const plots = checkboxList(t('plotsShown'), spec.plots.map((p) => [p.key, p.title]), () => true, 'plots');
+  const readouts = checkboxList('Readouts shown', spec.readouts.map((r) => [r.key, r.label]), () => true, 'readouts');
   const lists = el('div', { class: 'share-lists' });
-  lists.append(shown.box, locked.box, plots.box);
+  lists.append(shown.box, locked.box, plots.box, readouts.box);
+  const ranges = rangeTable(spec);
+  const task = predictionTask(spec);
+  const presets = presetEditor(values);
 
   const link = el('input', { type: 'text', readonly: '', id: 'share-link', 'aria-label': t('link') });
   const copyLink = el('button', { type: 'button' }, t('copy'));
   const snippet = el('textarea', { readonly: '', rows: '3', id: 'share-snippet', 'aria-label': t('embedCode') });
   const copySnippet = el('button', { type: 'button' }, t('copy'));
   const preview = el('iframe', { title: t('preview'), sandbox: 'allow-scripts allow-same-origin', class: 'share-preview' });
+  const token = el('input', { type: 'text', readonly: '', id: 'share-token', 'aria-label': 'State token' });
+  const copyToken = el('button', { type: 'button' }, t('copy'));
   const close = el('button', { type: 'button', class: 'share-close' }, t('close'));
 
   const linkRow = el('div', { class: 'share-row' });
   linkRow.append(el('label', { for: 'share-link' }, t('link')), link, copyLink);
   const snipRow = el('div', { class: 'share-row' });
   snipRow.append(el('label', { for: 'share-snippet' }, t('embedCode')), snippet, copySnippet);
-  dialog.append(opts, lists, linkRow, snipRow, preview, close);
+  const tokenRow = el('div', { class: 'share-row' });
+  tokenRow.append(el('label', { for: 'share-token' }, 'State token'), token, copyToken);
+  dialog.append(opts, lists, ranges.box, task.box, presets.box, linkRow, snipRow, tokenRow, preview, close);
 
   let timer = null;
   const refresh = () => {
@@ -113,11 +217,21 @@ export function openShareDialog({ demoId, values, spec }) {
       controls: shown.selected(),
       lock: locked.selected(),
       plots: plots.selected(),
+      readouts: readouts.selected(),
+      lang: lang.value,
+      fullscreen: fullscreen.checked,
+      ranges: ranges.ranges(),
+      steps: ranges.steps(),
+      predict: task.readout(),
+      tol: task.tol(),
+      presets: presets.value(),
       allParams: spec.params,
       allPlots: spec.plots,
+      allReadouts: spec.readouts,
     };
     const url = shareUrl(base, demoId, values, o);
     link.value = shareUrl(base, demoId, values, { ...o, embed: false, controls: null, lock: null, plots: null, allParams: [], allPlots: [] });
+    token.value = shareToken(url, demoId, values);
     snippet.value = iframeSnippet(url, width.value, height.value, spec.title);
     clearTimeout(timer);
     timer = setTimeout(() => { if (preview.getAttribute('src') !== url) preview.src = url; }, 300);
@@ -126,6 +240,7 @@ export function openShareDialog({ demoId, values, spec }) {
   dialog.addEventListener('change', refresh);
   copyLink.addEventListener('click', () => copy(link.value, copyLink));
   copySnippet.addEventListener('click', () => copy(snippet.value, copySnippet));
+  copyToken.addEventListener('click', () => copy(token.value, copyToken));
   close.addEventListener('click', () => dialog.close());
   dialog.addEventListener('close', () => dialog.remove());
   document.body.append(dialog);

@@ -1,8 +1,11 @@
 // URL state: the page's query string is the shareable state of the view.
 // Values are validated by the Rust side (Session.applyQuery); this module only reads and
-// writes the string. Keys that belong to the page rather than to a demo are kept as they are.
+// writes the string. Keys that belong to the page rather than to a demo are kept as they are,
+// and so are the authoring overrides (range.<key>, step.<key>). A `state=` token is expanded
+// into these keys by state.js before the page starts.
+import { VIEW_KEYS, isOverrideKey } from './state.js';
 
-const PAGE_KEYS = ['embed', 'controls', 'lock', 'plots', 'autoplay', 'theme', 'lang'];
+const PAGE_KEYS = [...VIEW_KEYS, 'origin'];
 const WRITE_DELAY_MS = 150;
 
 /** The current query string, including its leading '?'. */
@@ -22,10 +25,17 @@ export function queryFor(demoId, values) {
   q.set('demo', demoId);
   for (const [key, value] of values) q.set(key, String(value));
   for (const key of PAGE_KEYS) if (old.has(key)) q.set(key, old.get(key));
+  for (const key of [...old.keys()].filter(isOverrideKey).sort()) q.set(key, old.get(key));
   return '?' + q.toString();
 }
 
 let pending = null;
+
+/** Drops a URL write still waiting (a whole new state is about to replace the URL). */
+export function cancelPendingWrite() {
+  if (pending !== null) clearTimeout(pending);
+  pending = null;
+}
 
 /** Replaces the URL (no history entry), coalescing bursts of slider moves. */
 export function writeState(demoId, values) {

@@ -151,6 +151,136 @@ pub fn probe(fig: &Figure, geo: &PlotGeometry, px: f64, py: f64) -> Option<Probe
     })
 }
 
+/// The keyword of the PNG `tEXt` chunk, the SVG `<metadata>` id and the CSV comment
+/// that carry a view's state token (see `docs/embedding.md`, "State token").
+pub const STAMP_KEY: &str = "zeta-state";
+
+/// Whether `token` may be written into a file: the state token alphabet only
+/// (base64url, `.`), so it can never break out of a comment, an XML element or a chunk.
+fn token_ok(token: &str) -> bool {
+    !token.is_empty()
+        && token.len() <= 8192
+        && token
+            .bytes()
+            .all(|b| b.is_ascii_alphanumeric() || matches!(b, b'-' | b'_' | b'.'))
+}
+
+/// CRC-32 (IEEE 802.3, reflected polynomial 0xEDB88320) as PNG chunks use it.
+fn crc32(bytes: &[u8]) -> u32 {
+    let mut crc = 0xFFFF_FFFFu32;
+    for &b in bytes {
+        crc ^= u32::from(b);
+        for _ in 0..8 {
+            let mask = (crc & 1).wrapping_neg();
+            crc = (crc >> 1) ^ (0xEDB8_8320 & mask);
+        }
+    }
+    !crc
+}
+
+fn png_text_chunk(keyword: &str, text: &str) -> Vec<u8> {
+    let mut body = b"tEXt".to_vec();
+    body.extend_from_slice(keyword.as_bytes());
+    body.push(0);
+    body.extend_from_slice(text.as_bytes());
+    let len = (body.len() - 4) as u32;
+    let mut out = len.to_be_bytes().to_vec();
+    let crc = crc32(&body);
+    out.extend_from_slice(&body);
+    out.extend_from_slice(&crc.to_be_bytes());
+    out
+}
+
+const PNG_SIGNATURE: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1A, b'\n'];
+
+/// `data` (a PNG, an SVG document or a CSV, by `format`) with `token` and `version`
+/// written in: PNG `tEXt` chunks `zeta-state` and `zeta-version` after `IHDR`, an SVG
+/// `<metadata id="zeta-state" data-version="…">` element, a first CSV line
+/// `# zeta-state: <token> (Zeta Lab <version>)`. Unchanged when the token is not in the
+/// token alphabet, the format is unknown or the PNG has no `IHDR` first.
+pub fn stamp(format: &str, data: &[u8], token: &str, version: &str) -> Vec<u8> {
+    let version: String = version
+        .chars()
+        .filter(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '-' | '+'))
+        .collect();
+    if !token_ok(token) {
+        return data.to_vec();
+    }
+    match format {
+        "png" => {
+            // Signature (8) + IHDR chunk (4 length + 4 type + 13 data + 4 CRC).
+            let ihdr_end = 8 + 25;
+            if data.len() < ihdr_end
+                || data[..8] != PNG_SIGNATURE
+                || data.get(12..16) != Some(b"IHDR".as_slice())
+            {
+                return data.to_vec();
+            }
+            let mut out = data[..ihdr_end].to_vec();
+            out.extend(png_text_chunk(STAMP_KEY, token));
+            out.extend(png_text_chunk("zeta-version", &version));
+            out.extend_from_slice(&data[ihdr_end..]);
+            out
+        }
+        "svg" => {
+            let text = String::from_utf8_lossy(data);
+            let Some(open) = text.find("<svg") else {
+                return data.to_vec();
+            };
+            let Some(end) = text[open..].find('>').map(|e| open + e + 1) else {
+                return data.to_vec();
+            };
+            format!(
+                "{}\n<metadata id=\"{STAMP_KEY}\" data-version=\"{version}\">{token}</metadata>{}",
+                &text[..end],
+                &text[end..]
+            )
+            .into_bytes()
+        }
+        "csv" => {
+            let mut out = format!("# {STAMP_KEY}: {token} (Zeta Lab {version})\n").into_bytes();
+            out.extend_from_slice(data);
+            out
+        }
+        _ => data.to_vec(),
+    }
+}
+
+/// The state token stamped into a PNG, SVG or CSV by [`stamp`], if there is one.
+pub fn read_stamp(data: &[u8]) -> Option<String> {
+    if data.len() >= 8 && data[..8] == PNG_SIGNATURE {
+        let mut at = 8usize;
+        while at + 12 <= data.len() {
+            let len = u32::from_be_bytes(data.get(at..at + 4)?.try_into().ok()?) as usize;
+            let kind = data.get(at + 4..at + 8)?;
+            let body = data.get(at + 8..at.checked_add(8 + len)?)?;
+            if kind == b"tEXt" {
+                if let Some(rest) = body.strip_prefix(STAMP_KEY.as_bytes()) {
+                    if let Some(token) = rest.strip_prefix(&[0u8]) {
+                        let token = std::str::from_utf8(token).ok()?;
+                        return token_ok(token).then(|| token.to_string());
+                    }
+                }
+            }
+            if kind == b"IDAT" || kind == b"IEND" {
+                return None;
+            }
+            at = at.checked_add(12 + len)?;
+        }
+        return None;
+    }
+    let head = String::from_utf8_lossy(&data[..data.len().min(65536)]);
+    let found = if let Some(i) = head.find(&format!("# {STAMP_KEY}: ")) {
+        head[i + STAMP_KEY.len() + 4..].split_whitespace().next()
+    } else if let Some(i) = head.find(&format!("id=\"{STAMP_KEY}\"")) {
+        let rest = &head[i..];
+        rest.find('>').and_then(|s| rest[s + 1..].split('<').next())
+    } else {
+        None
+    };
+    found.filter(|t| token_ok(t)).map(str::to_string)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -216,5 +346,55 @@ mod tests {
     fn svg_is_a_document() {
         let s = svg(&fig(), 400, 300, &Theme::DARK).unwrap();
         assert!(s.starts_with("<svg") && s.contains("time t [s]"));
+    }
+
+    #[test]
+    fn crc32_matches_the_published_check_value() {
+        // The standard check value of CRC-32/ISO-HDLC over "123456789".
+        assert_eq!(super::crc32(b"123456789"), 0xCBF4_3926);
+    }
+
+    #[test]
+    fn stamped_exports_give_their_token_back() {
+        let token = "1.ZGVtbz1yZWdpbWVz";
+        let mut png = PNG_SIGNATURE.to_vec();
+        png.extend(png_text_chunk("x", "y")[..0].iter());
+        // A minimal IHDR (13 data bytes) then IEND.
+        let mut ihdr = b"IHDR".to_vec();
+        ihdr.extend([0, 0, 0, 1, 0, 0, 0, 1, 8, 6, 0, 0, 0]);
+        png.extend(13u32.to_be_bytes());
+        png.extend(&ihdr);
+        png.extend(crc32(&ihdr).to_be_bytes());
+        png.extend([0, 0, 0, 0, b'I', b'E', b'N', b'D', 0xAE, 0x42, 0x60, 0x82]);
+        assert_eq!(read_stamp(&png), None);
+        let stamped = stamp("png", &png, token, "0.1.0");
+        assert_eq!(read_stamp(&stamped).as_deref(), Some(token));
+        assert_eq!(&stamped[stamped.len() - 12..], &png[png.len() - 12..]);
+        let svg = b"<?xml version=\"1.0\"?>\n<svg width=\"10\" height=\"10\"><rect/></svg>";
+        let s = stamp("svg", svg, token, "0.1.0");
+        assert!(String::from_utf8_lossy(&s)
+            .contains("<metadata id=\"zeta-state\" data-version=\"0.1.0\">"));
+        assert_eq!(read_stamp(&s).as_deref(), Some(token));
+        let c = stamp("csv", b"# Zeta Lab\nt,x\n0,1\n", token, "0.1.0");
+        assert!(String::from_utf8_lossy(&c)
+            .starts_with("# zeta-state: 1.ZGVtbz1yZWdpbWVz (Zeta Lab 0.1.0)\n# Zeta Lab"));
+        assert_eq!(read_stamp(&c).as_deref(), Some(token));
+    }
+
+    #[test]
+    fn hostile_tokens_and_files_are_refused() {
+        let svg = b"<svg></svg>";
+        assert_eq!(stamp("svg", svg, "a\"><script>", "1"), svg.to_vec());
+        assert_eq!(
+            stamp("png", b"not a png at all, not at all......", "1.abc", "1"),
+            b"not a png at all, not at all......".to_vec()
+        );
+        for junk in [
+            &b""[..],
+            b"\x89PNG\r\n\x1a\n\xff\xff\xff\xff",
+            b"# zeta-state: <b>",
+        ] {
+            assert_eq!(read_stamp(junk), None);
+        }
     }
 }

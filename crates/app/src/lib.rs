@@ -13,6 +13,7 @@ pub mod export;
 pub mod figure;
 pub mod format;
 pub mod i18n;
+pub mod lecturer;
 pub mod params;
 pub mod plot;
 pub mod render;
