@@ -1,6 +1,7 @@
 // Zeta Lab front end: loads the wasm module, builds the chosen demo from its Rust
 // declaration, and redraws at most once per animation frame while controls move.
 // No physics here: every number comes from the Session (Rust).
+import './state.js'; // first: expands a state= token in the address before anything reads it
 import init, { Session, demoList, setLanguage, takePanicMessage } from '../zeta-app.js';
 import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
 import { fillLiveCells } from './live-table.js';
@@ -43,7 +44,7 @@ const app = {
 function isDark() {
   const forced = new URLSearchParams(window.location.search).get('theme');
   if (forced === 'dark') return true;
-  if (forced === 'light') return false;
+  if (forced === 'light' || forced === 'projector') return false;
   return darkQuery.matches;
 }
 
@@ -72,6 +73,7 @@ function shownValues() {
 function recover() {
   const values = shownValues();
   app.session = new Session(app.demoId);
+  app.session.applyQuery(currentQuery()); // keeps range./step. overrides after a recovery
   for (const [k, v] of values) app.session.set(k, v);
   attachCanvases();
   app.needsRecovery = false;
@@ -295,7 +297,7 @@ function tick(now) {
   if (!app.playing || !app.timeSpan) return;
   if (app.lastTick !== null) {
     const dt = Math.min(0.1, (now - app.lastTick) / 1000);
-    app.time += dt;
+    app.time += dt * (app.speed || 1);
     if (app.time >= app.timeSpan[1]) {
       app.time = app.timeSpan[1];
       setPlaying(false);
@@ -527,7 +529,7 @@ async function main() {
   darkQuery.addEventListener('change', () => requestDraw());
   document.addEventListener('keydown', onKey);
   wireShare();
-  app.host = connectHost(app.embed, { set: setFromHost, state: hostState });
+  app.host = connectHost(app.embed, { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo, isDark });
   document.documentElement.dataset.ready = 'true';
   registerServiceWorker();
 }

@@ -372,7 +372,10 @@ impl Session {
     /// Applies a URL query string (`?demo=…&zeta=0.2`); returns the notices `[{key, message}]`.
     #[wasm_bindgen(js_name = applyQuery)]
     pub fn apply_query(&mut self, query: &str) -> Result<JsValue, JsError> {
-        let (params, mut notices) = resolve_query(&self.spec, query);
+        // Lecturer overrides (`range.<key>=lo,hi`, `step.<key>=…`) narrow the spec first.
+        let mut notices = crate::lecturer::narrow(&mut self.spec, query);
+        let (params, more) = resolve_query(&self.spec, query);
+        notices.extend(more);
         self.params = params;
         for n in &mut notices {
             translate_notice(&self.spec, n);
