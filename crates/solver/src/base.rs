@@ -194,7 +194,7 @@ impl BumpResponse {
     /// Response of `sys` (`a = m` \[kg\], `b = c` \[N·s/m\], `c = k` \[N/m\]) to `bump`.
     /// Errors only when the forcing overflows (e.g. `k·h` beyond 1e308).
     pub fn new(sys: SecondOrder, bump: Bump) -> Result<Self, ModelError> {
-        let (damper, spring) = (sys.b(), sys.c());
+        let (damper, spring) = (sys.damping(), sys.stiffness());
         let h = bump.height;
         let w = bump.omega();
         let fr = -0.5 * spring * h;
@@ -246,7 +246,7 @@ impl BumpResponse {
         let [x, v] = self.state(t);
         let u = self.bump.profile(t);
         let du = self.bump.profile_velocity(t);
-        (self.sys.b() * (du - v) + self.sys.c() * (u - x)) / self.sys.a()
+        (self.sys.damping() * (du - v) + self.sys.stiffness() * (u - x)) / self.sys.inertia()
     }
 
     /// Fills `out[i] = x(t[i])` (pairs beyond the shorter slice are left alone). No allocation.

@@ -130,13 +130,13 @@ pub struct StepResponse {
 impl StepResponse {
     /// Step of height `force` (`F0`, in the unit of `a·x''`) applied to `sys` from `(x0, v0)`.
     pub fn new(sys: SecondOrder, force: f64, x0: f64, v0: f64) -> Self {
-        let particular = if sys.c() == 0.0 {
+        let particular = if sys.stiffness() == 0.0 {
             StepParticular::Drift {
                 alpha: sys.alpha(),
-                accel: force / sys.a(),
+                accel: force / sys.inertia(),
             }
         } else {
-            let xe = force / sys.c();
+            let xe = force / sys.stiffness();
             StepParticular::Equilibrium {
                 xe,
                 rest: FreeResponse::new(sys, xe, 0.0),
@@ -219,7 +219,7 @@ pub struct ImpulseResponse {
 impl ImpulseResponse {
     /// Impulse `impulse` applied to `sys` in state `(x0, v0)` just before `t = 0`.
     pub fn new(sys: SecondOrder, impulse: f64, x0: f64, v0: f64) -> Self {
-        let jump = impulse / sys.a();
+        let jump = impulse / sys.inertia();
         Self {
             free: FreeResponse::new(sys, x0, v0 + jump),
             jump,
@@ -391,7 +391,7 @@ pub struct HarmonicResponse {
 impl HarmonicResponse {
     /// Response of `sys` to `force` from `x(0) = x0`, `x'(0) = v0`.
     pub fn new(sys: SecondOrder, force: HarmonicForce, x0: f64, v0: f64) -> Self {
-        let (a, b, c) = (sys.a(), sys.b(), sys.c());
+        let (a, b, c) = (sys.inertia(), sys.damping(), sys.stiffness());
         let w = force.omega;
         let alpha = sys.alpha();
         let wn2 = sys.omega_n_squared();
@@ -438,7 +438,7 @@ impl HarmonicResponse {
     fn forced_part(&self, t: f64) -> Option<(f64, f64)> {
         let f = self.force.phasor();
         let w = self.force.omega;
-        let a = self.sys.a();
+        let a = self.sys.inertia();
         match self.method {
             Harmonic::Undamped { wn } => {
                 // Responses from rest to cos ωt (y_r) and sin ωt (y_i), in product form.
@@ -501,7 +501,7 @@ impl HarmonicResponse {
     /// Acceleration `x''(t) = (f(t) − b·x' − c·x)/a`, taken from the ODE.
     pub fn acceleration(&self, t: f64) -> f64 {
         let [x, v] = self.state(t);
-        (self.force.at(t) - self.sys.b() * v - self.sys.c() * x) / self.sys.a()
+        (self.force.at(t) - self.sys.damping() * v - self.sys.stiffness() * x) / self.sys.inertia()
     }
 
     /// Fills `out[i] = x(t[i])` (pairs beyond the shorter slice are left alone). No allocation.
@@ -518,7 +518,10 @@ impl HarmonicResponse {
     /// (undamped exact resonance, or `ω = 0` with `c = 0`).
     fn receptance(&self) -> Option<Complex> {
         let w = self.force.omega;
-        let d = Complex::new(self.sys.c() - self.sys.a() * w * w, self.sys.b() * w);
+        let d = Complex::new(
+            self.sys.stiffness() - self.sys.inertia() * w * w,
+            self.sys.damping() * w,
+        );
         (d.re != 0.0 || d.im != 0.0).then(|| d.recip())
     }
 
@@ -591,7 +594,7 @@ impl HarmonicResponse {
         let f = self.force.phasor();
         let w = self.force.omega;
         if let Harmonic::Undamped { wn } = self.method {
-            let k = 1.0 / (self.sys.a() * (w + wn));
+            let k = 1.0 / (self.sys.inertia() * (w + wn));
             let delta = 0.5 * (w - wn);
             let g = if (delta * t).abs() < SINC_LIMIT {
                 t

@@ -4,10 +4,10 @@
 //!
 //! `|H|` is the dynamic amplification of the displacement over its static value `F0/k`;
 //! the phase is the lag of the displacement behind the force. Here the half-power points
-//! are those of `|H|` (displacement); [`crate::SecondOrder::half_power_bandwidth`] is the
+//! are those of `|H|` (displacement); [`crate::SecondOrder::velocity_half_power_bandwidth`] is the
 //! velocity-resonance bandwidth `2ζω_n`, which the two agree on to first order in ζ.
 //! [`half_power_width`] is the two-sided width of the |H| peak (undefined once the lower
-//! point reaches `r = 0`); [`bandwidth`] continues it one-sided, and past `ζ = 1/√2` it is
+//! point reaches `r = 0`); [`displacement_half_power_band`] continues it one-sided, and past `ζ = 1/√2` it is
 //! the −3 dB cut-off of a curve without a peak.
 //!
 //! ```
@@ -158,11 +158,12 @@ pub fn half_power_points(zeta: f64) -> Option<HalfPowerPoints> {
     }
 }
 
-/// Half-power bandwidth as a frequency ratio, `r_upper − r_lower` \[-\], with `r_lower = 0`
-/// when there is no lower point (the band then starts at DC; the value is continuous in ζ).
+/// The displacement's half-power band as a frequency ratio, `r_upper − r_lower` \[-\], with
+/// `r_lower = 0` when there is no lower point (the band then starts at DC; the value is
+/// continuous in ζ, and past `ζ = 1/√2` it is the −3 dB cut-off `r_upper`).
 /// For small ζ it equals `2ζ + 2ζ³ + O(ζ⁴)`, i.e. `1/Q` with relative error ≈ ζ².
 /// `None` for `ζ ≤ 0` or NaN.
-pub fn bandwidth(zeta: f64) -> Option<f64> {
+pub fn displacement_half_power_band(zeta: f64) -> Option<f64> {
     let p = half_power_points(zeta)?;
     Some(p.upper - p.lower.unwrap_or(0.0))
 }
@@ -174,7 +175,7 @@ pub fn bandwidth(zeta: f64) -> Option<f64> {
 /// Defined only while the peak has both half-power points: `0 < ζ < sin(π/8) ≈ 0.3827`.
 /// Above that `|H|` stays above `|H|max/√2` all the way down to `r = 0` (the peak is
 /// one-sided), and above `ζ = 1/√2` there is no peak at all; `None` then, as for `ζ ≤ 0`.
-/// Unlike [`bandwidth`], which continues past `ζ = 0.3827` with `r₁ = 0` (and becomes the
+/// Unlike [`displacement_half_power_band`], which continues past `ζ = 0.3827` with `r₁ = 0` (and becomes the
 /// −3 dB cut-off of a low-pass curve past `1/√2`), this is always a two-sided peak width.
 pub fn half_power_width(zeta: f64) -> Option<f64> {
     let p = half_power_points(zeta)?;
@@ -186,9 +187,9 @@ pub fn half_power_width(zeta: f64) -> Option<f64> {
 
 /// Half-power bandwidth in rad/s, `ω_n·(r_upper − r_lower)`, for a natural frequency
 /// `wn` \[rad/s\]. `None` for `ζ ≤ 0`, or when `wn` is not finite and positive.
-pub fn bandwidth_rad_s(zeta: f64, wn: f64) -> Option<f64> {
+pub fn displacement_half_power_band_rad_s(zeta: f64, wn: f64) -> Option<f64> {
     let wn = positive("natural frequency ω_n", "rad/s", wn).ok()?;
-    bandwidth(zeta).map(|b| b * wn)
+    displacement_half_power_band(zeta).map(|b| b * wn)
 }
 
 /// Quality factor `Q = 1/(2ζ)` \[-\]; `None` for `ζ ≤ 0` or NaN. `Q ≈ 1/bandwidth` for light

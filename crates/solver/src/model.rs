@@ -73,18 +73,21 @@ impl SecondOrder {
         Self::new(l, r, 1.0 / cap)
     }
 
-    /// Inertia coefficient `a` (mass \[kg\] or inductance \[H\]).
-    pub fn a(&self) -> f64 {
+    /// The inertia coefficient `a`, of `y''`: mass m \[kg\] for the quarter car, inductance
+    /// L \[H\] for the RLC loop.
+    pub fn inertia(&self) -> f64 {
         self.a
     }
 
-    /// Damping coefficient `b` (damper rate \[N·s/m\] or resistance \[Ω\]).
-    pub fn b(&self) -> f64 {
+    /// The damping coefficient `b`, of `y'`: damper rate c \[N·s/m\] for the quarter car
+    /// (the `c` of [`SecondOrder::mechanical`]), resistance R \[Ω\] for the RLC loop.
+    pub fn damping(&self) -> f64 {
         self.b
     }
 
-    /// Stiffness coefficient `c` (spring rate \[N/m\] or elastance 1/C \[1/F\]).
-    pub fn c(&self) -> f64 {
+    /// The stiffness coefficient `c`, of `y`: spring rate k \[N/m\] for the quarter car
+    /// (not the damper's `c`), elastance 1/C \[1/F\] for the RLC loop.
+    pub fn stiffness(&self) -> f64 {
         self.c
     }
 
@@ -136,10 +139,12 @@ impl SecondOrder {
         (self.c > 0.0 && self.b > 0.0).then(|| (self.a * self.c).sqrt() / self.b)
     }
 
-    /// Half-power bandwidth `Δω = b/a = 2ζω_n = ω_n/Q` \[rad/s\] of the velocity (current)
-    /// resonance — exact for every ζ > 0: `|V(ω)|²` falls to half its peak at two
-    /// frequencies whose difference is `b/a`. `None` unless `c > 0` and `b > 0`.
-    pub fn half_power_bandwidth(&self) -> Option<f64> {
+    /// Half-power bandwidth `Δω = b/a = 2ζω_n = ω_n/Q` \[rad/s\] of the *velocity* (for the
+    /// RLC loop, *current*) resonance — exact for every ζ > 0: `|V(ω)|²` peaks at `ω_n` and
+    /// falls to half its peak at two frequencies whose difference is `b/a`. Not the width of
+    /// the displacement peak (see [`crate::frf::half_power_width`]). `None` unless `c > 0`
+    /// and `b > 0`.
+    pub fn velocity_half_power_bandwidth(&self) -> Option<f64> {
         (self.c > 0.0 && self.b > 0.0).then(|| self.b / self.a)
     }
 
@@ -232,7 +237,11 @@ mod tests {
         assert!(close(s.critical_damping().unwrap(), 10.0, 1e-14));
         assert!(close(s.damping_ratio().unwrap(), 0.4, 1e-14));
         assert!(close(s.quality_factor().unwrap(), 1.25, 1e-14));
-        assert!(close(s.half_power_bandwidth().unwrap(), 8.0, 1e-14));
+        assert!(close(
+            s.velocity_half_power_bandwidth().unwrap(),
+            8.0,
+            1e-14
+        ));
         assert!(close(s.alpha(), 4.0, 1e-15));
     }
 
@@ -241,8 +250,11 @@ mod tests {
         let mech = SecondOrder::mechanical(2.0, 3.0, 50.0).unwrap();
         let (l, r, cap) = mech.as_electrical().unwrap();
         let elec = SecondOrder::electrical(l, r, cap).unwrap();
-        assert!(close(elec.c(), mech.c(), 1e-15));
-        assert_eq!((elec.a(), elec.b()), (mech.a(), mech.b()));
+        assert!(close(elec.stiffness(), mech.stiffness(), 1e-15));
+        assert_eq!(
+            (elec.inertia(), elec.damping()),
+            (mech.inertia(), mech.damping())
+        );
     }
 
     #[test]

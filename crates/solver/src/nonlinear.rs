@@ -79,7 +79,7 @@ impl Default for NonlinearConfig {
     }
 }
 
-/// A validated nonlinear quarter car; integrates as a [`System<2>`] on `[x, x']`.
+/// A validated nonlinear quarter car; integrates as a [`System<2>`](crate::integrate::System) on `[x, x']`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct NonlinearModel {
     cfg: NonlinearConfig,

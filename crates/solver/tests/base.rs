@@ -26,7 +26,7 @@ fn transmissibility_equals_the_base_driven_steady_state() {
         let wn = sys.natural_frequency().unwrap();
         for &r in &[0.2, 0.9, 1.0, 1.3, std::f64::consts::SQRT_2, 4.0] {
             let w = r * wn;
-            let (fr, fi) = (K, sys.b() * w);
+            let (fr, fi) = (K, sys.damping() * w);
             let f = HarmonicForce::with_phase(fr.hypot(fi), w, fi.atan2(fr)).unwrap();
             let ss = HarmonicResponse::new(sys, f, 0.0, 0.0)
                 .steady_state()
@@ -87,7 +87,7 @@ fn acceleration_transmissibility_grows_like_two_zeta_r() {
 
 /// Classic RK4 on `m x'' = c(u' − x') + k(u − x)`, `n` steps from 0 to `t_end`.
 fn rk4(sys: SecondOrder, bump: Bump, t_end: f64, n: usize) -> [f64; 2] {
-    let (m, c, k) = (sys.a(), sys.b(), sys.c());
+    let (m, c, k) = (sys.inertia(), sys.damping(), sys.stiffness());
     let f = |t: f64, y: [f64; 2]| {
         let (u, du) = (bump.profile(t), bump.profile_velocity(t));
         [y[1], (c * (du - y[1]) + k * (u - y[0])) / m]
@@ -151,7 +151,7 @@ fn bump_response_satisfies_the_ode() {
                 / (h * h);
             let (x, v) = (ride.displacement(t), ride.velocity(t));
             let (u, du) = (bump.profile(t), bump.profile_velocity(t));
-            let terms = [M * acc, sys.b() * (v - du), K * (x - u)];
+            let terms = [M * acc, sys.damping() * (v - du), K * (x - u)];
             let scale: f64 = terms.iter().map(|v| v.abs()).sum();
             assert!(
                 terms.iter().sum::<f64>().abs() < 1e-6 * scale,
@@ -220,7 +220,7 @@ fn short_sharp_bump_acts_like_an_impulse() {
     for &zeta in &[0.1, 0.5] {
         let sys = car(zeta);
         let a = bump.area();
-        let cm = sys.b() / M;
+        let cm = sys.damping() / M;
         let kick = FreeResponse::new(sys, cm * a, (K / M - cm * cm) * a);
         let ride = BumpResponse::new(sys, bump).unwrap();
         let amp = (K * a / M) / wn;

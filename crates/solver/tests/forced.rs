@@ -31,7 +31,7 @@ fn residuals(
     let (xm, x0, xp) = (x(t - h), x(t), x(t + h));
     let acc = (xp - 2.0 * x0 + xm) / (h * h);
     let vel = (xp - xm) / (2.0 * h);
-    let (a, b, c) = (sys.a(), sys.b(), sys.c());
+    let (a, b, c) = (sys.inertia(), sys.damping(), sys.stiffness());
     let terms = (a * acc).abs() + (b * vel).abs() + (c * x0).abs() + f(t).abs();
     let m = x0.abs().max(vel.abs() / scale).max(size);
     let noise = 4.0 * f64::EPSILON * (10.0 + scale * t) * a * m / (h * h);
@@ -78,7 +78,9 @@ fn step_response_satisfies_ode_and_initial_conditions() {
             );
             assert!(ode <= 1.0 && vel < 1e-7, "{sys:?} t={t}: {ode:e} {vel:e}");
             // The analytic acceleration agrees with the ODE.
-            let acc = (1500.0 - sys.b() * r.velocity(t) - sys.c() * r.displacement(t)) / sys.a();
+            let acc =
+                (1500.0 - sys.damping() * r.velocity(t) - sys.stiffness() * r.displacement(t))
+                    / sys.inertia();
             assert!(
                 (r.acceleration(t) - acc).abs() <= 1e-10 * (1.0 + acc.abs()),
                 "{sys:?} t={t}"
@@ -108,7 +110,7 @@ fn impulse_response_is_step_derivative_times_impulse_over_force() {
         let (f0, imp) = (800.0, 12.0);
         let step = StepResponse::new(sys, f0, 0.0, 0.0);
         let kick = ImpulseResponse::new(sys, imp, 0.0, 0.0);
-        assert_eq!(kick.velocity_jump(), imp / sys.a());
+        assert_eq!(kick.velocity_jump(), imp / sys.inertia());
         for &t in &[0.0, 0.1, 0.5, 1.7] {
             let want = step.velocity(t) * imp / f0;
             let tol = 1e-12 * (1.0 + want.abs()) + 1e-15 * kick.velocity_jump().abs();
@@ -132,7 +134,7 @@ fn impulse_from_a_moving_state_adds_the_jump() {
 /// undamped and lightly damped forms (see the module doc of `forced`).
 fn particular_size(sys: SecondOrder, r: &HarmonicResponse) -> f64 {
     let alpha = sys.alpha();
-    if sys.c() > 0.0 && 2.0 * alpha * alpha < sys.omega_n_squared() {
+    if sys.stiffness() > 0.0 && 2.0 * alpha * alpha < sys.omega_n_squared() {
         0.0
     } else {
         r.steady_state().map_or(0.0, |s| s.amplitude)

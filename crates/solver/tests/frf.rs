@@ -124,15 +124,17 @@ fn half_power_points_sit_three_db_below_the_peak() {
 #[test]
 fn bandwidth_is_continuous_where_the_lower_point_disappears() {
     let s = (PI / 8.0).sin();
-    let below = frf::bandwidth(s - 1e-9).unwrap();
-    let above = frf::bandwidth(s + 1e-9).unwrap();
+    let below = frf::displacement_half_power_band(s - 1e-9).unwrap();
+    let above = frf::displacement_half_power_band(s + 1e-9).unwrap();
     // d(bw)/dζ is finite away from the lower point's √ branch; 1e-4 covers the √(Δζ) term.
     assert!((below - above).abs() < 1e-4, "{below} {above}");
     assert!(
-        (frf::bandwidth_rad_s(0.05, 8.0).unwrap() - 8.0 * frf::bandwidth(0.05).unwrap()).abs()
+        (frf::displacement_half_power_band_rad_s(0.05, 8.0).unwrap()
+            - 8.0 * frf::displacement_half_power_band(0.05).unwrap())
+        .abs()
             < 1e-15
     );
-    assert!(frf::bandwidth_rad_s(0.05, -1.0).is_none());
+    assert!(frf::displacement_half_power_band_rad_s(0.05, -1.0).is_none());
 }
 
 #[test]
@@ -141,7 +143,7 @@ fn bandwidth_approximates_inverse_q_with_error_of_order_zeta_squared() {
     // 1/Q is ζ²·(1 + O(ζ)): the ratio below tends to 1 (1.0365 at ζ = 0.1, 1.00035 at 0.01).
     let mut prev = f64::INFINITY;
     for &z in &[0.1, 0.03, 0.01, 0.003, 0.001] {
-        let bw = frf::bandwidth(z).unwrap();
+        let bw = frf::displacement_half_power_band(z).unwrap();
         let inv_q = 1.0 / frf::quality_factor(z).unwrap();
         let rel = (bw - inv_q) / inv_q;
         let ratio = rel / (z * z);
@@ -259,7 +261,7 @@ fn half_power_width_is_two_sided_and_undefined_without_a_lower_point() {
             );
         }
         // Where both points exist it agrees with the continued `bandwidth`.
-        assert!((w - frf::bandwidth(z).unwrap()).abs() < 1e-15);
+        assert!((w - frf::displacement_half_power_band(z).unwrap()).abs() < 1e-15);
     }
     // One-sided peak (0.3827 < ζ < 1/√2), no peak (ζ ≥ 1/√2), no steady state (ζ ≤ 0).
     for z in [

@@ -138,7 +138,7 @@ impl Sample {
 /// Exact forced response from rest (see [`Sample::Forced`]).
 fn forced_exact(sys: SecondOrder, t: f64) -> [f64; 2] {
     let wn2 = sys.omega_n_squared();
-    let x = Complex::real(F0) / Complex::new(wn2 - OMEGA_F * OMEGA_F, sys.b() * OMEGA_F);
+    let x = Complex::real(F0) / Complex::new(wn2 - OMEGA_F * OMEGA_F, sys.damping() * OMEGA_F);
     let rot = Complex::new((OMEGA_F * t).cos(), (OMEGA_F * t).sin());
     let xp = x * rot;
     let vp = x * Complex::new(0.0, OMEGA_F) * rot;
@@ -188,7 +188,7 @@ fn forced_exact_solution_satisfies_the_ode() {
     for &t in &[0.3, 1.7, 3.9] {
         let [x, v] = forced_exact(sys, t);
         let acc = (forced_exact(sys, t + d)[1] - forced_exact(sys, t - d)[1]) / (2.0 * d);
-        let res = acc + sys.b() * v + sys.c() * x - cos_force(t);
+        let res = acc + sys.damping() * v + sys.stiffness() * x - cos_force(t);
         assert!(res.abs() < 1e-8, "t={t}: residual {res}");
     }
     assert_eq!(

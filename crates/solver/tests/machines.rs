@@ -16,7 +16,7 @@ fn close(got: f64, want: f64, rel: f64) -> bool {
 }
 
 fn coefficients(sys: SecondOrder) -> (f64, f64, f64) {
-    (sys.a(), sys.b(), sys.c())
+    (sys.inertia(), sys.damping(), sys.stiffness())
 }
 
 fn assert_coefficients(name: &str, sys: SecondOrder, want: (f64, f64, f64)) {

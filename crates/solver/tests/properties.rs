@@ -22,8 +22,8 @@ proptest! {
         let wn = sys.natural_frequency().unwrap();
         let t = f * 5.0 / wn;
         let (x, v, a) = (r.displacement(t), r.velocity(t), r.acceleration(t));
-        let scale = a.abs().max(sys.b().abs() * v.abs()).max(sys.c() * x.abs()).max(1e-300);
-        prop_assert!((a + sys.b() * v + sys.c() * x).abs() / scale < 1e-9);
+        let scale = a.abs().max(sys.damping().abs() * v.abs()).max(sys.stiffness() * x.abs()).max(1e-300);
+        prop_assert!((a + sys.damping() * v + sys.stiffness() * x).abs() / scale < 1e-9);
     }
 
     /// x(0) = x0 and x'(0) = v0 exactly.
@@ -90,7 +90,7 @@ proptest! {
         let mech = SecondOrder::mechanical(m, c, k).unwrap();
         let (l, r, cap) = mech.as_electrical().unwrap();
         let elec = SecondOrder::electrical(l, r, cap).unwrap();
-        prop_assert!((elec.c() - k).abs() <= 1e-14 * k);
+        prop_assert!((elec.stiffness() - k).abs() <= 1e-14 * k);
         prop_assert!((elec.damping_ratio().unwrap() - mech.damping_ratio().unwrap()).abs() <= 1e-14 * (1.0 + mech.damping_ratio().unwrap()));
         prop_assert!((elec.natural_frequency().unwrap() - mech.natural_frequency().unwrap()).abs() <= 1e-14 * mech.natural_frequency().unwrap());
     }

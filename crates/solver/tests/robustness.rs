@@ -53,7 +53,7 @@ proptest! {
     #[test]
     fn frequency_response_answers_any_ratio(r in wild(), zeta in wild()) {
         let _ = (frf::magnitude(r, zeta), frf::magnitude_db(r, zeta), frf::phase(r, zeta));
-        let _ = (frf::peak(zeta), frf::half_power_points(zeta), frf::bandwidth(zeta));
+        let _ = (frf::peak(zeta), frf::half_power_points(zeta), frf::displacement_half_power_band(zeta));
         let _ = frf::logspace(r, zeta, 16);
     }
 

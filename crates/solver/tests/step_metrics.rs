@@ -28,7 +28,7 @@ fn exact_metrics_of_the_issue_example_match_independent_root_finding() {
     // 2 % settling 0.6684493078432521 s, peak time π/ω_d = 0.49183540809314547 s,
     // overshoot 100·exp(−πζ/√(1−ζ²)) = 4.598791026026775 %.
     let sys = SecondOrder::from_natural(80f64.sqrt(), 0.7).unwrap();
-    let info = StepInfo::exact(&sys, sys.c(), &StepConfig::default()).unwrap();
+    let info = StepInfo::exact(&sys, sys.stiffness(), &StepConfig::default()).unwrap();
     assert!(rel(info.rise_time.unwrap(), 0.237_716_595_727_928_55) < 1e-12);
     assert!(rel(info.settling_time.unwrap(), 0.668_449_307_843_252_1) < 1e-12);
     assert!(rel(info.peak_time.unwrap(), 0.491_835_408_093_145_47) < 1e-13);
@@ -61,7 +61,7 @@ fn data_path_reproduces_python_control_on_its_default_grid() {
     assert!((info.peak - 1.045_983_858_656_291_5).abs() < 1e-12);
     // The exact values differ from the grid ones by up to dt/3: the issue's rise time is
     // 1.5 % short of the true 0.23772 s.
-    let exact = StepInfo::exact(&sys, sys.c(), &StepConfig::default()).unwrap();
+    let exact = StepInfo::exact(&sys, sys.stiffness(), &StepConfig::default()).unwrap();
     assert!((exact.rise_time.unwrap() - info.rise_time.unwrap()).abs() > 3e-3);
     assert!((exact.peak_time.unwrap() - info.peak_time.unwrap()).abs() < 0.011_144_451_818_406_302);
 }
@@ -100,7 +100,7 @@ fn data_path_converges_to_the_exact_path_on_fine_grids() {
     let cfg = StepConfig::default();
     for &zeta in &[0.1, 0.45, 0.7, 0.9, 1.0, 1.2, 2.5] {
         let sys = SecondOrder::from_natural(3.0, zeta).unwrap();
-        let exact = StepInfo::exact(&sys, sys.c(), &cfg).unwrap();
+        let exact = StepInfo::exact(&sys, sys.stiffness(), &cfg).unwrap();
         let dt = 1e-4;
         let t = linspace(0.0, 60.0, 600_001);
         let y = sampled_step(sys, 1.0, &t);

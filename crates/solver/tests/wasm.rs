@@ -26,11 +26,11 @@ fn free_response_satisfies_the_ode_across_regimes() {
         let r = FreeResponse::new(sys, 0.06, 0.1);
         for t in [0.0, 0.05, 0.4, 1.7] {
             let (x, v, a) = (r.displacement(t), r.velocity(t), r.acceleration(t));
-            let res = a + sys.b() * v + sys.c() * x;
+            let res = a + sys.damping() * v + sys.stiffness() * x;
             let scale = a
                 .abs()
-                .max(sys.b().abs() * v.abs())
-                .max(sys.c() * x.abs())
+                .max(sys.damping().abs() * v.abs())
+                .max(sys.stiffness() * x.abs())
                 .max(1e-300);
             assert!(res.abs() / scale < 1e-12, "ζ={zeta} t={t}");
         }

@@ -185,7 +185,7 @@ fn metrics(cfg: &McConfig, values: [f64; 3]) -> Option<[f64; 6]> {
         sys.natural_frequency().unwrap_or(nan),
         sys.natural_frequency_hz().unwrap_or(nan),
         sys.quality_factor().unwrap_or(nan),
-        sys.half_power_bandwidth().unwrap_or(nan),
+        sys.velocity_half_power_bandwidth().unwrap_or(nan),
         ts,
     ])
 }

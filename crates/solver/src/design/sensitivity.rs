@@ -127,7 +127,7 @@ impl Quantity {
             Quantity::NaturalFrequency => sys.natural_frequency(),
             Quantity::NaturalFrequencyHz => sys.natural_frequency_hz(),
             Quantity::QualityFactor => sys.quality_factor(),
-            Quantity::Bandwidth => sys.half_power_bandwidth(),
+            Quantity::Bandwidth => sys.velocity_half_power_bandwidth(),
         }
     }
 

@@ -181,8 +181,8 @@ pub(crate) fn euler_pole_limit(lambda: Complex) -> StepLimit {
 /// `[[1 − h²k, h(1 − hd)], [−hk, 1 − hd]]`. Its determinant is `1 − hd` (area-preserving
 /// when undamped).
 pub fn symplectic_euler_matrix(sys: &SecondOrder, h: f64) -> [[f64; 2]; 2] {
-    let k = sys.c() / sys.a();
-    let d = sys.b() / sys.a();
+    let k = sys.stiffness() / sys.inertia();
+    let d = sys.damping() / sys.inertia();
     [[1.0 - h * h * k, h * (1.0 - h * d)], [-h * k, 1.0 - h * d]]
 }
 
@@ -209,14 +209,14 @@ pub fn symplectic_euler_spectral_radius(sys: &SecondOrder, h: f64) -> f64 {
 /// for [`Amplification::pole_step_limit`] in units of `1/s` with
 /// `s = max(√|c/a|, |b/a|)`. Undamped: `h_max = 2/ω_n` exactly.
 pub fn symplectic_euler_step_limit(sys: &SecondOrder) -> StepLimit {
-    if sys.b() < 0.0 || sys.c() < 0.0 {
+    if sys.damping() < 0.0 || sys.stiffness() < 0.0 {
         return StepLimit::NoStableStep;
     }
     let scale = sys
         .omega_n_squared()
         .abs()
         .sqrt()
-        .max((sys.b() / sys.a()).abs());
+        .max((sys.damping() / sys.inertia()).abs());
     if scale == 0.0 {
         // x'' = 0: x grows linearly for any method; no step keeps it bounded.
         return StepLimit::NoStableStep;
@@ -357,7 +357,7 @@ pub fn convergence_study<E>(
 /// Mechanical energy `E = ½a·v² + ½c·x²` of the oscillator at state `[x, v]` (kinetic plus
 /// potential: J for the quarter car with `x` in m).
 pub fn oscillator_energy(sys: &SecondOrder, state: [f64; 2]) -> f64 {
-    0.5 * sys.a() * state[1] * state[1] + 0.5 * sys.c() * state[0] * state[0]
+    0.5 * sys.inertia() * state[1] * state[1] + 0.5 * sys.stiffness() * state[0] * state[0]
 }
 
 /// How far the energy wandered from its initial value over a run.

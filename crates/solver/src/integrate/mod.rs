@@ -110,7 +110,7 @@ impl<F: Fn(f64) -> f64> Linear2<F> {
     pub fn new(sys: SecondOrder, force: F) -> Self {
         Self {
             sys,
-            inv_a: 1.0 / sys.a(),
+            inv_a: 1.0 / sys.inertia(),
             force,
         }
     }
@@ -131,13 +131,17 @@ impl Linear2<fn(f64) -> f64> {
 impl<F: Fn(f64) -> f64> System<2> for Linear2<F> {
     fn rhs(&self, t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
         dy[0] = y[1];
-        dy[1] = ((self.force)(t) - self.sys.b() * y[1] - self.sys.c() * y[0]) * self.inv_a;
+        dy[1] = ((self.force)(t) - self.sys.damping() * y[1] - self.sys.stiffness() * y[0])
+            * self.inv_a;
     }
 
     fn jacobian(&self, _t: f64, _y: &[f64; 2], jac: &mut [[f64; 2]; 2]) {
         *jac = [
             [0.0, 1.0],
-            [-self.sys.c() * self.inv_a, -self.sys.b() * self.inv_a],
+            [
+                -self.sys.stiffness() * self.inv_a,
+                -self.sys.damping() * self.inv_a,
+            ],
         ];
     }
 }

@@ -30,7 +30,7 @@
 //! use zeta_solver::SecondOrder;
 //! let sys = SecondOrder::from_natural(80f64.sqrt(), 0.7).unwrap();
 //! // Unit DC gain: a force of c = ω_n² gives y_ss = 1.
-//! let info = StepInfo::exact(&sys, sys.c(), &StepConfig::default()).unwrap();
+//! let info = StepInfo::exact(&sys, sys.stiffness(), &StepConfig::default()).unwrap();
 //! assert!((info.overshoot_percent - 4.598_791_026).abs() < 1e-8);
 //! assert!((info.peak_time.unwrap() - 0.491_835_408).abs() < 1e-8);
 //! ```
@@ -126,7 +126,7 @@ impl StepInfo {
         if !force.is_finite() || force == 0.0 {
             return None;
         }
-        let y_ss = force / sys.c();
+        let y_ss = force / sys.stiffness();
         let shape = FreeShape::new(sys, 1.0, 0.0)?;
         let settling = shape.settle(config.settling_band)?.time;
         let z = FreeResponse::new(*sys, 1.0, 0.0);

@@ -167,7 +167,7 @@ impl Model for Analogy {
                     Some(r.mech.as_mechanical().2)
                 }),
                 ReadoutDef::number("elastance", "elastance 1/C (≙ k)", "1/F", 4, |r| {
-                    Some(r.elec.c())
+                    Some(r.elec.stiffness())
                 }),
                 ReadoutDef::number("compliance", "compliance 1/k (≙ C)", "m/N", 4, |r| {
                     Some(1.0 / r.mech.as_mechanical().2)

@@ -2,7 +2,7 @@
 //! damper, Coulomb friction and bump stops, integrated with RK4 and drawn against the
 //! linear model from the same initial state (all maths in [`zeta_solver::nonlinear`]).
 //!
-//! Cost per update is bounded: [`STEPS`] RK4 steps. Coulomb friction sticks and slips: the
+//! Cost per update is bounded: `STEPS` RK4 steps. Coulomb friction sticks and slips: the
 //! solver switches between a kinetic force `F_c` while sliding and a static force
 //! `F_static = ratio·F_c` that holds the mass once it stops.
 

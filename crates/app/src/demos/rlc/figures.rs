@@ -97,7 +97,7 @@ pub(super) fn signal(r: &Results, signal: Signal) -> Figure {
     }
     if let (Some(crit), false) = (r.critical, r.sys.regime() == Regime::CriticallyDamped) {
         fig = fig.with_line(
-            format!("critical R = {}", text::ohms(crit.b())),
+            format!("critical R = {}", text::ohms(crit.damping())),
             sample(r, crit, signal),
             LineStyle::dashed(Ink::Vermillion, 2.0),
         );

@@ -167,7 +167,7 @@ impl Model for Rlc {
                     "current-resonance half-power bandwidth Δω = R/L",
                     "rad/s",
                     4,
-                    |r| r.sys.half_power_bandwidth(),
+                    |r| r.sys.velocity_half_power_bandwidth(),
                 ),
                 ReadoutDef::number("R_crit", "critical resistance 2√(L/C)", "Ω", 4, |r| {
                     r.sys.critical_damping()

@@ -222,7 +222,7 @@ fn resolve(p: &P) -> Option<Resolved> {
 /// `(value, text)` of coefficient `i` (0: a, 1: b, 2: c) of machine `slot`, in its units.
 fn coefficient(r: &Results, slot: usize, i: usize) -> Option<(f64, String)> {
     let one = &r.m[slot];
-    let v = [one.sys.a(), one.sys.b(), one.sys.c()][i];
+    let v = [one.sys.inertia(), one.sys.damping(), one.sys.stiffness()][i];
     Some((v, text::amount(v, machine::units(one.kind)[i])))
 }
 
