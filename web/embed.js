@@ -43,10 +43,28 @@ export function applyEmbedView(view, opts) {
     }
   }
   const shown = [];
-  for (const [key, canvas] of view.canvases) {
-    const fig = canvas.closest('figure');
-    if (opts.plots && !opts.plots.includes(key)) fig.hidden = true;
-    else shown.push(key);
+  for (const [key, fig] of view.figures) {
+    const option = [...view.picker.options].find((o) => o.value === key);
+    if (opts.plots && !opts.plots.includes(key)) {
+      fig.hidden = true;
+      option.hidden = true;
+      option.disabled = true;
+    } else {
+      shown.push(key);
+    }
+  }
+  // The requested plots first, in the order asked: the first on the stage.
+  if (opts.plots && shown.length) {
+    const asked = opts.plots.filter((k) => shown.includes(k));
+    view.order = [...asked, ...view.order.filter((k) => !asked.includes(k))];
+    view.stagePlot(asked[0]);
+  } else {
+    view.stagePlot(view.staged);
+  }
+  // A lecturer who chose the sliders gets a compact view: presets would set the others.
+  if (opts.embed && opts.controls) {
+    for (const { button } of view.presets) button.closest('.presets').hidden = true;
+    document.documentElement.dataset.compact = '1';
   }
   return shown;
 }

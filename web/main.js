@@ -35,6 +35,8 @@ const app = {
   changed: true,
   firstDrawn: false,
   sound: createSonifier(),
+  dragging: false,
+  layoutDirty: true,
 };
 
 function isDark() {
@@ -91,7 +93,31 @@ function fit(canvas, key, dpr) {
   }
 }
 
+/**
+ * Caps the staged plot's height so the whole stage (picker, plot, readouts) fits in the
+ * window beside the controls (wide screens) or in the top 45 % above them (narrow), and
+ * leaves room below the controls for the stage to stay stuck while the last one is used.
+ */
+function layoutStage() {
+  app.layoutDirty = false;
+  const view = app.view;
+  const canvas = view.canvases.get(view.staged);
+  for (const c of view.canvases.values()) if (c !== canvas) c.style.maxHeight = '';
+  if (!canvas) return;
+  const vh = window.innerHeight;
+  const wide = getComputedStyle(view.workspace).getPropertyValue('--layout').trim() === 'wide';
+  const anchor = wide ? view.workspace : view.stage.previousElementSibling;
+  const box = anchor.getBoundingClientRect();
+  const top = (wide ? box.top : box.bottom) + window.scrollY;
+  const margin = 12;
+  const room = wide ? vh - Math.max(top, margin) - margin : Math.min(0.45 * vh, vh - top - margin);
+  const extra = view.stage.offsetHeight - canvas.offsetHeight;
+  canvas.style.maxHeight = `${Math.max(120, Math.floor(room - extra))}px`;
+  view.workspace.style.setProperty('--stage-h', `${view.stage.offsetHeight}px`);
+}
+
 function sizeCanvases() {
+  if (app.layoutDirty) layoutStage();
   const dpr = window.devicePixelRatio || 1;
   for (const [key, canvas] of app.view.canvases) {
     fit(canvas, key, dpr);
@@ -219,6 +245,28 @@ function setParam(control, raw) {
   syncUrl();
 }
 
+/** Axes hold still while a control is held (pointer or arrow keys); they refit on release. */
+function setDragging(on) {
+  if (app.dragging === on) return;
+  app.dragging = on;
+  try {
+    app.session.setDragging(on);
+  } catch (err) {
+    reportFailure(err);
+  }
+  if (!on) requestDraw();
+}
+
+const STEP_KEYS = new Set(['ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown', 'PageUp', 'PageDown', 'Home', 'End']);
+
+function wireDrag(range) {
+  range.addEventListener('pointerdown', () => setDragging(true));
+  range.addEventListener('keydown', (ev) => {
+    if (STEP_KEYS.has(ev.key)) setDragging(true);
+  });
+  range.addEventListener('blur', () => setDragging(false));
+}
+
 function wireControls() {
   for (const control of app.view.controls.values()) {
     const kind = control.param.kind;
@@ -233,8 +281,13 @@ function wireControls() {
         setParam(control, String(value));
       });
       control.number.addEventListener('change', () => setParam(control, control.number.value));
+      wireDrag(control.range);
     }
   }
+  app.view.picker.addEventListener('change', () => {
+    app.layoutDirty = true;
+    requestDraw();
+  });
   app.view.reset.addEventListener('click', () => {
     app.session.reset();
     showAllValues();
@@ -425,6 +478,8 @@ function openDemo(id, query) {
   app.view.shownPlots = applyEmbedView(app.view, app.embed);
   app.time = 0;
   app.changed = true;
+  app.dragging = false;
+  app.layoutDirty = true;
   document.title = `${spec.title} — Zeta Lab`;
   attachCanvases();
   wireControls();
@@ -516,7 +571,19 @@ async function main() {
     notify(app.notices, t('noDemo', { id: wanted.slice(0, 40), fallback: DEFAULT_DEMO }), 'warn');
   }
   openDemo(known ? wanted : DEFAULT_DEMO, known ? currentQuery() : null);
-  new ResizeObserver(() => requestDraw()).observe(app.root);
+  new ResizeObserver(() => {
+    app.layoutDirty = true;
+    requestDraw();
+  }).observe(app.root);
+  // A printout carries the explanation even when it is folded on screen.
+  window.addEventListener('beforeprint', () => {
+    for (const d of document.querySelectorAll('details')) d.open = true;
+  });
+  window.addEventListener('resize', () => {
+    app.layoutDirty = true;
+    requestDraw();
+  });
+  for (const type of ['pointerup', 'pointercancel', 'keyup']) window.addEventListener(type, () => setDragging(false));
   darkQuery.addEventListener('change', () => requestDraw());
   document.addEventListener('keydown', onKey);
   wireShare();

@@ -7,7 +7,7 @@ use crate::demos::{self, Demo, Frame};
 use crate::export;
 use crate::i18n::{tr, Lang};
 use crate::params::{resolve_query, Notice, Params};
-use crate::render::{render, render_with, PlotGeometry, Raster};
+use crate::render::{hold_axes, render, render_with, AxisRanges, PlotGeometry, Raster};
 use crate::spec::DemoSpec;
 use crate::theme::Theme;
 use plotters::prelude::{IntoDrawingArea, SVGBackend};
@@ -303,6 +303,10 @@ pub struct Session {
     schematic_canvas: Option<HtmlCanvasElement>,
     frame: Option<Frame>,
     geometry: Vec<Option<PlotGeometry>>,
+    /// Whether a control is being dragged: axes then hold (see [`hold_axes`]).
+    dragging: bool,
+    /// Each plot's axis ranges as last drawn, `(x, y)`.
+    shown: Vec<Option<AxisRanges>>,
 }
 
 fn theme(dark: bool) -> Theme {
@@ -354,6 +358,8 @@ impl Session {
             schematic_canvas: None,
             frame: None,
             geometry: vec![None; n],
+            dragging: false,
+            shown: vec![None; n],
         })
     }
 
@@ -440,6 +446,14 @@ impl Session {
         } else {
             1.0
         };
+        for (i, fig) in frame.figures.iter_mut().enumerate() {
+            if self.dragging {
+                hold_axes(fig, self.shown.get(i).copied().flatten());
+            }
+            if let Some(slot) = self.shown.get_mut(i) {
+                *slot = Some((fig.x.range, fig.y.range));
+            }
+        }
         for (i, (canvas, fig)) in self.canvases.iter().zip(&frame.figures).enumerate() {
             let Some(canvas) = canvas else { continue };
             let Some(backend) = Canvas::new(canvas) else {
@@ -527,6 +541,14 @@ impl Session {
             }
         }
         to_js(&applied)
+    }
+
+    /// Tells the session a control is being dragged (`true`) or was released (`false`).
+    /// While dragging, every plot keeps its axis ranges unless the data would leave them;
+    /// the next update after release draws each figure with its own ranges again.
+    #[wasm_bindgen(js_name = setDragging)]
+    pub fn set_dragging(&mut self, on: bool) {
+        self.dragging = on;
     }
 
     /// Restores every parameter's default.
