@@ -255,7 +255,8 @@ function buildAnimation(parent) {
 }
 
 function buildTable(root, table) {
-  const wrap = el('div', { class: 'table-wrap' });
+  // Focusable, so a keyboard can scroll it sideways on a narrow screen.
+  const wrap = el('div', { class: 'table-wrap', role: 'region', 'aria-label': table.caption, tabindex: '0' });
   const t = el('table', { class: 'ref-table' });
   t.append(el('caption', {}, table.caption));
   const head = el('tr');
