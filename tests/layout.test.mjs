@@ -137,12 +137,14 @@ test('embed view: one plot and two sliders fit a 400 × 600 frame without scroll
         plot: rect(document.querySelector(`canvas[data-plot="${p}"]`)),
         sliders: keys.map((k) => rect(document.querySelector(`input[type=range][data-key="${k}"]`))),
         scrollY: window.scrollY,
+        tall: document.documentElement.scrollHeight - window.innerHeight,
       };
     }, [plot, sliders]);
     for (const [name, [l, t, r, b]] of [['plot', boxes.plot], ...boxes.sliders.map((s, i) => [sliders[i], s])]) {
       if (l < 0 || t < 0 || r > 400 || b > 600) failures.push(`${id}: ${name} at ${[l, t, r, b].map(Math.round)} outside 400×600`);
     }
     if (boxes.scrollY !== 0) failures.push(`${id}: scrolled`);
+    if (boxes.tall > 0) failures.push(`${id}: the page is ${boxes.tall}px taller than the frame`);
     if (id === ids[0] || id === 'resonance') await page.screenshot({ path: `${SHOTS}layout-embed-compact-${id}-400x600.png` });
   }
   assert.deepEqual(failures, []);

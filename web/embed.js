@@ -61,10 +61,15 @@ export function applyEmbedView(view, opts) {
   } else {
     view.stagePlot(view.staged);
   }
-  // A lecturer who chose the sliders gets a compact view: presets would set the others.
+  // A lecturer who chose the sliders gets no presets (they would set the others); one who
+  // chose the plots too gets a compact view sized to the frame, without the schematic
+  // unless it was asked for.
   if (opts.embed && opts.controls) {
     for (const { button } of view.presets) button.closest('.presets').hidden = true;
+  }
+  if (opts.embed && opts.controls && opts.plots) {
     document.documentElement.dataset.compact = '1';
+    if (view.animation && !opts.plots.includes('schematic')) view.animation.canvas.closest('figure').hidden = true;
   }
   return shown;
 }

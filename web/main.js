@@ -110,7 +110,12 @@ function layoutStage() {
   const box = anchor.getBoundingClientRect();
   const top = (wide ? box.top : box.bottom) + window.scrollY;
   const margin = 12;
-  const room = wide ? vh - Math.max(top, margin) - margin : Math.min(0.45 * vh, vh - top - margin);
+  let room = wide ? vh - Math.max(top, margin) - margin : Math.min(0.45 * vh, vh - top - margin);
+  if (!wide && document.documentElement.dataset.compact === '1') {
+    // Compact embed: the page does not scroll, so the stage takes what the form leaves.
+    const form = view.workspace.querySelector('.controls');
+    room = Math.max(room, vh - top - form.offsetHeight - 3 * margin);
+  }
   const extra = view.stage.offsetHeight - canvas.offsetHeight;
   canvas.style.maxHeight = `${Math.max(120, Math.floor(room - extra))}px`;
   view.workspace.style.setProperty('--stage-h', `${view.stage.offsetHeight}px`);
