@@ -259,7 +259,27 @@ function setDragging(on) {
   } catch (err) {
     reportFailure(err);
   }
-  if (!on) requestDraw();
+  if (!on) easeAxes();
+}
+
+/** After a drag, the axes move to their new ranges over a quarter second (at once when the
+ * reader prefers reduced motion). */
+function easeAxes() {
+  const start = performance.now();
+  const session = app.session;
+  const step = (now) => {
+    if (app.dragging || app.session !== session) return;
+    const f = reducedMotion.matches ? 1 : Math.min(1, (now - start) / 250);
+    try {
+      session.easeAxes(f * f * (3 - 2 * f));
+    } catch (err) {
+      reportFailure(err);
+      return;
+    }
+    requestDraw();
+    if (f < 1) requestAnimationFrame(step);
+  };
+  step(start);
 }
 
 const STEP_KEYS = new Set(['ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown', 'PageUp', 'PageDown', 'Home', 'End']);

@@ -103,6 +103,28 @@ pub fn hold_axes(fig: &mut Figure, held: Option<AxisRanges>) {
     fig.y.range = widen(hy, fig.y.range);
 }
 
+/// After a drag, moves a plot's axes from the ranges it was held at (`from`) towards the
+/// figure's own, by `f` in 0…1 (1 = the figure's own ranges); log axes move geometrically.
+/// Used over a few frames so the rescale is seen as a motion, not a jump.
+pub fn ease_axes(fig: &mut Figure, from: Option<AxisRanges>, f: f64) {
+    let Some((fx, fy)) = from else { return };
+    if fig.kind != FigureKind::Plot || !(0.0..1.0).contains(&f) {
+        return;
+    }
+    let mix = |a: f64, b: f64, log: bool| {
+        if log && a > 0.0 && b > 0.0 {
+            (a.ln() + f * (b.ln() - a.ln())).exp()
+        } else {
+            a + f * (b - a)
+        }
+    };
+    let x_log = fig.x.scale == AxisScale::Log;
+    let y_log = fig.y.scale == AxisScale::Log;
+    let (x, y) = (fig.x.range, fig.y.range);
+    fig.x.range = (mix(fx.0, x.0, x_log), mix(fx.1, x.1, x_log));
+    fig.y.range = (mix(fy.0, y.0, y_log), mix(fy.1, y.1, y_log));
+}
+
 /// Draws `fig` onto `root`, filling it with the theme's background first; returns where
 /// the plotting area went. Heatmaps are drawn as one rectangle per cell (exact in SVG).
 pub fn render<DB: DrawingBackend>(
@@ -1327,6 +1349,21 @@ mod tests {
             g.area.3 < 300.0,
             "room left under the chart for the legend rows"
         );
+    }
+
+    #[test]
+    fn released_axes_ease_from_the_held_ranges_to_the_figures_own() {
+        let mut fig = sample();
+        fig.x.range = (0.0, 1.0);
+        ease_axes(&mut fig, Some(((0.0, 3.0), (-1.0, 1.0))), 0.5);
+        assert_eq!(fig.x.range, (0.0, 2.0));
+        let mut fig = sample();
+        fig.x = Axis::log("f", "Hz", (1.0, 100.0));
+        ease_axes(&mut fig, Some(((1.0, 10_000.0), (-1.0, 1.0))), 0.5);
+        assert!((fig.x.range.1 - 1000.0).abs() < 1e-9);
+        let mut fig = sample();
+        ease_axes(&mut fig, Some(((0.0, 3.0), (-5.0, 5.0))), 1.0);
+        assert_eq!(fig.x.range, (0.0, 1.0), "at 1 the figure's own ranges");
     }
 
     #[test]

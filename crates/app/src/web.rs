@@ -7,7 +7,7 @@ use crate::demos::{self, Demo, Frame};
 use crate::export;
 use crate::i18n::{tr, Lang};
 use crate::params::{resolve_query, Notice, Params};
-use crate::render::{hold_axes, render, render_with, AxisRanges, PlotGeometry, Raster};
+use crate::render::{ease_axes, hold_axes, render, render_with, AxisRanges, PlotGeometry, Raster};
 use crate::spec::DemoSpec;
 use crate::theme::Theme;
 use plotters::prelude::{IntoDrawingArea, SVGBackend};
@@ -307,6 +307,9 @@ pub struct Session {
     dragging: bool,
     /// Each plot's axis ranges as last drawn, `(x, y)`.
     shown: Vec<Option<AxisRanges>>,
+    /// The ranges held when the last drag ended, and how far (0…1) the axes have moved
+    /// from them to the figures' own (see [`ease_axes`]).
+    released: Option<(Vec<Option<AxisRanges>>, f64)>,
 }
 
 fn theme(dark: bool) -> Theme {
@@ -360,6 +363,7 @@ impl Session {
             geometry: vec![None; n],
             dragging: false,
             shown: vec![None; n],
+            released: None,
         })
     }
 
@@ -449,6 +453,8 @@ impl Session {
         for (i, fig) in frame.figures.iter_mut().enumerate() {
             if self.dragging {
                 hold_axes(fig, self.shown.get(i).copied().flatten());
+            } else if let Some((from, f)) = &self.released {
+                ease_axes(fig, from.get(i).copied().flatten(), *f);
             }
             if let Some(slot) = self.shown.get_mut(i) {
                 *slot = Some((fig.x.range, fig.y.range));
@@ -548,7 +554,24 @@ impl Session {
     /// the next update after release draws each figure with its own ranges again.
     #[wasm_bindgen(js_name = setDragging)]
     pub fn set_dragging(&mut self, on: bool) {
+        if self.dragging && !on {
+            self.released = Some((self.shown.clone(), 0.0));
+        }
+        if on {
+            self.released = None;
+        }
         self.dragging = on;
+    }
+
+    /// Sets how far (0…1) the axes have moved, since the last drag ended, from the ranges
+    /// they were held at to each figure's own; the page steps this over a few frames so
+    /// the rescale is smooth. 1 (or anything not below 1) ends the easing.
+    #[wasm_bindgen(js_name = easeAxes)]
+    pub fn ease_axes(&mut self, f: f64) {
+        match &mut self.released {
+            Some((_, at)) if f.is_finite() && f < 1.0 => *at = f.max(0.0),
+            _ => self.released = None,
+        }
     }
 
     /// Restores every parameter's default.
