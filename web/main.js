@@ -102,10 +102,19 @@ function layoutStage() {
   app.layoutDirty = false;
   const view = app.view;
   const canvas = view.canvases.get(view.staged);
-  for (const c of view.canvases.values()) if (c !== canvas) c.style.maxHeight = '';
+  for (const p of view.spec.plots) {
+    const c = view.canvases.get(p.key);
+    if (c !== canvas) {
+      c.style.maxHeight = '';
+      c.style.aspectRatio = String(p.aspect);
+    }
+  }
   if (!canvas) return;
   const vh = window.innerHeight;
   const wide = getComputedStyle(view.workspace).getPropertyValue('--layout').trim() === 'wide';
+  // On the stage a wide plot may grow taller than its usual shape, up to the room left.
+  const aspect = view.spec.plots.find((p) => p.key === view.staged).aspect;
+  canvas.style.aspectRatio = String(wide ? Math.min(aspect, 1.5) : aspect);
   const anchor = wide ? view.workspace : view.stage.previousElementSibling;
   const box = anchor.getBoundingClientRect();
   const top = (wide ? box.top : box.bottom) + window.scrollY;
