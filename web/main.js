@@ -295,8 +295,9 @@ const STEP_KEYS = new Set(['ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown', 'P
 
 function wireDrag(range) {
   range.addEventListener('pointerdown', () => setDragging(true));
+  // A held arrow key (auto-repeat) is a drag too; a single press rescales at once.
   range.addEventListener('keydown', (ev) => {
-    if (STEP_KEYS.has(ev.key)) setDragging(true);
+    if (ev.repeat && STEP_KEYS.has(ev.key)) setDragging(true);
   });
   range.addEventListener('blur', () => setDragging(false));
 }
