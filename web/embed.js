@@ -93,10 +93,33 @@ export function applyEmbedView(view, opts) {
     for (const [key, item] of view.readouts) if (!opts.readouts.includes(key)) item.hidden = true;
   }
   const shown = [];
-  for (const [key, canvas] of view.canvases) {
-    const fig = canvas.closest('figure');
-    if (opts.plots && !opts.plots.includes(key)) fig.hidden = true;
-    else shown.push(key);
+  for (const [key, fig] of view.figures) {
+    const option = [...view.picker.options].find((o) => o.value === key);
+    if (opts.plots && !opts.plots.includes(key)) {
+      fig.hidden = true;
+      option.hidden = true;
+      option.disabled = true;
+    } else {
+      shown.push(key);
+    }
+  }
+  // The requested plots first, in the order asked: the first on the stage.
+  if (opts.plots && shown.length) {
+    const asked = opts.plots.filter((k) => shown.includes(k));
+    view.order = [...asked, ...view.order.filter((k) => !asked.includes(k))];
+    view.stagePlot(asked[0]);
+  } else {
+    view.stagePlot(view.staged);
+  }
+  // A lecturer who chose the sliders gets no presets (they would set the others); one who
+  // chose the plots too gets a compact view sized to the frame, without the schematic
+  // unless it was asked for.
+  if (opts.embed && opts.controls) {
+    for (const { button } of view.presets) button.closest('.presets').hidden = true;
+  }
+  if (opts.embed && opts.controls && opts.plots) {
+    document.documentElement.dataset.compact = '1';
+    if (view.animation && !opts.plots.includes('schematic')) view.animation.canvas.closest('figure').hidden = true;
   }
   if (opts.presets && opts.presets.length) addPresets(view, opts.presets);
   if (opts.embed && opts.fullscreen) addFullscreenButton();

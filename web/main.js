@@ -39,6 +39,8 @@ const app = {
   changed: true,
   firstDrawn: false,
   sound: createSonifier(),
+  dragging: false,
+  layoutDirty: true,
 };
 
 function isDark() {
@@ -96,7 +98,45 @@ function fit(canvas, key, dpr) {
   }
 }
 
+/**
+ * Caps the staged plot's height so the whole stage (picker, plot, readouts) fits in the
+ * window beside the controls (wide screens) or in the top 45 % above them (narrow), and
+ * leaves room below the controls for the stage to stay stuck while the last one is used.
+ */
+function layoutStage() {
+  app.layoutDirty = false;
+  const view = app.view;
+  const canvas = view.canvases.get(view.staged);
+  for (const p of view.spec.plots) {
+    const c = view.canvases.get(p.key);
+    if (c !== canvas) {
+      c.style.maxHeight = '';
+      c.style.aspectRatio = String(p.aspect);
+    }
+  }
+  if (!canvas) return;
+  const vh = window.innerHeight;
+  const wide = getComputedStyle(view.workspace).getPropertyValue('--layout').trim() === 'wide';
+  // On the stage a wide plot may grow taller than its usual shape, up to the room left.
+  const aspect = view.spec.plots.find((p) => p.key === view.staged).aspect;
+  canvas.style.aspectRatio = String(wide ? Math.min(aspect, 1.5) : aspect);
+  const anchor = wide ? view.workspace : view.stage.previousElementSibling;
+  const box = anchor.getBoundingClientRect();
+  const top = (wide ? box.top : box.bottom) + window.scrollY;
+  const margin = 12;
+  let room = wide ? vh - Math.max(top, margin) - margin : Math.min(0.45 * vh, vh - top - margin);
+  if (!wide && document.documentElement.dataset.compact === '1') {
+    // Compact embed: the page does not scroll, so the stage takes what the form leaves.
+    const form = view.workspace.querySelector('.controls');
+    room = Math.max(room, vh - top - form.offsetHeight - 3 * margin);
+  }
+  const extra = view.stage.offsetHeight - canvas.offsetHeight;
+  canvas.style.maxHeight = `${Math.max(120, Math.floor(room - extra))}px`;
+  view.workspace.style.setProperty('--stage-h', `${view.stage.offsetHeight}px`);
+}
+
 function sizeCanvases() {
+  if (app.layoutDirty) layoutStage();
   const dpr = window.devicePixelRatio || 1;
   for (const [key, canvas] of app.view.canvases) {
     fit(canvas, key, dpr);
@@ -227,6 +267,49 @@ function setParam(control, raw) {
   syncUrl();
 }
 
+/** Axes hold still while a control is held (pointer or arrow keys); they refit on release. */
+function setDragging(on) {
+  if (app.dragging === on) return;
+  app.dragging = on;
+  try {
+    app.session.setDragging(on);
+  } catch (err) {
+    reportFailure(err);
+  }
+  if (!on) easeAxes();
+}
+
+/** After a drag, the axes move to their new ranges over a quarter second (at once when the
+ * reader prefers reduced motion). */
+function easeAxes() {
+  const start = performance.now();
+  const session = app.session;
+  const step = (now) => {
+    if (app.dragging || app.session !== session) return;
+    const f = reducedMotion.matches ? 1 : Math.min(1, (now - start) / 250);
+    try {
+      session.easeAxes(f * f * (3 - 2 * f));
+    } catch (err) {
+      reportFailure(err);
+      return;
+    }
+    requestDraw();
+    if (f < 1) requestAnimationFrame(step);
+  };
+  step(start);
+}
+
+const STEP_KEYS = new Set(['ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown', 'PageUp', 'PageDown', 'Home', 'End']);
+
+function wireDrag(range) {
+  range.addEventListener('pointerdown', () => setDragging(true));
+  // A held arrow key (auto-repeat) is a drag too; a single press rescales at once.
+  range.addEventListener('keydown', (ev) => {
+    if (ev.repeat && STEP_KEYS.has(ev.key)) setDragging(true);
+  });
+  range.addEventListener('blur', () => setDragging(false));
+}
+
 function wireControls() {
   for (const control of app.view.controls.values()) {
     const kind = control.param.kind;
@@ -241,8 +324,13 @@ function wireControls() {
         setParam(control, String(value));
       });
       control.number.addEventListener('change', () => setParam(control, control.number.value));
+      wireDrag(control.range);
     }
   }
+  app.view.picker.addEventListener('change', () => {
+    app.layoutDirty = true;
+    requestDraw();
+  });
   app.view.reset.addEventListener('click', () => {
     app.session.reset();
     showAllValues();
@@ -433,6 +521,8 @@ function openDemo(id, query) {
   app.view.shownPlots = applyEmbedView(app.view, app.embed);
   app.time = 0;
   app.changed = true;
+  app.dragging = false;
+  app.layoutDirty = true;
   document.title = `${spec.title} — Zeta Lab`;
   attachCanvases();
   wireControls();
@@ -525,7 +615,19 @@ async function main() {
     notify(app.notices, t('noDemo', { id: wanted.slice(0, 40), fallback: DEFAULT_DEMO }), 'warn');
   }
   openDemo(known ? wanted : DEFAULT_DEMO, known ? currentQuery() : null);
-  new ResizeObserver(() => requestDraw()).observe(app.root);
+  new ResizeObserver(() => {
+    app.layoutDirty = true;
+    requestDraw();
+  }).observe(app.root);
+  // A printout carries the explanation even when it is folded on screen.
+  window.addEventListener('beforeprint', () => {
+    for (const d of document.querySelectorAll('details')) d.open = true;
+  });
+  window.addEventListener('resize', () => {
+    app.layoutDirty = true;
+    requestDraw();
+  });
+  for (const type of ['pointerup', 'pointercancel', 'keyup']) window.addEventListener(type, () => setDragging(false));
   darkQuery.addEventListener('change', () => requestDraw());
   document.addEventListener('keydown', onKey);
   wireShare();

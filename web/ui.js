@@ -84,19 +84,22 @@ function paramControl(param) {
   return { wrap, range, number };
 }
 
-/**
- * Builds the demo section. Returns handles: {controls: Map(key → {param, range, number}),
- * readouts: Map(key → element), canvases: Map(key → canvas)}.
- */
-export function buildDemo(root, spec) {
-  root.replaceChildren();
+/** The demo's heading: title, equation, and the explanation folded into a disclosure. */
+function buildHead(spec) {
   const head = el('section', { class: 'demo-head', 'aria-labelledby': 'demo-title' });
   head.append(el('h1', { id: 'demo-title' }, spec.title));
   const eq = el('div', { class: 'equation' });
   eq.innerHTML = spec.equation_mathml; // trusted: compiled into the wasm, never from the URL
-  head.append(eq, el('p', { class: 'summary' }, spec.summary));
+  const about = el('details', { class: 'about' });
+  about.append(el('summary', {}, t('about')), el('p', { class: 'summary' }, spec.summary));
+  // Open where there is room beside the stage; folded on phones and small windows.
+  if (window.matchMedia('(min-width: 1000px) and (min-height: 760px)').matches) about.open = true;
+  head.append(eq, about);
+  return head;
+}
 
-  const panel = el('div', { class: 'panel' });
+/** The parameter form: controls, presets, reset. */
+function buildControls(spec) {
   const form = el('form', { class: 'controls', 'aria-label': t('parameters') });
   form.addEventListener('submit', (e) => e.preventDefault());
   const controls = new Map();
@@ -126,54 +129,114 @@ export function buildDemo(root, spec) {
   const actions = el('div', { class: 'form-actions' });
   actions.append(reset);
   form.append(actions);
+  return { form, controls, presets, reset };
+}
 
-  const readoutBox = el('dl', { class: 'readouts', 'aria-label': t('readouts') });
+/** Readouts as a compact strip (scrollable by keyboard when it overflows). */
+function buildReadouts(spec) {
+  const strip = el('div', { class: 'readout-strip', role: 'region', 'aria-label': t('readouts'), tabindex: '0' });
+  const box = el('dl', { class: 'readouts' });
   const readouts = new Map();
   for (const r of spec.readouts) {
     const item = el('div', { class: 'readout', 'data-readout': r.key, 'data-value': '' });
     item.append(el('dt', {}, r.label), el('dd', {}, '—'));
-    readoutBox.append(item);
+    box.append(item);
     readouts.set(r.key, item);
   }
+  strip.append(box);
+  return { strip, readouts };
+}
+
+/** One plot: canvas with its overlay and read-out tip, caption (its text alternative), exports. */
+function buildFigure(p, exports) {
+  const fig = el('figure', { class: 'plot', 'data-plot-wrap': p.key });
+  const stage = el('div', { class: 'plot-stage' });
+  const canvas = el('canvas', { 'data-plot': p.key, role: 'img', 'aria-label': p.title, tabindex: '0' });
+  canvas.style.aspectRatio = String(p.aspect);
+  const overlay = el('canvas', { class: 'overlay', 'aria-hidden': 'true' });
+  const tip = el('div', { class: 'probe', hidden: '' });
+  stage.append(canvas, overlay, tip);
+  const caption = el('figcaption', { id: `desc-${p.key}` });
+  canvas.setAttribute('aria-describedby', caption.id);
+  const tools = el('div', { class: 'plot-tools', role: 'group', 'aria-label': t('exportGroup', { plot: p.title }) });
+  for (const [format, text] of [['png', 'PNG'], ['svg', 'SVG'], ['csv', 'CSV']]) {
+    const b = el('button', { type: 'button', 'data-export': format, 'aria-label': t('download', { plot: p.title, format: text }) }, text);
+    tools.append(b);
+    exports.push({ key: p.key, format, button: b });
+  }
+  fig.append(stage, caption, tools);
+  return { fig, canvas, overlay, tip, stage, caption };
+}
+
+/**
+ * Builds the demo. The document order is the reading order on every screen: heading,
+ * the plot stage (one plot kept in view, a picker for the others, the readouts), the
+ * parameter form, the schematic, the other plots, the reference table. CSS places these
+ * in a sticky stage beside (wide) or above (narrow) the controls; see style.css.
+ *
+ * Returns handles: {controls: Map(key → {param, range, number} | {param, input}),
+ * readouts: Map(key → element), canvases: Map(key → canvas), figures: Map(key → figure),
+ * stagePlot(key), …}.
+ */
+export function buildDemo(root, spec) {
+  root.replaceChildren();
+  const workspace = el('div', { class: 'workspace', 'data-demo': spec.id, 'data-primary': spec.primary_plot || '' });
+  const head = buildHead(spec);
+  const stageBox = el('section', { class: 'stage', 'aria-label': t('plotInView') });
+  const bar = el('div', { class: 'stage-bar' });
+  const pickerId = 'plot-picker';
+  const picker = el('select', { id: pickerId, class: 'plot-picker' });
+  bar.append(el('label', { for: pickerId, class: 'visually-hidden' }, t('plotInView')), picker);
+  const { form, controls, presets, reset } = buildControls(spec);
+  const { strip, readouts } = buildReadouts(spec);
   const side = el('div', { class: 'side' });
-  side.append(readoutBox);
   let animation = null;
   if (spec.schematic) animation = buildAnimation(side);
-  panel.append(form, side);
+  const gallery = el('div', { class: 'plots' });
 
-  const plots = el('div', { class: 'plots' });
   const canvases = new Map();
   const overlays = new Map();
   const captions = new Map();
+  const figures = new Map();
   const exports = [];
   for (const p of spec.plots) {
-    const fig = el('figure', { class: 'plot', 'data-plot-wrap': p.key });
-    const stage = el('div', { class: 'plot-stage' });
-    const canvas = el('canvas', { 'data-plot': p.key, role: 'img', 'aria-label': p.title, tabindex: '0' });
-    canvas.style.aspectRatio = String(p.aspect);
-    const overlay = el('canvas', { class: 'overlay', 'aria-hidden': 'true' });
-    const tip = el('div', { class: 'probe', hidden: '' });
-    stage.append(canvas, overlay, tip);
-    const caption = el('figcaption', { id: `desc-${p.key}` });
-    canvas.setAttribute('aria-describedby', caption.id);
-    const tools = el('div', { class: 'plot-tools', role: 'group', 'aria-label': t('exportGroup', { plot: p.title }) });
-    for (const [format, text] of [['png', 'PNG'], ['svg', 'SVG'], ['csv', 'CSV']]) {
-      const b = el('button', { type: 'button', 'data-export': format, 'aria-label': t('download', { plot: p.title, format: text }) }, text);
-      tools.append(b);
-      exports.push({ key: p.key, format, button: b });
-    }
-    fig.append(stage, caption, tools);
-    plots.append(fig);
-    canvases.set(p.key, canvas);
-    overlays.set(p.key, { overlay, tip, stage });
-    captions.set(p.key, caption);
+    const f = buildFigure(p, exports);
+    picker.append(el('option', { value: p.key }, p.title));
+    gallery.append(f.fig);
+    canvases.set(p.key, f.canvas);
+    overlays.set(p.key, { overlay: f.overlay, tip: f.tip, stage: f.stage });
+    captions.set(p.key, f.caption);
+    figures.set(p.key, f.fig);
   }
-  root.append(head, panel, plots);
+  const slot = el('div', { class: 'stage-slot' });
+  stageBox.append(bar, slot, strip);
+  workspace.append(head, stageBox, form, side, gallery);
+  root.append(workspace);
   let table = null;
-  if (spec.table) table = buildTable(root, spec.table);
+  if (spec.table) table = buildTable(workspace, spec.table);
   const live = el('div', { class: 'visually-hidden', 'aria-live': 'polite', id: 'plot-announcer' });
   root.append(live);
-  return { controls, readouts, canvases, overlays, captions, exports, presets, animation, table, live, reset, spec };
+
+  const view = {
+    controls, readouts, canvases, overlays, captions, figures, exports, presets, animation, table,
+    live, reset, spec, workspace, stage: stageBox, slot, picker, gallery, staged: null,
+    order: spec.plots.map((p) => p.key),
+  };
+  /** Puts plot `key` on the stage; the one there goes back to its place among the others. */
+  view.stagePlot = (key) => {
+    if (!figures.has(key)) return;
+    view.staged = key;
+    workspace.dataset.primaryShown = key;
+    picker.value = key;
+    slot.replaceChildren(figures.get(key));
+    for (const k of view.order) if (k !== key) gallery.append(figures.get(k));
+    const choices = [...picker.options].filter((o) => !o.hidden).length;
+    stageBox.classList.toggle('single', choices < 2);
+    gallery.hidden = [...gallery.children].every((f) => f.hidden);
+  };
+  picker.addEventListener('change', () => view.stagePlot(picker.value));
+  view.stagePlot(spec.primary_plot || (spec.plots[0] && spec.plots[0].key));
+  return view;
 }
 
 function buildAnimation(parent) {
@@ -192,7 +255,8 @@ function buildAnimation(parent) {
 }
 
 function buildTable(root, table) {
-  const wrap = el('div', { class: 'table-wrap' });
+  // Focusable, so a keyboard can scroll it sideways on a narrow screen.
+  const wrap = el('div', { class: 'table-wrap', role: 'region', 'aria-label': table.caption, tabindex: '0' });
   const t = el('table', { class: 'ref-table' });
   t.append(el('caption', {}, table.caption));
   const head = el('tr');

@@ -8,6 +8,7 @@
 
 use crate::figure::{AxisScale, Dash, Figure, FigureKind, LineStyle, MarkerShape, Series};
 use crate::theme::Theme;
+use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
 use plotters::coord::ranged1d::{AsRangedCoord, Ranged, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::element::{Drawable, PointCollection};
@@ -85,6 +86,45 @@ impl PlotGeometry {
     }
 }
 
+/// A plot's `(x, y)` axis ranges.
+pub type AxisRanges = ((f64, f64), (f64, f64));
+
+/// While a control is dragged, a plot keeps the ranges it was last drawn with (`held`),
+/// widened only as far as the new figure's own ranges need, so the axes hold still and the
+/// change the control makes is seen; the figure's own ranges return when the drag ends.
+/// Schematics (equal scales, no axes) are left alone.
+pub fn hold_axes(fig: &mut Figure, held: Option<AxisRanges>) {
+    let Some((hx, hy)) = held else { return };
+    if fig.kind != FigureKind::Plot {
+        return;
+    }
+    let widen = |(lo, hi): (f64, f64), (a, b): (f64, f64)| (lo.min(a), hi.max(b));
+    fig.x.range = widen(hx, fig.x.range);
+    fig.y.range = widen(hy, fig.y.range);
+}
+
+/// After a drag, moves a plot's axes from the ranges it was held at (`from`) towards the
+/// figure's own, by `f` in 0…1 (1 = the figure's own ranges); log axes move geometrically.
+/// Used over a few frames so the rescale is seen as a motion, not a jump.
+pub fn ease_axes(fig: &mut Figure, from: Option<AxisRanges>, f: f64) {
+    let Some((fx, fy)) = from else { return };
+    if fig.kind != FigureKind::Plot || !(0.0..1.0).contains(&f) {
+        return;
+    }
+    let mix = |a: f64, b: f64, log: bool| {
+        if log && a > 0.0 && b > 0.0 {
+            (a.ln() + f * (b.ln() - a.ln())).exp()
+        } else {
+            a + f * (b - a)
+        }
+    };
+    let x_log = fig.x.scale == AxisScale::Log;
+    let y_log = fig.y.scale == AxisScale::Log;
+    let (x, y) = (fig.x.range, fig.y.range);
+    fig.x.range = (mix(fx.0, x.0, x_log), mix(fx.1, x.1, x_log));
+    fig.y.range = (mix(fy.0, y.0, y_log), mix(fy.1, y.1, y_log));
+}
+
 /// Draws `fig` onto `root`, filling it with the theme's background first; returns where
 /// the plotting area went. Heatmaps are drawn as one rectangle per cell (exact in SVG).
 pub fn render<DB: DrawingBackend>(
@@ -125,7 +165,7 @@ pub fn render_with<DB: DrawingBackend>(
     let (y0, y1) = fig.y.range;
     let area = match (fig.x.scale, fig.y.scale) {
         (AxisScale::Linear, AxisScale::Linear) => {
-            draw(root, fig, theme, scale, raster, x0..x1, y0..y1)
+            draw(root, fig, theme, scale, raster, || x0..x1, || y0..y1)
         }
         (AxisScale::Log, AxisScale::Linear) => draw(
             root,
@@ -133,8 +173,8 @@ pub fn render_with<DB: DrawingBackend>(
             theme,
             scale,
             Raster::Cells,
-            (x0..x1).log_scale(),
-            y0..y1,
+            || log_axis(x0, x1),
+            || y0..y1,
         ),
         (AxisScale::Linear, AxisScale::Log) => draw(
             root,
@@ -142,8 +182,8 @@ pub fn render_with<DB: DrawingBackend>(
             theme,
             scale,
             Raster::Cells,
-            x0..x1,
-            (y0..y1).log_scale(),
+            || x0..x1,
+            || log_axis(y0, y1),
         ),
         (AxisScale::Log, AxisScale::Log) => draw(
             root,
@@ -151,8 +191,8 @@ pub fn render_with<DB: DrawingBackend>(
             theme,
             scale,
             Raster::Cells,
-            (x0..x1).log_scale(),
-            (y0..y1).log_scale(),
+            || log_axis(x0, x1),
+            || log_axis(y0, y1),
         ),
     }?;
     root.present().map_err(err)?;
@@ -207,6 +247,72 @@ fn draw_schematic<DB: DrawingBackend>(
     })
 }
 
+/// A log axis over `lo..hi` (both > 0) with its labelled ticks from [`log_ticks`] and a
+/// minor grid line at every 1…9 × 10ᵏ when the range spans fewer than six decades.
+fn log_axis(lo: f64, hi: f64) -> WithKeyPoints<LogCoord<f64>> {
+    let minor = if (hi / lo).log10() < 6.0 {
+        decade_multiples(lo, hi, &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0])
+    } else {
+        Vec::new()
+    };
+    (lo..hi)
+        .log_scale()
+        .with_key_points(log_ticks(lo, hi))
+        .with_light_points(minor)
+}
+
+/// Labelled ticks of a log axis over `lo..hi`: every decade, and between them enough
+/// values to read a number off the axis when it spans few decades — 1, 2, 5 × 10ᵏ under
+/// three decades, 1, 1.5, 2, 3, 5, 7 × 10ᵏ under one and a half; every other decade
+/// above eight. At least two ticks whenever the range allows.
+pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    if !(lo > 0.0 && hi > lo && lo.is_finite() && hi.is_finite()) {
+        return Vec::new();
+    }
+    let decades = (hi / lo).log10();
+    let ticks = if decades < 1.5 {
+        decade_multiples(lo, hi, &[1.0, 1.5, 2.0, 3.0, 5.0, 7.0])
+    } else if decades < 3.0 {
+        decade_multiples(lo, hi, &[1.0, 2.0, 5.0])
+    } else if decades <= 8.0 {
+        decade_multiples(lo, hi, &[1.0])
+    } else {
+        decade_multiples(lo, hi, &[1.0])
+            .into_iter()
+            .filter(|v| (v.log10().round() as i64).rem_euclid(2) == 0)
+            .collect()
+    };
+    if ticks.len() >= 2 || decades < 0.05 {
+        ticks
+    } else {
+        decade_multiples(
+            lo,
+            hi,
+            &[1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0],
+        )
+    }
+}
+
+/// Every `m × 10ᵏ` (m from `mantissas`) inside `lo..=hi`, ascending.
+fn decade_multiples(lo: f64, hi: f64, mantissas: &[f64]) -> Vec<f64> {
+    let mut out = Vec::new();
+    let first = lo.log10().floor() as i32;
+    let last = hi.log10().ceil() as i32;
+    for k in first..=last.min(first + 400) {
+        let base = 10f64.powi(k);
+        for m in mantissas {
+            // Round to 12 significant digits so labels read 0.2, not 0.20000000000000004.
+            let v = crate::format::significant(m * base, 12)
+                .parse::<f64>()
+                .unwrap_or(m * base);
+            if v >= lo * (1.0 - 1e-12) && v <= hi * (1.0 + 1e-12) {
+                out.push(v);
+            }
+        }
+    }
+    out
+}
+
 fn px(v: f64, scale: f64) -> u32 {
     (v * scale).round().max(1.0) as u32
 }
@@ -227,6 +333,17 @@ pub fn tick_label(v: f64, decimal_comma: bool) -> String {
     } else {
         s
     }
+}
+
+/// A colour-bar label: three significant digits, as [`tick_label`] otherwise.
+fn short_label(v: f64, decimal_comma: bool) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return "0".to_string();
+    }
+    tick_label(
+        crate::format::significant(v, 3).parse::<f64>().unwrap_or(v),
+        decimal_comma,
+    )
 }
 
 fn trim_zeros(s: &str) -> &str {
@@ -272,14 +389,66 @@ fn segments(s: &Series, fig: &Figure) -> (Vec<Vec<(f64, f64)>>, bool) {
     (out, clipped)
 }
 
+/// Where a figure's legend goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Placement {
+    /// No legend entries.
+    None,
+    /// A box with its top-left corner here, in plotting-area pixels, over no data.
+    Inside(i32, i32),
+    /// Rows under the chart, outside the plotting area (no corner was free of data).
+    Below,
+}
+
+/// A chart over the coordinates `X` × `Y` describe.
+type Chart<'a, DB, X, Y> = ChartContext<
+    'a,
+    DB,
+    Cartesian2d<<X as AsRangedCoord>::CoordDescType, <Y as AsRangedCoord>::CoordDescType>,
+>;
+
+fn build<'a, DB, X, Y>(
+    area: &'a DrawingArea<DB, Shift>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+    xr: X,
+    yr: Y,
+) -> Result<Chart<'a, DB, X, Y>, RenderError>
+where
+    DB: DrawingBackend,
+    X: AsRangedCoord<Value = f64>,
+    Y: AsRangedCoord<Value = f64>,
+{
+    let font = ("sans-serif", 15.0 * scale)
+        .into_font()
+        .color(&theme.foreground);
+    let right = if fig.heatmap.is_some() {
+        COLOUR_BAR_WIDTH
+    } else {
+        10.0
+    };
+    ChartBuilder::on(area)
+        .caption(&fig.title, font)
+        .margin(px(10.0, scale))
+        .margin_right(px(right, scale))
+        .x_label_area_size(px(42.0, scale))
+        .y_label_area_size(px(64.0, scale))
+        .build_cartesian_2d(xr, yr)
+        .map_err(err)
+}
+
+/// CSS pixels right of the plotting area taken by a heatmap's colour bar and its labels.
+const COLOUR_BAR_WIDTH: f64 = 92.0;
+
 fn draw<DB, X, Y>(
     root: &DrawingArea<DB, Shift>,
     fig: &Figure,
     theme: &Theme,
     scale: f64,
     raster: Raster,
-    xr: X,
-    yr: Y,
+    xr: impl Fn() -> X,
+    yr: impl Fn() -> Y,
 ) -> Result<(f64, f64, f64, f64), RenderError>
 where
     DB: DrawingBackend,
@@ -290,13 +459,27 @@ where
 {
     let fg = theme.foreground;
     let font = |size: f64| ("sans-serif", size * scale).into_font().color(&fg);
-    let mut chart = ChartBuilder::on(root)
-        .caption(&fig.title, font(15.0))
-        .margin(px(10.0, scale))
-        .x_label_area_size(px(42.0, scale))
-        .y_label_area_size(px(64.0, scale))
-        .build_cartesian_2d(xr, yr)
-        .map_err(err)?;
+    let entries = legend_entries(fig);
+    let legend = Legend::measure(root, &entries, scale)?;
+
+    // Where the legend can go without covering data: a trial layout gives the pixels.
+    let mut placement = Placement::None;
+    if !entries.is_empty() {
+        let trial = build(root, fig, theme, scale, xr(), yr())?;
+        placement = match free_corner(&trial, fig, legend.size, scale) {
+            Some((x, y)) => Placement::Inside(x, y),
+            None => Placement::Below,
+        };
+        root.fill(&theme.background).map_err(err)?;
+    }
+    let (w, h) = root.dim_in_pixel();
+    let band_h = if placement == Placement::Below {
+        legend.band_height(w, scale).min(h / 3)
+    } else {
+        0
+    };
+    let (area, band) = root.split_vertically(h.saturating_sub(band_h));
+    let mut chart = build(&area, fig, theme, scale, xr(), yr())?;
 
     chart
         .configure_mesh()
@@ -320,6 +503,8 @@ where
             Raster::Cells => draw_heatmap(&mut chart, h)?,
             Raster::Bitmap => blit_heatmap(&mut chart, h, theme)?,
         }
+        let (xs, ys) = chart.plotting_area().get_pixel_range();
+        draw_colour_bar(&area, h, (xs.end, ys.start, ys.end), theme, scale)?;
     }
 
     if fig.origin_lines {
@@ -344,14 +529,17 @@ where
         }
     }
 
-    let legend = draw_lines_and_markers(&mut chart, fig, theme, scale)?;
-    if !legend.is_empty() {
-        draw_legend(
+    draw_lines_and_markers(&mut chart, fig, theme, scale)?;
+    match placement {
+        Placement::Inside(x, y) => legend.draw_box(
             &chart.plotting_area().strip_coord_spec(),
-            &legend,
+            &entries,
+            (x, y),
             theme,
             scale,
-        )?;
+        )?,
+        Placement::Below => legend.draw_rows(&band, &entries, theme, scale)?,
+        Placement::None => {}
     }
     let (xs, ys) = chart.plotting_area().get_pixel_range();
     Ok((
@@ -360,6 +548,110 @@ where
         f64::from(xs.end),
         f64::from(ys.end),
     ))
+}
+
+/// The labelled series of a figure, in order: its legend entries.
+fn legend_entries(fig: &Figure) -> Vec<(&str, LineStyle)> {
+    fig.series
+        .iter()
+        .filter(|s| !s.label.is_empty())
+        .map(|s| (s.label.as_str(), s.style))
+        .collect()
+}
+
+/// Picks a corner (or the middle of the top or bottom edge) of the plotting area where a
+/// legend box of `size` backend pixels covers no line, marker or heatmap cell; `None` when
+/// every place would cover data. Returns the box's top-left in plotting-area pixels.
+fn free_corner<DB, X, Y>(
+    chart: &ChartContext<'_, DB, Cartesian2d<X, Y>>,
+    fig: &Figure,
+    size: (i32, i32),
+    scale: f64,
+) -> Option<(i32, i32)>
+where
+    DB: DrawingBackend,
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let (xs, ys) = chart.plotting_area().get_pixel_range();
+    let (aw, ah) = (xs.end - xs.start, ys.end - ys.start);
+    let (bw, bh) = size;
+    let pad = px(6.0, scale) as i32;
+    if bw + 2 * pad > aw || bh + 2 * pad > ah {
+        return None;
+    }
+    let (right, bottom, middle) = (aw - bw - pad, ah - bh - pad, (aw - bw) / 2);
+    let spots = [
+        (right, pad),
+        (pad, pad),
+        (right, bottom),
+        (pad, bottom),
+        (middle, pad),
+        (middle, bottom),
+    ];
+    // A margin around the box keeps it clear of lines that pass just outside it.
+    let m = px(3.0, scale) as i32;
+    let mut free = [true; 6];
+    let to_area = |p: (f64, f64)| {
+        let (x, y) = chart.backend_coord(&p);
+        (x - xs.start, y - ys.start)
+    };
+    if let Some(h) = &fig.heatmap {
+        let (x0, y0) = to_area((h.x_edges.0, h.y_edges.1));
+        let (x1, y1) = to_area((h.x_edges.1, h.y_edges.0));
+        for (k, &(sx, sy)) in spots.iter().enumerate() {
+            if sx < x1.max(x0) && sx + bw > x0.min(x1) && sy < y1.max(y0) && sy + bh > y0.min(y1) {
+                free[k] = false;
+            }
+        }
+    }
+    let mut mark = |x: i32, y: i32| {
+        for (k, &(sx, sy)) in spots.iter().enumerate() {
+            if x >= sx - m && x <= sx + bw + m && y >= sy - m && y <= sy + bh + m {
+                free[k] = false;
+            }
+        }
+    };
+    let step = px(3.0, scale).max(1) as i32;
+    for s in &fig.series {
+        for seg in segments(s, fig).0 {
+            let mut prev: Option<(i32, i32)> = None;
+            for &p in &seg {
+                let (x, y) = to_area(p);
+                if let Some((px0, py0)) = prev {
+                    // Sample the segment so a long straight stretch is seen too.
+                    let n = ((x - px0).abs().max((y - py0).abs()) / step).clamp(1, 400);
+                    for i in 1..=n {
+                        mark(px0 + (x - px0) * i / n, py0 + (y - py0) * i / n);
+                    }
+                } else {
+                    mark(x, y);
+                }
+                prev = Some((x, y));
+            }
+        }
+    }
+    for mk in &fig.markers {
+        if !(mk.at.0.is_finite() && mk.at.1.is_finite()) {
+            continue;
+        }
+        let (x, y) = to_area(mk.at);
+        mark(x, y);
+        if !mk.label.is_empty() {
+            // The label runs right of the point, above it (see draw_lines_and_markers).
+            let w = (mk.label.chars().count() as f64 * 7.0 * scale) as i32;
+            let (dx, dy) = (px(8.0, scale) as i32, px(16.0, scale) as i32);
+            for i in 0..=4 {
+                mark(x + dx + w * i / 4, y - dy);
+                mark(x + dx + w * i / 4, y - dy / 2);
+            }
+        }
+    }
+    spots
+        .iter()
+        .zip(free)
+        .find(|(_, f)| *f)
+        .map(|(&spot, _)| spot)
 }
 
 /// Fills the heatmap's cells (one rectangle each; blank where the value is not finite).
@@ -595,48 +887,90 @@ where
     Ok(legend)
 }
 
-/// Draws the legend box in the upper-right corner of the plotting area.
+/// A legend's measured entries.
 ///
 /// Drawn here rather than with plotters' series labels because those measure text through
 /// a styled DOM element on the web, which a strict Content-Security-Policy blocks; this
 /// measures through the backend (the canvas's own `measureText`).
-fn draw_legend<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    entries: &[(&str, LineStyle)],
-    theme: &Theme,
-    scale: f64,
-) -> Result<(), RenderError> {
-    let font = ("sans-serif", 12.0 * scale)
-        .into_font()
-        .color(&theme.foreground)
-        .pos(Pos::new(HPos::Left, VPos::Center));
-    let pad = px(6.0, scale) as i32;
-    let swatch = px(24.0, scale) as i32;
-    let gap = px(6.0, scale) as i32;
-    let line_h = px(17.0, scale) as i32;
-    let mut text_w = 0;
-    for (label, _) in entries {
-        let (w, _) = area.estimate_text_size(label, &font).map_err(err)?;
-        text_w = text_w.max(w as i32);
+struct Legend {
+    /// Text width of each entry, backend pixels.
+    widths: Vec<i32>,
+    /// The box's size when drawn inside the plot, backend pixels.
+    size: (i32, i32),
+}
+
+impl Legend {
+    fn font(theme: &Theme, scale: f64) -> TextStyle<'static> {
+        ("sans-serif", 12.0 * scale)
+            .into_font()
+            .color(&theme.foreground)
+            .pos(Pos::new(HPos::Left, VPos::Center))
     }
-    let (w, _) = area.dim_in_pixel();
-    let box_w = pad + swatch + gap + text_w + pad;
-    let box_h = pad * 2 + line_h * entries.len() as i32;
-    let x0 = (w as i32 - box_w - pad).max(0);
-    let y0 = pad;
-    area.draw(&Rectangle::new(
-        [(x0, y0), (x0 + box_w, y0 + box_h)],
-        theme.background.mix(0.88).filled(),
-    ))
-    .map_err(err)?;
-    area.draw(&Rectangle::new(
-        [(x0, y0), (x0 + box_w, y0 + box_h)],
-        theme.grid.stroke_width(1),
-    ))
-    .map_err(err)?;
-    for (i, (label, style)) in entries.iter().enumerate() {
-        let y = y0 + pad + line_h * i as i32 + line_h / 2;
-        let x = x0 + pad;
+
+    fn measure<DB: DrawingBackend>(
+        area: &DrawingArea<DB, Shift>,
+        entries: &[(&str, LineStyle)],
+        scale: f64,
+    ) -> Result<Self, RenderError> {
+        let font = ("sans-serif", 12.0 * scale).into_text_style(area);
+        let mut widths = Vec::with_capacity(entries.len());
+        for (label, _) in entries {
+            let (w, _) = area.estimate_text_size(label, &font).map_err(err)?;
+            widths.push(w as i32);
+        }
+        let (pad, swatch, gap, line_h) = Self::metrics(scale);
+        let text_w = widths.iter().copied().max().unwrap_or(0);
+        let size = (
+            pad + swatch + gap + text_w + pad,
+            pad * 2 + line_h * entries.len() as i32,
+        );
+        Ok(Self { widths, size })
+    }
+
+    /// Padding, swatch length, gap after the swatch and line height, backend pixels.
+    fn metrics(scale: f64) -> (i32, i32, i32, i32) {
+        (
+            px(6.0, scale) as i32,
+            px(24.0, scale) as i32,
+            px(6.0, scale) as i32,
+            px(17.0, scale) as i32,
+        )
+    }
+
+    /// Entries laid out in rows across `width`: the start x of each entry and its row.
+    fn rows(&self, width: u32, scale: f64) -> Vec<(i32, i32)> {
+        let (pad, swatch, gap, _) = Self::metrics(scale);
+        let spacing = px(16.0, scale) as i32;
+        let left = px(64.0, scale) as i32;
+        let limit = (width as i32 - pad).max(left + 1);
+        let (mut x, mut row) = (left, 0);
+        let mut out = Vec::with_capacity(self.widths.len());
+        for &w in &self.widths {
+            let need = swatch + gap + w;
+            if x > left && x + need > limit {
+                x = left;
+                row += 1;
+            }
+            out.push((x, row));
+            x += need + spacing;
+        }
+        out
+    }
+
+    /// Height of the rows under the chart, backend pixels.
+    fn band_height(&self, width: u32, scale: f64) -> u32 {
+        let (pad, _, _, line_h) = Self::metrics(scale);
+        let rows = self.rows(width, scale).last().map_or(0, |&(_, r)| r + 1);
+        (rows * line_h + pad).max(0) as u32
+    }
+
+    fn swatch<DB: DrawingBackend>(
+        area: &DrawingArea<DB, Shift>,
+        (x, y): (i32, i32),
+        style: &LineStyle,
+        theme: &Theme,
+        scale: f64,
+    ) -> Result<(), RenderError> {
         let stroke = theme
             .color(style.ink.index())
             .stroke_width(px(style.width, scale));
@@ -650,12 +984,125 @@ fn draw_legend<DB: DrawingBackend>(
             area.draw(&PathElement::new(vec![(a, y), (b.max(a + 1), y)], stroke))
                 .map_err(err)?;
         }
-        area.draw(&Text::new(
-            label.to_string(),
-            (x + swatch + gap, y),
-            font.clone(),
+        Ok(())
+    }
+
+    /// A box with its top-left at `at` (plotting-area pixels), over a place free of data.
+    fn draw_box<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        entries: &[(&str, LineStyle)],
+        (x0, y0): (i32, i32),
+        theme: &Theme,
+        scale: f64,
+    ) -> Result<(), RenderError> {
+        let (pad, swatch, gap, line_h) = Self::metrics(scale);
+        let (box_w, box_h) = self.size;
+        area.draw(&Rectangle::new(
+            [(x0, y0), (x0 + box_w, y0 + box_h)],
+            theme.background.mix(0.88).filled(),
         ))
         .map_err(err)?;
+        area.draw(&Rectangle::new(
+            [(x0, y0), (x0 + box_w, y0 + box_h)],
+            theme.grid.stroke_width(1),
+        ))
+        .map_err(err)?;
+        let font = Self::font(theme, scale);
+        for (i, (label, style)) in entries.iter().enumerate() {
+            let y = y0 + pad + line_h * i as i32 + line_h / 2;
+            let x = x0 + pad;
+            Self::swatch(area, (x, y), style, theme, scale)?;
+            area.draw(&Text::new(
+                label.to_string(),
+                (x + swatch + gap, y),
+                font.clone(),
+            ))
+            .map_err(err)?;
+        }
+        Ok(())
+    }
+
+    /// Rows of entries in `band`, the strip under the chart.
+    fn draw_rows<DB: DrawingBackend>(
+        &self,
+        band: &DrawingArea<DB, Shift>,
+        entries: &[(&str, LineStyle)],
+        theme: &Theme,
+        scale: f64,
+    ) -> Result<(), RenderError> {
+        let (_, swatch, gap, line_h) = Self::metrics(scale);
+        let (w, _) = band.dim_in_pixel();
+        let font = Self::font(theme, scale);
+        for ((label, style), (x, row)) in entries.iter().zip(self.rows(w, scale)) {
+            let y = row * line_h + line_h / 2;
+            Self::swatch(band, (x, y), style, theme, scale)?;
+            band.draw(&Text::new(
+                label.to_string(),
+                (x + swatch + gap, y),
+                font.clone(),
+            ))
+            .map_err(err)?;
+        }
+        Ok(())
+    }
+}
+
+/// A heatmap's colour bar right of the plotting area (`right` edge, `top`..`bottom` in
+/// backend pixels of `area`): the colour map from low (bottom) to high (top), its ends
+/// and middle labelled, and the metric with its unit written along it.
+fn draw_colour_bar<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    h: &crate::figure::Heatmap,
+    (right, top, bottom): (i32, i32, i32),
+    theme: &Theme,
+    scale: f64,
+) -> Result<(), RenderError> {
+    let (lo, hi) = h.scale;
+    if bottom - top < 8 || !(lo.is_finite() && hi.is_finite()) {
+        return Ok(());
+    }
+    let x0 = right + px(12.0, scale) as i32;
+    let x1 = x0 + px(12.0, scale) as i32;
+    let n = (bottom - top).clamp(2, 128);
+    for j in 0..n {
+        let ya = bottom - (bottom - top) * j / n;
+        let yb = bottom - (bottom - top) * (j + 1) / n;
+        let colour = crate::theme::viridis((f64::from(j) + 0.5) / f64::from(n));
+        area.draw(&Rectangle::new([(x0, yb), (x1, ya)], colour.filled()))
+            .map_err(err)?;
+    }
+    area.draw(&Rectangle::new(
+        [(x0, top), (x1, bottom)],
+        theme.grid.stroke_width(1),
+    ))
+    .map_err(err)?;
+    let font = ("sans-serif", 11.0 * scale)
+        .into_font()
+        .color(&theme.foreground);
+    let label_x = x1 + px(4.0, scale) as i32;
+    let ends = [
+        (hi, top, VPos::Top),
+        ((lo + hi) / 2.0, (top + bottom) / 2, VPos::Center),
+        (lo, bottom, VPos::Bottom),
+    ];
+    for (v, y, vpos) in ends {
+        area.draw(&Text::new(
+            short_label(v, theme.decimal_comma),
+            (label_x, y),
+            font.clone().pos(Pos::new(HPos::Left, vpos)),
+        ))
+        .map_err(err)?;
+    }
+    if !h.label.is_empty() {
+        let along = ("sans-serif", 12.0 * scale)
+            .into_font()
+            .color(&theme.foreground)
+            .transform(FontTransform::Rotate90)
+            .pos(Pos::new(HPos::Center, VPos::Top));
+        let x = right + px(COLOUR_BAR_WIDTH - 4.0, scale) as i32;
+        area.draw(&Text::new(h.label.clone(), (x, (top + bottom) / 2), along))
+            .map_err(err)?;
     }
     Ok(())
 }
@@ -752,13 +1199,22 @@ mod tests {
             svg.contains(&hex(lo)) && svg.contains(&hex(hi)),
             "both ends of the colour map"
         );
+        // The same map with every cell undefined: the same axes, legend and colour bar.
         let without = {
+            let mut blank = fig.clone();
+            if let Some(h) = &mut blank.heatmap {
+                h.values = vec![f64::NAN; 12];
+            }
             let mut s = String::new();
             let root = SVGBackend::with_string(&mut s, (640, 360)).into_drawing_area();
-            render(&root, &sample(), &Theme::LIGHT, 1.0).unwrap();
+            render(&root, &blank, &Theme::LIGHT, 1.0).unwrap();
             drop(root);
             s
         };
+        assert!(
+            svg.contains("metric [s]"),
+            "the colour bar names the metric and unit"
+        );
         assert_eq!(
             svg.matches("<rect").count() - without.matches("<rect").count(),
             11
@@ -781,7 +1237,7 @@ mod tests {
         });
         let mut svg = String::new();
         {
-            let root = SVGBackend::with_string(&mut svg, (160, 120)).into_drawing_area();
+            let root = SVGBackend::with_string(&mut svg, (320, 160)).into_drawing_area();
             render_with(&root, &fig, &Theme::LIGHT, 1.0, Raster::Bitmap).unwrap();
         }
         let hex = |c: RGBColor| format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2);
@@ -810,6 +1266,104 @@ mod tests {
         assert_eq!(tick_label(24_000.0, false), "24000");
         assert_eq!(tick_label(0.25, true), "0,25");
         assert_eq!(tick_label(0.0, true), "0");
+    }
+
+    #[test]
+    fn held_axes_keep_their_ranges_and_widen_only_for_data_that_leaves_them() {
+        let mut fig = sample();
+        fig.x.range = (0.0, 1.2);
+        fig.y.range = (-0.5, 0.5);
+        hold_axes(&mut fig, Some(((0.0, 1.5), (-1.0, 1.0))));
+        assert_eq!((fig.x.range, fig.y.range), ((0.0, 1.5), (-1.0, 1.0)));
+        fig.y.range = (-2.0, 0.5);
+        hold_axes(&mut fig, Some(((0.0, 1.5), (-1.0, 1.0))));
+        assert_eq!(fig.y.range, (-2.0, 1.0));
+        let mut drawing = Figure::schematic(
+            "s",
+            Axis::linear("x", "m", (0.0, 1.0)),
+            Axis::linear("y", "m", (0.0, 1.0)),
+        );
+        hold_axes(&mut drawing, Some(((0.0, 5.0), (0.0, 5.0))));
+        assert_eq!(drawing.x.range, (0.0, 1.0));
+    }
+
+    #[test]
+    fn log_axes_label_enough_ticks_to_read_a_value() {
+        // Two decades: 1, 2, 5 in each.
+        assert_eq!(
+            log_ticks(0.1, 10.0),
+            vec![0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0]
+        );
+        // Under one decade: still several labelled values.
+        assert_eq!(log_ticks(0.5, 3.0), vec![0.5, 0.7, 1.0, 1.5, 2.0, 3.0]);
+        assert!(log_ticks(1.1, 1.9).len() >= 2);
+        // Many decades: the decades alone.
+        assert_eq!(log_ticks(1e-3, 1e2).len(), 6);
+        assert!(log_ticks(0.0, 1.0).is_empty());
+    }
+
+    /// The top of the legend box in an SVG rendering, if a box was drawn.
+    fn legend_box_y(svg: &str) -> Option<f64> {
+        // The legend box is the only rectangle filled with the background at 88 % opacity.
+        let at = svg.find("opacity=\"0.88\"")?;
+        let start = svg[..at].rfind("<rect")?;
+        let y = svg[start..].split("y=\"").nth(1)?.split('"').next()?;
+        y.parse().ok()
+    }
+
+    #[test]
+    fn the_legend_goes_where_the_curves_are_not() {
+        // A curve along the top of the plot: the legend moves to the bottom.
+        let mut fig = sample();
+        fig.markers.clear();
+        fig.series[0].points = (0..=50).map(|i| (f64::from(i) / 50.0, 0.9)).collect();
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+            render(&root, &fig, &Theme::LIGHT, 1.0).unwrap();
+        }
+        let y = legend_box_y(&svg).expect("a legend box inside the plot");
+        assert!(
+            y > 180.0,
+            "legend in the lower half, clear of the curve: y = {y}"
+        );
+        // Curves everywhere: the legend goes under the chart, outside the plotting area.
+        fig.series = (0..12)
+            .map(|k| {
+                let level = -1.0 + f64::from(k) / 6.0;
+                Series::new(
+                    format!("level {k}"),
+                    vec![(0.0, level), (1.0, level)],
+                    LineStyle::solid(Ink::Blue, 1.0),
+                )
+            })
+            .collect();
+        let mut svg = String::new();
+        let g = {
+            let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+            render(&root, &fig, &Theme::LIGHT, 1.0).unwrap()
+        };
+        assert!(legend_box_y(&svg).is_none(), "no box over the data");
+        assert!(svg.contains("level 11"), "every entry still drawn");
+        assert!(
+            g.area.3 < 300.0,
+            "room left under the chart for the legend rows"
+        );
+    }
+
+    #[test]
+    fn released_axes_ease_from_the_held_ranges_to_the_figures_own() {
+        let mut fig = sample();
+        fig.x.range = (0.0, 1.0);
+        ease_axes(&mut fig, Some(((0.0, 3.0), (-1.0, 1.0))), 0.5);
+        assert_eq!(fig.x.range, (0.0, 2.0));
+        let mut fig = sample();
+        fig.x = Axis::log("f", "Hz", (1.0, 100.0));
+        ease_axes(&mut fig, Some(((1.0, 10_000.0), (-1.0, 1.0))), 0.5);
+        assert!((fig.x.range.1 - 1000.0).abs() < 1e-9);
+        let mut fig = sample();
+        ease_axes(&mut fig, Some(((0.0, 3.0), (-5.0, 5.0))), 1.0);
+        assert_eq!(fig.x.range, (0.0, 1.0), "at 1 the figure's own ranges");
     }
 
     #[test]

@@ -7,7 +7,7 @@ use crate::demos::{self, Demo, Frame};
 use crate::export;
 use crate::i18n::{tr, Lang};
 use crate::params::{resolve_query, Notice, Params};
-use crate::render::{render, render_with, PlotGeometry, Raster};
+use crate::render::{ease_axes, hold_axes, render, render_with, AxisRanges, PlotGeometry, Raster};
 use crate::spec::DemoSpec;
 use crate::theme::Theme;
 use plotters::prelude::{IntoDrawingArea, SVGBackend};
@@ -310,6 +310,13 @@ pub struct Session {
     schematic_canvas: Option<HtmlCanvasElement>,
     frame: Option<Frame>,
     geometry: Vec<Option<PlotGeometry>>,
+    /// Whether a control is being dragged: axes then hold (see [`hold_axes`]).
+    dragging: bool,
+    /// Each plot's axis ranges as last drawn, `(x, y)`.
+    shown: Vec<Option<AxisRanges>>,
+    /// The ranges held when the last drag ended, and how far (0…1) the axes have moved
+    /// from them to the figures' own (see [`ease_axes`]).
+    released: Option<(Vec<Option<AxisRanges>>, f64)>,
 }
 
 fn theme(dark: bool) -> Theme {
@@ -361,6 +368,9 @@ impl Session {
             schematic_canvas: None,
             frame: None,
             geometry: vec![None; n],
+            dragging: false,
+            shown: vec![None; n],
+            released: None,
         })
     }
 
@@ -450,6 +460,16 @@ impl Session {
         } else {
             1.0
         };
+        for (i, fig) in frame.figures.iter_mut().enumerate() {
+            if self.dragging {
+                hold_axes(fig, self.shown.get(i).copied().flatten());
+            } else if let Some((from, f)) = &self.released {
+                ease_axes(fig, from.get(i).copied().flatten(), *f);
+            }
+            if let Some(slot) = self.shown.get_mut(i) {
+                *slot = Some((fig.x.range, fig.y.range));
+            }
+        }
         for (i, (canvas, fig)) in self.canvases.iter().zip(&frame.figures).enumerate() {
             let Some(canvas) = canvas else { continue };
             let Some(backend) = Canvas::new(canvas) else {
@@ -541,6 +561,31 @@ impl Session {
             }
         }
         to_js(&applied)
+    }
+
+    /// Tells the session a control is being dragged (`true`) or was released (`false`).
+    /// While dragging, every plot keeps its axis ranges unless the data would leave them;
+    /// the next update after release draws each figure with its own ranges again.
+    #[wasm_bindgen(js_name = setDragging)]
+    pub fn set_dragging(&mut self, on: bool) {
+        if self.dragging && !on {
+            self.released = Some((self.shown.clone(), 0.0));
+        }
+        if on {
+            self.released = None;
+        }
+        self.dragging = on;
+    }
+
+    /// Sets how far (0…1) the axes have moved, since the last drag ended, from the ranges
+    /// they were held at to each figure's own; the page steps this over a few frames so
+    /// the rescale is smooth. 1 (or anything not below 1) ends the easing.
+    #[wasm_bindgen(js_name = easeAxes)]
+    pub fn ease_axes(&mut self, f: f64) {
+        match &mut self.released {
+            Some((_, at)) if f.is_finite() && f < 1.0 => *at = f.max(0.0),
+            _ => self.released = None,
+        }
     }
 
     /// Restores every parameter's default.

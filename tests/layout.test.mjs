@@ -1,0 +1,174 @@
+// End to end, layout ("drag and see"): for every demo (read from the page's menu) and every
+// window size students and lecturers use, each parameter control (slider, number box,
+// choice, toggle, preset button) is scrolled into the middle of the window, and the demo's
+// primary plot must then be wholly inside the window, with the control itself uncovered;
+// the same in the embed view, where one plot and two sliders fit a 400 × 600 frame without
+// scrolling. Screenshots of every demo mid-drag at 1280 × 800 and 360 × 740 land in
+// target/screenshots/. One browser; one page per window size, switching demos in place.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { serve } from './support/server.mjs';
+import { launch, open, waitForReadouts, SHOTS } from './support/browser.mjs';
+
+const SIZES = [[1280, 800], [1440, 900], [1920, 1080], [768, 1024], [360, 740], [740, 360]];
+const EMBED_SIZES = [[800, 720], [400, 600]];
+
+let server;
+let browser;
+let ids;
+
+before(async () => {
+  server = await serve();
+  browser = await launch();
+  const { page, context } = await open(browser, server.url);
+  ids = await page.$$eval('#demo-select option', (os) => os.map((o) => o.value));
+  await context.close();
+});
+
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+/** Opens demo `id` in place (as the menu does) and waits until it has drawn and settled. */
+async function switchTo(page, id) {
+  await page.evaluate((demo) => {
+    const select = document.getElementById('demo-select');
+    select.value = demo;
+    select.dispatchEvent(new Event('change'));
+  }, id);
+  await page.waitForFunction((demo) => document.querySelector('.workspace')?.dataset.demo === demo, id);
+  await settle(page);
+}
+
+async function settle(page) {
+  await waitForReadouts(page);
+  // Two frames: the stage is sized in one, and a resize it causes is answered in the next.
+  for (let i = 0; i < 3; i++) await page.evaluate(() => new Promise((ok) => requestAnimationFrame(() => ok())));
+}
+
+/**
+ * In the page: scrolls every visible parameter control into the middle of the window and
+ * checks that the primary plot's canvas is inside the window and the control not covered.
+ */
+function checkEveryControl() {
+  const failures = [];
+  const ws = document.querySelector('.workspace');
+  const primary = ws.dataset.primary;
+  const plot = document.querySelector(`canvas[data-plot="${primary}"]`);
+  if (!plot) return [`no primary plot ${primary}`];
+  const controls = [...document.querySelectorAll(
+    '.controls input[type=range], .controls input[type=number], .controls select, .controls input[type=checkbox], .controls button.preset',
+  )].filter((c) => c.offsetParent !== null);
+  if (!controls.length) failures.push('no controls');
+  const vw = document.documentElement.clientWidth;
+  const vh = window.innerHeight;
+  for (const c of controls) {
+    c.scrollIntoView({ block: 'center', inline: 'nearest' });
+    const name = `${c.dataset.key || c.textContent.trim()}(${c.type || c.tagName.toLowerCase()})`;
+    const r = plot.getBoundingClientRect();
+    if (r.top < -0.5 || r.left < -0.5 || r.bottom > vh + 0.5 || r.right > vw + 0.5 || r.height < 100) {
+      failures.push(`${name}: plot at ${Math.round(r.left)},${Math.round(r.top)}–${Math.round(r.right)},${Math.round(r.bottom)} in ${vw}×${vh}`);
+      continue;
+    }
+    const b = c.getBoundingClientRect();
+    const hit = document.elementFromPoint(b.left + b.width / 2, b.top + b.height / 2);
+    const label = c.id ? document.querySelector(`label[for="${c.id}"]`) : null;
+    if (!hit || !(c === hit || c.contains(hit) || (label && label.contains(hit)))) {
+      failures.push(`${name}: covered by ${hit ? hit.className || hit.tagName : 'nothing'} at y=${Math.round(b.top)}`);
+    }
+  }
+  const overflow = document.documentElement.scrollWidth - document.documentElement.clientWidth;
+  if (overflow > 0) failures.push(`horizontal overflow ${overflow}px`);
+  window.scrollTo(0, 0);
+  return failures;
+}
+
+async function checkSize(url, [w, h], label) {
+  const { page, errors, context } = await open(browser, url, { viewport: { width: w, height: h } });
+  const failures = [];
+  for (const id of ids) {
+    await switchTo(page, id);
+    const found = await page.evaluate(checkEveryControl);
+    failures.push(...found.map((f) => `${id} at ${w}×${h}${label}: ${f}`));
+  }
+  assert.deepEqual(errors, []);
+  await context.close();
+  return failures;
+}
+
+for (const size of SIZES) {
+  test(`${size[0]} × ${size[1]}: the primary plot stays in view beside every control of every demo`, async () => {
+    assert.deepEqual(await checkSize(server.url, size, ''), []);
+  });
+}
+
+for (const size of EMBED_SIZES) {
+  test(`embed view at ${size[0]} × ${size[1]}: the primary plot stays in view beside every control`, async () => {
+    assert.deepEqual(await checkSize(`${server.url}?embed=1`, size, ' (embed)'), []);
+  });
+}
+
+test('embed view: one plot and two sliders fit a 400 × 600 frame without scrolling, requested plot first', async () => {
+  const context = await browser.newContext({ viewport: { width: 400, height: 600 } });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('console', (m) => m.type() === 'error' && errors.push(m.text()));
+  const failures = [];
+  for (const id of ids) {
+    await page.goto(`${server.url}?demo=${id}`);
+    await page.waitForSelector('html[data-ready="true"]');
+    const { plots, sliders } = await page.evaluate(() => ({
+      plots: [...document.querySelectorAll('canvas[data-plot]:not([data-plot="schematic"])')].map((c) => c.dataset.plot),
+      sliders: [...document.querySelectorAll('.controls input[type=range]')].map((r) => r.dataset.key).slice(0, 2),
+    }));
+    // Ask for the last plot, so "requested first" is not the default order.
+    const plot = plots[plots.length - 1];
+    await page.goto(`${server.url}?demo=${id}&embed=1&plots=${plot}&controls=${sliders.join(',')}`);
+    await page.waitForSelector('html[data-ready="true"]');
+    await settle(page);
+    const boxes = await page.evaluate(([p, keys]) => {
+      const rect = (el) => {
+        const r = el.getBoundingClientRect();
+        return [r.left, r.top, r.right, r.bottom];
+      };
+      return {
+        plot: rect(document.querySelector(`canvas[data-plot="${p}"]`)),
+        sliders: keys.map((k) => rect(document.querySelector(`input[type=range][data-key="${k}"]`))),
+        scrollY: window.scrollY,
+        tall: document.documentElement.scrollHeight - window.innerHeight,
+      };
+    }, [plot, sliders]);
+    for (const [name, [l, t, r, b]] of [['plot', boxes.plot], ...boxes.sliders.map((s, i) => [sliders[i], s])]) {
+      if (l < 0 || t < 0 || r > 400 || b > 600) failures.push(`${id}: ${name} at ${[l, t, r, b].map(Math.round)} outside 400×600`);
+    }
+    if (boxes.scrollY !== 0) failures.push(`${id}: scrolled`);
+    if (boxes.tall > 0) failures.push(`${id}: the page is ${boxes.tall}px taller than the frame`);
+    if (id === ids[0] || id === 'resonance') await page.screenshot({ path: `${SHOTS}layout-embed-compact-${id}-400x600.png` });
+  }
+  assert.deepEqual(failures, []);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+for (const [w, h] of [[1280, 800], [360, 740]]) {
+  test(`screenshots of every demo mid-drag at ${w} × ${h}`, async () => {
+    const { page, errors, context } = await open(browser, server.url, { viewport: { width: w, height: h }, hasTouch: w < 600 });
+    for (const id of ids) {
+      await switchTo(page, id);
+      const slider = page.locator('.controls input[type=range]').first();
+      await slider.evaluate((s) => s.scrollIntoView({ block: 'center' }));
+      const box = await slider.boundingBox();
+      const y = box.y + box.height / 2;
+      await page.mouse.move(box.x + box.width * 0.3, y);
+      await page.mouse.down();
+      await page.mouse.move(box.x + box.width * 0.55, y, { steps: 4 });
+      await settle(page);
+      await page.screenshot({ path: `${SHOTS}layout-${id}-${w}x${h}-drag.png` });
+      await page.mouse.up();
+    }
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+}
