@@ -5,12 +5,13 @@
 // For every demo: every slider moved EVENTS times (input handler + the frame that redraws)
 // as p50/p95, the longest main-thread task seen while sliding, the time to the first plot
 // after navigation, and the bytes transferred before it. Prints Markdown tables.
-// Usage: node bench/lowend.mjs [events-per-slider]   (after scripts/build.sh)
+// Usage: node bench/lowend.mjs [events-per-slider] [demo,demo…]   (after scripts/build.sh)
 import { serve } from '../tests/support/server.mjs';
 import { launch } from '../tests/support/browser.mjs';
 import { quantile, installSlider, fraction } from './slide.mjs';
 
 const EVENTS = Math.max(10, Number(process.argv[2]) || 40);
+const ONLY = process.argv[3] ? new Set(process.argv[3].split(',')) : null;
 const CPU_SLOWDOWN = 4;
 const SLOW_4G = { offline: false, latency: 150, downloadThroughput: (1.6 * 1024 * 1024) / 8, uploadThroughput: (750 * 1024) / 8 };
 
@@ -54,7 +55,7 @@ async function main() {
     const probe = await browser.newPage();
     await probe.goto(server.url);
     await probe.waitForSelector('html[data-ready="true"]');
-    const ids = await probe.$$eval('#demo-select option', (os) => os.map((o) => o.value));
+    const ids = (await probe.$$eval('#demo-select option', (os) => os.map((o) => o.value))).filter((id) => !ONLY || ONLY.has(id));
     await probe.close();
     for (const id of ids) {
       // Loading: Slow 4G + 4× CPU, cold cache; bytes counted up to the first plot.

@@ -2,6 +2,7 @@
 //! alternatives.
 
 use super::{Metric, Results, P, X0};
+use crate::figure::Figure;
 use crate::format::{si, significant};
 
 pub(super) const SUMMARY: &str =
@@ -170,8 +171,8 @@ pub(super) fn describe_map(
         p.metric.relative_to(p.band),
         span_text(key.k.0, key.k.1, "N/m"),
         span_text(key.c.0, key.c.1, "N·s/m"),
-        key.n,
-        key.n,
+        r.grid,
+        r.grid,
         si(key.m, "kg", 3),
         best_text,
         selected_text,
@@ -238,4 +239,16 @@ pub(super) fn describe_response(p: &P, r: &Results) -> String {
         ),
         _ => "The selected design does not settle.".into(),
     }
+}
+
+/// A figure drawn from the coarse sweep while the full one runs, marked as provisional in
+/// its title and its description.
+pub(super) fn provisional(mut fig: Figure, r: &Results) -> Figure {
+    let (g, n) = (r.grid, r.key.n);
+    fig.title = format!("{} (provisional)", fig.title);
+    fig.description = format!(
+        "Provisional: from a coarse {g} × {g} grid while the {n} × {n} sweep runs. {}",
+        fig.description
+    );
+    fig
 }

@@ -128,3 +128,13 @@ pub(super) fn describe_histogram(
         None => format!("No draw has a finite {name}."),
     }
 }
+
+/// Marks a histogram drawn from the first `shown` draws while the full run of `full` draws
+/// continues as provisional, in its title and its description.
+pub(super) fn mark_provisional(fig: &mut crate::figure::Figure, shown: usize, full: usize) {
+    fig.title = format!("{} (provisional)", fig.title);
+    fig.description = format!(
+        "Provisional: from the first {shown} draws while the run of {full} continues. {}",
+        fig.description
+    );
+}
