@@ -8,6 +8,12 @@ import assert from 'node:assert/strict';
 import { serve } from './support/server.mjs';
 import { launch, open } from './support/browser.mjs';
 import { goldenState, assertReadoutsMatch } from './support/golden.mjs';
+import { readFileSync } from 'node:fs';
+
+// The page hooks (Session.refine, the `provisional` keys, web/main.js's slices) arrive with
+// bench/issue-13-hooks.patch; until the built site has them these tests are skipped.
+const built = readFileSync(new URL('../dist/zeta-app.js', import.meta.url), 'utf8');
+const skip = /\brefine\(/.test(built) ? false : 'needs the issue-13 page hooks (bench/issue-13-hooks.patch)';
 
 let server;
 let browser;
@@ -75,7 +81,7 @@ function slide(page, key, value, preset = '') {
   );
 }
 
-test('design: a moved mass shows a coarse map marked provisional, then the full sweep; a sweep overtaken by a preset is never shown', async () => {
+test('design: a moved mass shows a coarse map marked provisional, then the full sweep; a sweep overtaken by a preset is never shown', { skip }, async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=design`);
   await settled(page);
   await recordFinals(page, 'map');
@@ -103,7 +109,7 @@ test('design: a moved mass shows a coarse map marked provisional, then the full 
   await context.close();
 });
 
-test('uncertainty: a moved tolerance shows the first 1000 draws marked provisional, then the full run; an overtaken run is never shown', async () => {
+test('uncertainty: a moved tolerance shows the first 1000 draws marked provisional, then the full run; an overtaken run is never shown', { skip }, async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty`);
   await settled(page);
   await recordFinals(page, 'hist');
