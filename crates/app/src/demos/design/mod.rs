@@ -20,7 +20,7 @@ pub(crate) use stopwatch::Stopwatch;
 use super::Model;
 use crate::declare::{Declaration, Param, ReadoutDef};
 use crate::figure::Figure;
-use crate::spec::{PlotSpec, Preset};
+use crate::spec::PlotSpec;
 use zeta_solver::design::map::lowest;
 use zeta_solver::design::pareto::nearest_on_front;
 use zeta_solver::design::sweep::{body_acceleration_rms, KcMaps, KcSweepConfig, RoadInput};
@@ -279,7 +279,7 @@ impl Model for DesignSpace {
                     aspect: 1.35,
                 },
             ],
-            presets: presets(),
+            presets: text::presets(),
             ..Declaration::new("design", "Design space (k, c)", text::SUMMARY)
         }
     }
@@ -386,46 +386,6 @@ impl Model for DesignSpace {
             _ => Vec::new(),
         }
     }
-}
-
-fn presets() -> Vec<Preset> {
-    vec![
-        Preset {
-            label: "Settling-time map, 300 kg, ζ ≈ 0.37",
-            values: vec![
-                ("m", 300.0),
-                ("metric", 0.0),
-                ("k", 24_000.0),
-                ("c", 2_000.0),
-            ],
-        },
-        Preset {
-            label: "Laden car 500 kg, same parts",
-            values: vec![
-                ("m", 500.0),
-                ("metric", 0.0),
-                ("k", 24_000.0),
-                ("c", 2_000.0),
-            ],
-        },
-        Preset {
-            label: "Comfort map on a class C road",
-            values: vec![("metric", 2.0), ("road", 2.0), ("m", 300.0)],
-        },
-        Preset {
-            label: "Peak-rebound map, ζ = 0.7 design",
-            values: vec![
-                ("metric", 1.0),
-                ("m", 300.0),
-                ("k", 24_000.0),
-                ("c", 3_760.0),
-            ],
-        },
-        Preset {
-            label: "Fine grid 160 × 160",
-            values: vec![("n", 160.0), ("metric", 0.0)],
-        },
-    ]
 }
 
 #[cfg(test)]

@@ -20,7 +20,7 @@ use super::design::Stopwatch;
 use super::Model;
 use crate::declare::{Declaration, Param, ReadoutDef};
 use crate::figure::Figure;
-use crate::spec::{PlotSpec, Preset};
+use crate::spec::PlotSpec;
 use cache::McKey;
 use ranges::Ranges;
 use zeta_solver::design::monte_carlo::{yield_percent, McSamples, Spec};
@@ -312,7 +312,7 @@ impl Model for Uncertainty {
                     aspect: 1.5,
                 },
             ],
-            presets: presets(),
+            presets: text::presets(),
             ..Declaration::new("uncertainty", "Tolerance analysis", text::SUMMARY)
         }
     }
@@ -381,29 +381,6 @@ impl Model for Uncertainty {
         }
         figs
     }
-}
-
-fn presets() -> Vec<Preset> {
-    let car = |label, zeta| Preset {
-        label,
-        values: vec![
-            ("system", 0.0),
-            ("m", 300.0),
-            ("k", 24_000.0),
-            ("zeta", zeta),
-            ("dm", 10.0),
-        ],
-    };
-    let rlc = |label, pct| Preset {
-        label,
-        values: vec![("system", 1.0), ("dR", pct), ("dL", pct), ("dC", pct)],
-    };
-    vec![
-        car("ζ = 1 design under ±10 % mass", 1.0),
-        car("ζ = 0.7 design under ±10 % mass", 0.7),
-        rlc("RLC 5 % parts", 5.0),
-        rlc("RLC 20 % parts", 20.0),
-    ]
 }
 
 #[cfg(test)]
