@@ -156,7 +156,6 @@ fn progressive_updates_show_a_marked_coarse_sweep_then_exactly_the_full_one() {
     let coarse = demo.update(&params("m=420"));
     assert_eq!(number(&coarse, "grid_size"), 625.0);
     assert!(demo.provisional().contains(&"map") && demo.provisional().contains(&"grid_size"));
-    assert!(coarse.figures[0].title.ends_with("(provisional)"));
     assert!(coarse.figures[0]
         .description
         .starts_with("Provisional: from a coarse 25 × 25"));

@@ -243,10 +243,9 @@ pub(super) fn describe_response(p: &P, r: &Results) -> String {
 }
 
 /// A figure drawn from the coarse sweep while the full one runs, marked as provisional in
-/// its title and its description.
+/// its description (its title is left as it is: the map's already fills a phone's width).
 pub(super) fn provisional(mut fig: Figure, r: &Results) -> Figure {
     let (g, n) = (r.grid, r.key.n);
-    fig.title = format!("{} (provisional)", fig.title);
     fig.description = format!(
         "Provisional: from a coarse {g} × {g} grid while the {n} × {n} sweep runs. {}",
         fig.description
