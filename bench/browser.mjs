@@ -1,7 +1,7 @@
 // Browser benchmark: for every demo, the main-thread work of one slider event (input
 // handling plus the animation frame that redraws) as p50/p95 over ≥ 300 events, the time
 // to the first drawn plot on a cold load, and the bytes shipped. Prints a Markdown table.
-// Usage: node bench/browser.mjs [events-per-demo]   (after scripts/build.sh)
+// Usage: node bench/browser.mjs [events-per-demo] [demo,demo…]   (after scripts/build.sh)
 import { gzipSync } from 'node:zlib';
 import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
@@ -9,7 +9,9 @@ import { serve, DIST } from '../tests/support/server.mjs';
 import { launch } from '../tests/support/browser.mjs';
 import { quantile, installSlider, fraction } from './slide.mjs';
 
-const EVENTS = Math.max(300, Number(process.argv[2]) || 300);
+const EVENTS = Math.max(10, Number(process.argv[2]) || 300);
+// Optional second argument: only these demos (comma-separated ids).
+const ONLY = process.argv[3] ? new Set(process.argv[3].split(',')) : null;
 
 /** Runs in the page: moves sliders `n` times and times each event's work. */
 async function measureInPage([n, fractions]) {
@@ -27,7 +29,7 @@ async function main() {
     const probe = await browser.newPage();
     await probe.goto(server.url);
     await probe.waitForSelector('html[data-ready="true"]');
-    const ids = await probe.$$eval('#demo-select option', (os) => os.map((o) => o.value));
+    const ids = (await probe.$$eval('#demo-select option', (os) => os.map((o) => o.value))).filter((id) => !ONLY || ONLY.has(id));
     await probe.close();
     for (const id of ids) {
       const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
@@ -47,7 +49,10 @@ async function main() {
     await server.close();
   }
   // The two heavy computations the issues budget separately, read from the demos' own
-  // `compute_time` readouts (measured in wasm around the solver call).
+  // `compute_time` readouts (measured in wasm around the solver call). Pages that show a
+  // coarse study first (issue 13) are read once the full one is shown: its compute time is
+  // the sum of its slices.
+  const full = (page) => page.waitForFunction(() => !document.querySelector('[data-provisional]'));
   const compute = [];
   {
     const b2 = await launch();
@@ -63,6 +68,7 @@ async function main() {
         await page.fill('input[type=number][data-key="m"]', String(m));
         await page.press('input[type=number][data-key="m"]', 'Enter');
         await page.waitForFunction((mm) => new URLSearchParams(location.search).get('m') === String(mm), m);
+        await full(page);
         sweeps.push(await read());
       }
       sweeps.sort((a, b) => a - b);
@@ -74,6 +80,7 @@ async function main() {
         await page.fill('input[type=number][data-key="seed"]', String(i));
         await page.press('input[type=number][data-key="seed"]', 'Enter');
         await page.waitForFunction((sd) => new URLSearchParams(location.search).get('seed') === String(sd), i);
+        await full(page);
         runs.push(await read());
       }
       runs.sort((a, b) => a - b);

@@ -4,13 +4,15 @@
 // site served brotli-compressed and a cold cache.
 // For every demo: every slider moved EVENTS times (input handler + the frame that redraws)
 // as p50/p95, the longest main-thread task seen while sliding, the time to the first plot
-// after navigation, and the bytes transferred before it. Prints Markdown tables.
-// Usage: node bench/lowend.mjs [events-per-slider]   (after scripts/build.sh)
+// after navigation, the bytes transferred before it, and both again on a second visit (the
+// service worker then answers every file but the page). Prints Markdown tables.
+// Usage: node bench/lowend.mjs [events-per-slider] [demo,demo…]   (after scripts/build.sh)
 import { serve } from '../tests/support/server.mjs';
 import { launch } from '../tests/support/browser.mjs';
 import { quantile, installSlider, fraction } from './slide.mjs';
 
 const EVENTS = Math.max(10, Number(process.argv[2]) || 40);
+const ONLY = process.argv[3] ? new Set(process.argv[3].split(',')) : null;
 const CPU_SLOWDOWN = 4;
 const SLOW_4G = { offline: false, latency: 150, downloadThroughput: (1.6 * 1024 * 1024) / 8, uploadThroughput: (750 * 1024) / 8 };
 
@@ -54,7 +56,7 @@ async function main() {
     const probe = await browser.newPage();
     await probe.goto(server.url);
     await probe.waitForSelector('html[data-ready="true"]');
-    const ids = await probe.$$eval('#demo-select option', (os) => os.map((o) => o.value));
+    const ids = (await probe.$$eval('#demo-select option', (os) => os.map((o) => o.value))).filter((id) => !ONLY || ONLY.has(id));
     await probe.close();
     for (const id of ids) {
       // Loading: Slow 4G + 4× CPU, cold cache; bytes counted up to the first plot.
@@ -64,6 +66,18 @@ async function main() {
       await load.page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0, null, { timeout: 60000 });
       const firstPlot = await load.page.evaluate(() => performance.getEntriesByName('zeta:first-draw')[0].startTime);
       const bytes = load.bytes();
+      // Second visit, same network and CPU: from the service worker's cache once it controls
+      // the page (the navigation itself still goes to the network first).
+      await load.page.evaluate(() => navigator.serviceWorker?.ready);
+      const before = load.bytes();
+      await load.page.goto(`${server.url}?demo=${id}`);
+      await load.page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0, null, { timeout: 60000 });
+      const again = await load.page.evaluate(() => ({
+        ms: performance.getEntriesByName('zeta:first-draw')[0].startTime,
+        controlled: Boolean(navigator.serviceWorker?.controller),
+      }));
+      const secondPlot = again.controlled ? again.ms : NaN;
+      const secondBytes = load.bytes() - before;
       await load.context.close();
       // Sliding: 4× CPU, no network shaping (the page is loaded).
       const slide = await lowEndPage(browser, { network: false });
@@ -75,17 +89,17 @@ async function main() {
       const r = await slide.page.evaluate(slideInPage, [EVENTS, fractions]);
       await slide.context.close();
       const times = r.times.sort((a, b) => a - b);
-      rows.push({ id, sliders: r.sliders, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), longest: r.longest, firstPlot, bytes, wall: Date.now() - t0 });
+      rows.push({ id, sliders: r.sliders, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), longest: r.longest, firstPlot, bytes, secondPlot, secondBytes, wall: Date.now() - t0 });
     }
   } finally {
     await browser.close();
     await server.close();
   }
   console.log(`\nLow-end (4× CPU, 360 × 740 at DPR 2; loading on Slow 4G, brotli, cold cache; ${EVENTS} events per slider):\n`);
-  console.log('| demo | sliders | events | p50 (ms) | p95 (ms) | longest task (ms) | first plot (ms) | KB before first plot |');
-  console.log('| --- | --- | --- | --- | --- | --- | --- | --- |');
+  console.log('| demo | sliders | events | p50 (ms) | p95 (ms) | longest task (ms) | first plot (ms) | KB before first plot | second visit: first plot (ms) | second visit: KB |');
+  console.log('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |');
   for (const r of rows) {
-    console.log(`| ${r.id} | ${r.sliders} | ${r.n} | ${r.p50.toFixed(1)} | ${r.p95.toFixed(1)} | ${r.longest.toFixed(0)} | ${r.firstPlot.toFixed(0)} | ${(r.bytes / 1000).toFixed(0)} |`);
+    console.log(`| ${r.id} | ${r.sliders} | ${r.n} | ${r.p50.toFixed(1)} | ${r.p95.toFixed(1)} | ${r.longest.toFixed(0)} | ${r.firstPlot.toFixed(0)} | ${(r.bytes / 1000).toFixed(0)} | ${r.secondPlot.toFixed(0)} | ${(r.secondBytes / 1000).toFixed(0)} |`);
   }
 }
 

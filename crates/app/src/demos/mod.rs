@@ -66,6 +66,23 @@ pub trait Demo {
     fn tour(&self) -> Option<paper::Tour> {
         None
     }
+    /// Progressive studies (issue 13): when `on`, a demo with a heavy study (a large sweep,
+    /// a Monte Carlo run) answers [`Demo::update`] with a coarse study at once and leaves
+    /// the full one to [`Demo::refine`]. Off (the default, and in every native test) the
+    /// full study runs inside `update`, as before.
+    fn set_progressive(&mut self, _on: bool) {}
+    /// Does up to about `budget_ms` of the pending full study. `None`: nothing pending;
+    /// `Some(f)` with `f < 1`: that fraction done; `Some(1.0)`: the full study just
+    /// finished and the next [`Demo::update`] shows it. A study started for parameters that
+    /// have since moved on is dropped by the next `update`, never shown.
+    fn refine(&mut self, _budget_ms: f64) -> Option<f64> {
+        None
+    }
+    /// Keys of the readouts and plots of the last [`Demo::update`] that show a coarse,
+    /// provisional study while the full one runs (empty when everything shown is final).
+    fn provisional(&self) -> Vec<&'static str> {
+        Vec::new()
+    }
 }
 
 /// A demo in the one shape every demo has: a declaration (parameters and readouts as
@@ -116,6 +133,19 @@ pub trait Model: 'static {
     /// A guided tour with checked claims (see [`Demo::tour`]).
     fn tour(&self, _p: &Self::Params, _r: &Self::Results) -> Option<paper::Tour> {
         None
+    }
+
+    /// See [`Demo::set_progressive`].
+    fn set_progressive(&mut self, _on: bool) {}
+
+    /// See [`Demo::refine`].
+    fn refine(&mut self, _budget_ms: f64) -> Option<f64> {
+        None
+    }
+
+    /// See [`Demo::provisional`].
+    fn provisional(&self) -> Vec<&'static str> {
+        Vec::new()
     }
 }
 
@@ -178,6 +208,18 @@ impl<M: Model> Demo for Typed<M> {
 
     fn tour(&self) -> Option<paper::Tour> {
         self.tour.clone()
+    }
+
+    fn set_progressive(&mut self, on: bool) {
+        self.model.set_progressive(on);
+    }
+
+    fn refine(&mut self, budget_ms: f64) -> Option<f64> {
+        self.model.refine(budget_ms)
+    }
+
+    fn provisional(&self) -> Vec<&'static str> {
+        self.model.provisional()
     }
 }
 

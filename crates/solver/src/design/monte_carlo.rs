@@ -108,68 +108,118 @@ fn admissible(i: usize, v: f64) -> bool {
 
 /// Performs the run described by `cfg`, writing into `out`.
 pub fn run_into(cfg: &McConfig, out: &mut McSamples) {
-    let n = cfg.draws.min(MAX_DRAWS);
-    for v in [
-        &mut out.zeta,
-        &mut out.wn,
-        &mut out.f0,
-        &mut out.q,
-        &mut out.bandwidth,
-        &mut out.settling_time,
-    ] {
-        v.resize(n, f64::NAN);
-    }
-    out.invalid = 0;
-    out.redraws = 0;
-    let mut rng = Rng::new(cfg.seed);
-    let nominal = cfg.design.values();
-    for d in 0..n {
-        let mut values = [0.0; 3];
-        let mut valid = true;
-        for (i, ((v, &p), tol)) in values
-            .iter_mut()
-            .zip(&nominal)
-            .zip(&cfg.tolerances)
-            .enumerate()
-        {
-            let x = tol.fraction.max(0.0);
-            let mut ok = false;
-            for attempt in 0..=MAX_REDRAWS {
-                if attempt > 0 {
-                    out.redraws += 1;
-                }
-                let dev = match tol.distribution {
-                    Distribution::Uniform => x * (2.0 * rng.uniform() - 1.0),
-                    Distribution::Normal => x / 3.0 * rng.normal(),
-                };
-                *v = p * (1.0 + dev);
-                if admissible(i, *v) {
-                    ok = true;
-                    break;
-                }
-            }
-            valid &= ok;
-        }
-        let row = if valid { metrics(cfg, values) } else { None };
-        if row.is_none() {
-            out.invalid += 1;
-        }
-        let row = row.unwrap_or([f64::NAN; 6]);
-        for (v, val) in [
+    let mut run = McRun::start(cfg, out);
+    run.advance(cfg, out, usize::MAX);
+}
+
+/// A Monte Carlo run done a few draws at a time (so a page can spread a large run over
+/// several short tasks). [`McRun::start`] sizes `out`; [`McRun::advance`] continues the
+/// same random sequence, so a run advanced in any steps to the end gives exactly the
+/// samples of [`run_into`], and its first `d` draws are those of a run with `draws = d`.
+#[derive(Debug, Clone)]
+pub struct McRun {
+    rng: Rng,
+    /// Draws done so far.
+    next: usize,
+    /// Draws in the run (`cfg.draws`, at most [`MAX_DRAWS`]).
+    total: usize,
+}
+
+impl McRun {
+    /// Starts the run of `cfg`: resizes every sample vector of `out` to the number of draws
+    /// (filled with NaN) and zeroes its counters.
+    pub fn start(cfg: &McConfig, out: &mut McSamples) -> Self {
+        let total = cfg.draws.min(MAX_DRAWS);
+        for v in [
             &mut out.zeta,
             &mut out.wn,
             &mut out.f0,
             &mut out.q,
             &mut out.bandwidth,
             &mut out.settling_time,
-        ]
-        .into_iter()
-        .zip(row)
-        {
-            if let Some(slot) = v.get_mut(d) {
-                *slot = val;
+        ] {
+            v.clear();
+            v.resize(total, f64::NAN);
+        }
+        out.invalid = 0;
+        out.redraws = 0;
+        Self {
+            rng: Rng::new(cfg.seed),
+            next: 0,
+            total,
+        }
+    }
+
+    /// Draws done so far.
+    pub fn done(&self) -> usize {
+        self.next
+    }
+
+    /// Draws in the whole run.
+    pub fn total(&self) -> usize {
+        self.total
+    }
+
+    /// Whether every draw is done.
+    pub fn finished(&self) -> bool {
+        self.next >= self.total
+    }
+
+    /// Continues the run up to draw `upto` (exclusive, capped at the run's size), writing
+    /// into the `out` given to [`McRun::start`] with the same `cfg`.
+    pub fn advance(&mut self, cfg: &McConfig, out: &mut McSamples, upto: usize) {
+        let end = upto.min(self.total);
+        let rng = &mut self.rng;
+        let nominal = cfg.design.values();
+        for d in self.next..end {
+            let mut values = [0.0; 3];
+            let mut valid = true;
+            for (i, ((v, &p), tol)) in values
+                .iter_mut()
+                .zip(&nominal)
+                .zip(&cfg.tolerances)
+                .enumerate()
+            {
+                let x = tol.fraction.max(0.0);
+                let mut ok = false;
+                for attempt in 0..=MAX_REDRAWS {
+                    if attempt > 0 {
+                        out.redraws += 1;
+                    }
+                    let dev = match tol.distribution {
+                        Distribution::Uniform => x * (2.0 * rng.uniform() - 1.0),
+                        Distribution::Normal => x / 3.0 * rng.normal(),
+                    };
+                    *v = p * (1.0 + dev);
+                    if admissible(i, *v) {
+                        ok = true;
+                        break;
+                    }
+                }
+                valid &= ok;
+            }
+            let row = if valid { metrics(cfg, values) } else { None };
+            if row.is_none() {
+                out.invalid += 1;
+            }
+            let row = row.unwrap_or([f64::NAN; 6]);
+            for (v, val) in [
+                &mut out.zeta,
+                &mut out.wn,
+                &mut out.f0,
+                &mut out.q,
+                &mut out.bandwidth,
+                &mut out.settling_time,
+            ]
+            .into_iter()
+            .zip(row)
+            {
+                if let Some(slot) = v.get_mut(d) {
+                    *slot = val;
+                }
             }
         }
+        self.next = self.next.max(end);
     }
 }
 
@@ -337,5 +387,45 @@ mod tests {
             assert!((o - e).abs() < 1e-12, "{out:?}");
         }
         assert!(out[5].is_nan());
+    }
+
+    #[test]
+    fn a_run_advanced_in_steps_equals_the_run_done_at_once() {
+        let tol = Tolerance {
+            fraction: 0.3,
+            distribution: Distribution::Normal,
+        };
+        let cfg = McConfig {
+            design: Components::Electrical {
+                l: 0.5,
+                r: 4.0,
+                cap: 0.02,
+            },
+            tolerances: [tol; 3],
+            draws: 777,
+            seed: 11,
+            band: SettlingBand::FREE_DEFAULT,
+        };
+        let mut whole = McSamples::default();
+        run_into(&cfg, &mut whole);
+        let mut steps = McSamples::default();
+        let mut run = McRun::start(&cfg, &mut steps);
+        for upto in [1, 100, 100, 400, 5_000] {
+            run.advance(&cfg, &mut steps, upto);
+        }
+        assert!(run.finished() && run.done() == 777 && run.total() == 777);
+        let bits = |s: &McSamples| {
+            [&s.zeta, &s.wn, &s.f0, &s.q, &s.bandwidth, &s.settling_time]
+                .map(|v| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>())
+        };
+        assert_eq!(bits(&whole), bits(&steps));
+        assert_eq!(
+            (whole.invalid, whole.redraws),
+            (steps.invalid, steps.redraws)
+        );
+        // The first draws of a long run are a short run with the same seed.
+        let mut short = McSamples::default();
+        run_into(&McConfig { draws: 100, ..cfg }, &mut short);
+        assert_eq!(bits(&short)[0][..], bits(&whole)[0][..100]);
     }
 }

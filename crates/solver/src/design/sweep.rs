@@ -345,12 +345,42 @@ impl KcMaps {
 /// `k_axis × c_axis` (\[N/m\] × \[N·s/m\]). Vectors are resized to the grid size, which
 /// reallocates only when the grid grows. Invalid points (`k ≤ 0`, `c ≤ 0`, non-finite) are NaN.
 pub fn sweep_kc_into(k_axis: &[f64], c_axis: &[f64], cfg: &KcSweepConfig, out: &mut KcMaps) {
+    sweep_kc_start(k_axis, c_axis, out);
+    sweep_kc_rows(k_axis, c_axis, 0..c_axis.len(), cfg, out);
+}
+
+/// Prepares `out` for a sweep over `k_axis × c_axis` done a few rows at a time with
+/// [`sweep_kc_rows`] (so a page can spread a large sweep over several short tasks): resizes
+/// every map to the grid size and fills it with NaN.
+pub fn sweep_kc_start(k_axis: &[f64], c_axis: &[f64], out: &mut KcMaps) {
     let n = k_axis.len().saturating_mul(c_axis.len());
     out.resize(n);
+    for v in [
+        &mut out.settling_time,
+        &mut out.peak_rebound,
+        &mut out.accel_rms,
+        &mut out.peak_transmissibility,
+        &mut out.zeta,
+    ] {
+        v.fill(f64::NAN);
+    }
+}
+
+/// Fills rows `rows` (indices into `c_axis`) of a sweep started with [`sweep_kc_start`].
+/// Rows outside the grid are ignored. Doing every row, in any order and any grouping,
+/// gives exactly the maps of [`sweep_kc_into`].
+pub fn sweep_kc_rows(
+    k_axis: &[f64],
+    c_axis: &[f64],
+    rows: std::ops::Range<usize>,
+    cfg: &KcSweepConfig,
+    out: &mut KcMaps,
+) {
     let m = cfg.mass;
-    let mut idx = 0usize;
-    for &c in c_axis {
-        for &k in k_axis {
+    let nk = k_axis.len();
+    for (row, &c) in c_axis.iter().enumerate().take(rows.end).skip(rows.start) {
+        for (col, &k) in k_axis.iter().enumerate() {
+            let idx = row * nk + col;
             let point = point_metrics(m, c, k, cfg);
             for (v, val) in [
                 (&mut out.settling_time, point[0]),
@@ -363,7 +393,6 @@ pub fn sweep_kc_into(k_axis: &[f64], c_axis: &[f64], cfg: &KcSweepConfig, out: &
                     *slot = val;
                 }
             }
-            idx += 1;
         }
     }
 }
@@ -482,5 +511,34 @@ mod tests {
             (r.intensity() - 2.0 * std::f64::consts::PI.powi(2) * 64e-6 * 0.01 * 20.0).abs()
                 < 1e-18
         );
+    }
+
+    #[test]
+    fn a_sweep_done_in_rows_equals_the_sweep_done_at_once() {
+        let k: Vec<f64> = (0..7).map(|i| 5_000.0 + 9_000.0 * i as f64).collect();
+        let c: Vec<f64> = (0..6).map(|i| 200.0 + 1_500.0 * i as f64).collect();
+        let cfg = KcSweepConfig {
+            mass: 300.0,
+            band: SettlingBand::new(0.05).unwrap(),
+            road: RoadInput::new(1e-4, 60.0).unwrap(),
+        };
+        let mut whole = KcMaps::default();
+        sweep_kc_into(&k, &c, &cfg, &mut whole);
+        let mut parts = KcMaps::default();
+        sweep_kc_start(&k, &c, &mut parts);
+        for rows in [4..6, 0..1, 1..4, 9..12] {
+            sweep_kc_rows(&k, &c, rows, &cfg, &mut parts);
+        }
+        let bits = |m: &KcMaps| {
+            [
+                &m.settling_time,
+                &m.peak_rebound,
+                &m.accel_rms,
+                &m.peak_transmissibility,
+                &m.zeta,
+            ]
+            .map(|v| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>())
+        };
+        assert_eq!(bits(&whole), bits(&parts));
     }
 }

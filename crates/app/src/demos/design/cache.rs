@@ -1,12 +1,9 @@
-//! The design demo's sweep cache: the (k, c) maps and Pareto front, recomputed only when the
-//! map's inputs change (moving the selected design or the metric reuses them).
+//! The design demo's sweep cache key: the (k, c) maps and Pareto front are recomputed only
+//! when the map's inputs change (moving the selected design or the metric reuses them; see
+//! `progressive.rs`).
 
-use super::{DesignSpace, Road, Stopwatch};
+use super::{DesignSpace, Road};
 use zeta_solver::design::map::nearest_index;
-use zeta_solver::design::pareto::pareto_front_into;
-use zeta_solver::design::sweep::{sweep_kc_into, KcSweepConfig, RoadInput};
-use zeta_solver::grid::cell_centre;
-use zeta_solver::metrics::SettlingBand;
 
 /// Everything the sweep depends on; the map is recomputed only when this changes.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -24,32 +21,6 @@ pub(super) struct SweepKey {
 }
 
 impl DesignSpace {
-    pub(super) fn sweep_if_needed(&mut self, key: SweepKey, band: SettlingBand, road: RoadInput) {
-        if self.key == Some(key) {
-            return;
-        }
-        let watch = Stopwatch::start();
-        let cells = |(lo, hi): (f64, f64)| (0..key.n).map(move |i| cell_centre(lo, hi, key.n, i));
-        self.k_axis.clear();
-        self.k_axis.extend(cells(key.k));
-        self.c_axis.clear();
-        self.c_axis.extend(cells(key.c));
-        let cfg = KcSweepConfig {
-            mass: key.m,
-            band,
-            road,
-        };
-        sweep_kc_into(&self.k_axis, &self.c_axis, &cfg, &mut self.maps);
-        pareto_front_into(
-            &self.maps.settling_time,
-            &self.maps.accel_rms,
-            &mut self.front,
-        );
-        self.sweep_ms = watch.elapsed_ms();
-        self.sweeps += 1;
-        self.key = Some(key);
-    }
-
     /// `(k, c)` of grid cell `i`.
     pub(super) fn design_at(&self, i: usize) -> Option<(f64, f64)> {
         let n = self.k_axis.len().max(1);

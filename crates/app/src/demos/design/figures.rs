@@ -92,8 +92,8 @@ pub(super) fn map(d: &DesignSpace, p: &P, r: &Results) -> Figure {
     }
     let description = text::describe_map(p, r, best, colours.range, colours.log);
     fig.heatmap = Some(Heatmap {
-        nx: key.n,
-        ny: key.n,
+        nx: r.grid,
+        ny: r.grid,
         values: colours.values,
         x_edges: (k0 / KILO, k1 / KILO),
         y_edges: (c0 / KILO, c1 / KILO),

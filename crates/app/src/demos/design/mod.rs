@@ -9,6 +9,7 @@
 mod cache;
 mod choices;
 mod figures;
+mod progressive;
 mod stopwatch;
 mod text;
 
@@ -19,10 +20,10 @@ pub(crate) use stopwatch::Stopwatch;
 use super::Model;
 use crate::declare::{Declaration, Param, ReadoutDef};
 use crate::figure::Figure;
-use crate::spec::{PlotSpec, Preset};
+use crate::spec::PlotSpec;
 use zeta_solver::design::map::lowest;
 use zeta_solver::design::pareto::nearest_on_front;
-use zeta_solver::design::sweep::{body_acceleration_rms, KcMaps, RoadInput};
+use zeta_solver::design::sweep::{body_acceleration_rms, KcMaps, KcSweepConfig, RoadInput};
 use zeta_solver::metrics::{free::FreeMetrics, SettlingBand};
 use zeta_solver::SecondOrder;
 
@@ -101,6 +102,10 @@ pub struct Results {
     pareto_ranges: ((f64, f64), (f64, f64)),
     /// Duration of the last full sweep \[ms\] (wall clock).
     sweep_ms: f64,
+    /// Cells per axis of the maps shown (fewer than `key.n` while provisional).
+    grid: usize,
+    /// Whether the maps shown are the coarse stand-in while the full sweep runs.
+    provisional: bool,
 }
 
 /// The design-space demo. Holds the sweep's buffers so a slider move reuses them.
@@ -118,6 +123,12 @@ pub struct DesignSpace {
     front: Vec<usize>,
     /// Axes of the last Pareto plot, for picking the nearest front design.
     pareto_ranges: ((f64, f64), (f64, f64)),
+    /// Whether a moved map input gets a coarse sweep first (on a page; see `progressive.rs`).
+    progressive: bool,
+    /// Whether the maps held are the coarse stand-in for `key`.
+    provisional: bool,
+    /// The full sweep under way, if any.
+    job: Option<progressive::SweepJob>,
 }
 
 impl Model for DesignSpace {
@@ -238,8 +249,13 @@ impl Model for DesignSpace {
                     r.sel.accel_rms
                 }),
                 ReadoutDef::formatted("grid_size", "grid size (cells)", "", |r| {
-                    let (n, cells) = (r.key.n, r.key.n * r.key.n);
-                    Some((cells as f64, format!("{n} × {n} = {cells}")))
+                    let (n, cells) = (r.grid, r.grid * r.grid);
+                    let text = format!("{n} × {n} = {cells}");
+                    let full = r.key.n;
+                    Some(match r.provisional {
+                        false => (cells as f64, text),
+                        true => (cells as f64, format!("{text} ({full} × {full} on the way)")),
+                    })
                 }),
                 // Plain: the value is already in ms (an SI prefix would give "µms").
                 ReadoutDef::plain("compute_time", "sweep compute time", "ms", 3, |r| {
@@ -263,7 +279,7 @@ impl Model for DesignSpace {
                     aspect: 1.35,
                 },
             ],
-            presets: presets(),
+            presets: text::presets(),
             ..Declaration::new("design", "Design space (k, c)", text::SUMMARY)
         }
     }
@@ -272,7 +288,14 @@ impl Model for DesignSpace {
         let key = p.sweep_key()?;
         let band = SettlingBand::new(p.band / 100.0).ok()?;
         let road = RoadInput::iso_class(p.road.class(), SPEED, CUTOFF).ok()?;
-        self.sweep_if_needed(key, band, road);
+        self.sweep_for(
+            key,
+            KcSweepConfig {
+                mass: key.m,
+                band,
+                road,
+            },
+        );
         let sys = SecondOrder::mechanical(p.m, p.c, p.k).ok();
         let metrics = sys.and_then(|s| FreeMetrics::exact(&s, X0, 0.0, band));
         let sel = Selected {
@@ -299,15 +322,36 @@ impl Model for DesignSpace {
             fastest,
             pareto_ranges: self.pareto_ranges,
             sweep_ms: self.sweep_ms,
+            grid: self.k_axis.len(),
+            provisional: self.provisional,
         })
     }
 
+    fn set_progressive(&mut self, on: bool) {
+        self.progressive = on;
+    }
+
+    fn refine(&mut self, budget_ms: f64) -> Option<f64> {
+        self.refine_sweep(budget_ms)
+    }
+
+    fn provisional(&self) -> Vec<&'static str> {
+        match self.provisional {
+            true => progressive::PROVISIONAL.to_vec(),
+            false => Vec::new(),
+        }
+    }
+
     fn figures(&self, p: &P, r: &Results) -> Vec<Figure> {
-        vec![
+        let figs = vec![
             figures::map(self, p, r),
             figures::pareto(self, p, r),
             figures::response(p, r),
-        ]
+        ];
+        match r.provisional {
+            true => figs.into_iter().map(|f| text::provisional(f, r)).collect(),
+            false => figs,
+        }
     }
 
     fn pick(&mut self, plot: &str, x: f64, y: f64) -> Vec<(&'static str, f64)> {
@@ -342,46 +386,6 @@ impl Model for DesignSpace {
             _ => Vec::new(),
         }
     }
-}
-
-fn presets() -> Vec<Preset> {
-    vec![
-        Preset {
-            label: "Settling-time map, 300 kg, ζ ≈ 0.37",
-            values: vec![
-                ("m", 300.0),
-                ("metric", 0.0),
-                ("k", 24_000.0),
-                ("c", 2_000.0),
-            ],
-        },
-        Preset {
-            label: "Laden car 500 kg, same parts",
-            values: vec![
-                ("m", 500.0),
-                ("metric", 0.0),
-                ("k", 24_000.0),
-                ("c", 2_000.0),
-            ],
-        },
-        Preset {
-            label: "Comfort map on a class C road",
-            values: vec![("metric", 2.0), ("road", 2.0), ("m", 300.0)],
-        },
-        Preset {
-            label: "Peak-rebound map, ζ = 0.7 design",
-            values: vec![
-                ("metric", 1.0),
-                ("m", 300.0),
-                ("k", 24_000.0),
-                ("c", 3_760.0),
-            ],
-        },
-        Preset {
-            label: "Fine grid 160 × 160",
-            values: vec![("n", 160.0), ("metric", 0.0)],
-        },
-    ]
 }
 
 #[cfg(test)]

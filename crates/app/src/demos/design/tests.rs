@@ -137,3 +137,56 @@ fn settling_and_rebound_labels_say_free_response_relative_to_x0() {
         assert!(label.contains(unit), "{metric}: {label}");
     }
 }
+
+/// Every readout but the measured compute time, and the figures.
+fn shown(f: &Frame) -> (Vec<(&str, &str)>, &[Figure]) {
+    let readouts = f.readouts.iter().filter(|r| r.key != "compute_time");
+    let readouts = readouts.map(|r| (r.key, r.data_value.as_str())).collect();
+    (readouts, &f.figures)
+}
+
+#[test]
+fn progressive_updates_show_a_marked_coarse_sweep_then_exactly_the_full_one() {
+    let spec = DesignSpace::declare().spec();
+    let params = |q| resolve_query(&spec, q).0;
+    let mut reference = crate::demos::create("design").unwrap();
+    let want = reference.update(&params("m=500"));
+    let mut demo = crate::demos::create("design").unwrap();
+    demo.set_progressive(true);
+    let coarse = demo.update(&params("m=420"));
+    assert_eq!(number(&coarse, "grid_size"), 625.0);
+    assert!(demo.provisional().contains(&"map") && demo.provisional().contains(&"grid_size"));
+    assert!(coarse.figures[0]
+        .description
+        .starts_with("Provisional: from a coarse 25 × 25"));
+    // Part of the sweep for m = 420, then the mass moves on: that sweep is never shown.
+    assert!(matches!(demo.refine(0.0), Some(f) if f < 1.0));
+    let moved = demo.update(&params("m=500"));
+    assert_eq!(number(&moved, "grid_size"), 625.0);
+    let mut slices = 0;
+    while demo.refine(0.0) != Some(1.0) {
+        slices += 1;
+        assert!(slices <= 100, "one row per slice at least");
+    }
+    assert!(demo.provisional().is_empty());
+    assert_eq!(demo.refine(5.0), None, "nothing left to do");
+    let full = demo.update(&params("m=500"));
+    // Debug text: the figures hold NaN gaps, which `==` never equates.
+    assert!(format!("{:?}", shown(&full)) == format!("{:?}", shown(&want)));
+    // The selected design's own readouts never wait for the sweep.
+    for key in ["zeta", "settling_time", "overshoot", "accel_rms"] {
+        assert_eq!(number(&moved, key), number(&want, key), "{key}");
+    }
+}
+
+#[test]
+fn progressive_updates_keep_small_grids_and_unmoved_maps_immediate() {
+    let spec = DesignSpace::declare().spec();
+    let mut demo = crate::demos::create("design").unwrap();
+    demo.set_progressive(true);
+    demo.update(&resolve_query(&spec, "n=25").0);
+    assert!(demo.provisional().is_empty() && demo.refine(5.0).is_none());
+    // Moving the selected design reuses the map: nothing to refine.
+    demo.update(&resolve_query(&spec, "n=25&k=30000&c=2500").0);
+    assert!(demo.provisional().is_empty() && demo.refine(5.0).is_none());
+}

@@ -2,7 +2,9 @@
 //! alternatives.
 
 use super::{Metric, Results, P, X0};
+use crate::figure::Figure;
 use crate::format::{si, significant};
+use crate::spec::Preset;
 
 pub(super) const SUMMARY: &str =
     "Every cell of the map is one quarter car (sprung mass m on spring k and \
@@ -170,8 +172,8 @@ pub(super) fn describe_map(
         p.metric.relative_to(p.band),
         span_text(key.k.0, key.k.1, "N/m"),
         span_text(key.c.0, key.c.1, "N·s/m"),
-        key.n,
-        key.n,
+        r.grid,
+        r.grid,
         si(key.m, "kg", 3),
         best_text,
         selected_text,
@@ -238,4 +240,56 @@ pub(super) fn describe_response(p: &P, r: &Results) -> String {
         ),
         _ => "The selected design does not settle.".into(),
     }
+}
+
+/// A figure drawn from the coarse sweep while the full one runs, marked as provisional in
+/// its description (its title is left as it is: the map's already fills a phone's width).
+pub(super) fn provisional(mut fig: Figure, r: &Results) -> Figure {
+    let (g, n) = (r.grid, r.key.n);
+    fig.description = format!(
+        "Provisional: from a coarse {g} × {g} grid while the {n} × {n} sweep runs. {}",
+        fig.description
+    );
+    fig
+}
+
+/// The preset buttons.
+pub(super) fn presets() -> Vec<Preset> {
+    vec![
+        Preset {
+            label: "Settling-time map, 300 kg, ζ ≈ 0.37",
+            values: vec![
+                ("m", 300.0),
+                ("metric", 0.0),
+                ("k", 24_000.0),
+                ("c", 2_000.0),
+            ],
+        },
+        Preset {
+            label: "Laden car 500 kg, same parts",
+            values: vec![
+                ("m", 500.0),
+                ("metric", 0.0),
+                ("k", 24_000.0),
+                ("c", 2_000.0),
+            ],
+        },
+        Preset {
+            label: "Comfort map on a class C road",
+            values: vec![("metric", 2.0), ("road", 2.0), ("m", 300.0)],
+        },
+        Preset {
+            label: "Peak-rebound map, ζ = 0.7 design",
+            values: vec![
+                ("metric", 1.0),
+                ("m", 300.0),
+                ("k", 24_000.0),
+                ("c", 3_760.0),
+            ],
+        },
+        Preset {
+            label: "Fine grid 160 × 160",
+            values: vec![("n", 160.0), ("metric", 0.0)],
+        },
+    ]
 }

@@ -2,6 +2,7 @@
 //! tolerances, distribution, count or seed change (moving the spec or the histogram choice
 //! reuses them), and percentiles are computed once per run.
 
+use super::progressive::COARSE_DRAWS;
 use super::{Dist, HistOf, Stopwatch, Uncertainty};
 use crate::declare::Choice;
 use zeta_solver::design::monte_carlo::{percentiles_into, run_into, McConfig, Tolerance};
@@ -24,6 +25,8 @@ impl Uncertainty {
         if self.key == Some(key) {
             return;
         }
+        // Inputs moved on: a run under way for other inputs is dropped unseen.
+        self.job = None;
         let watch = Stopwatch::start();
         let distribution = key.dist.distribution();
         let cfg = McConfig {
@@ -36,13 +39,29 @@ impl Uncertainty {
             seed: key.seed,
             band: SettlingBand::FREE_DEFAULT,
         };
-        run_into(&cfg, &mut self.samples);
+        self.provisional = self.progressive && key.draws > COARSE_DRAWS;
+        let now = match self.provisional {
+            true => McConfig {
+                draws: COARSE_DRAWS,
+                ..cfg
+            },
+            false => cfg,
+        };
+        run_into(&now, &mut self.samples);
+        self.key = Some(key);
+        self.finish_run(watch.elapsed_ms());
+        match self.provisional {
+            true => self.start_job(key, cfg),
+            false => self.runs += 1,
+        }
+    }
+
+    /// Percentiles and timing of freshly drawn samples.
+    pub(super) fn finish_run(&mut self, ms: f64) {
         self.pct = [None; 5];
         self.percentiles(HistOf::Zeta);
         self.percentiles(HistOf::Q);
-        self.mc_ms = watch.elapsed_ms();
-        self.runs += 1;
-        self.key = Some(key);
+        self.mc_ms = ms;
     }
 
     /// `[p5, p95]` of a quantity over the current draws (cached per run).

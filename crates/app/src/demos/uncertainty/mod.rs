@@ -10,6 +10,7 @@
 mod cache;
 mod choices;
 mod figures;
+mod progressive;
 mod ranges;
 mod text;
 
@@ -19,7 +20,7 @@ use super::design::Stopwatch;
 use super::Model;
 use crate::declare::{Declaration, Param, ReadoutDef};
 use crate::figure::Figure;
-use crate::spec::{PlotSpec, Preset};
+use crate::spec::PlotSpec;
 use cache::McKey;
 use ranges::Ranges;
 use zeta_solver::design::monte_carlo::{yield_percent, McSamples, Spec};
@@ -105,6 +106,8 @@ pub struct Results {
     draws: usize,
     /// Duration of the last Monte Carlo run \[ms\] (wall clock).
     mc_ms: f64,
+    /// Draws of the full run when the samples shown are its coarse start, else `None`.
+    provisional_of: Option<usize>,
 }
 
 /// The tolerance demo. Keeps the Monte Carlo samples and percentiles between updates.
@@ -117,6 +120,12 @@ pub struct Uncertainty {
     scratch: Vec<f64>,
     /// 5th and 95th percentiles per [`HistOf`] index, filled lazily after each run.
     pct: [Option<[f64; 2]>; 5],
+    /// Whether moved inputs get a coarse run first (on a page; see `progressive.rs`).
+    progressive: bool,
+    /// Whether the samples held are the coarse stand-in for `key`.
+    provisional: bool,
+    /// The full run under way, if any.
+    job: Option<progressive::McJob>,
 }
 
 /// A tolerance slider in percent.
@@ -276,7 +285,10 @@ impl Model for Uncertainty {
                 ReadoutDef::number("Q_p5", "Q, 5th percentile", "", 4, |r| Some(r.q_pct[0])),
                 ReadoutDef::number("Q_p95", "Q, 95th percentile", "", 4, |r| Some(r.q_pct[1])),
                 ReadoutDef::formatted("draws", "draws", "", |r| {
-                    Some((r.draws as f64, format!("{}", r.draws)))
+                    Some(match r.provisional_of {
+                        None => (r.draws as f64, format!("{}", r.draws)),
+                        Some(full) => (r.draws as f64, format!("{} ({full} on the way)", r.draws)),
+                    })
                 }),
                 // Plain: the value is already in ms (an SI prefix would give "µms").
                 ReadoutDef::plain("compute_time", "Monte Carlo compute time", "ms", 3, |r| {
@@ -300,7 +312,7 @@ impl Model for Uncertainty {
                     aspect: 1.5,
                 },
             ],
-            presets: presets(),
+            presets: text::presets(),
             ..Declaration::new("uncertainty", "Tolerance analysis", text::SUMMARY)
         }
     }
@@ -320,11 +332,30 @@ impl Model for Uncertainty {
             hist_pct: self.percentiles(p.hist),
             draws: self.samples.zeta.len(),
             mc_ms: self.mc_ms,
+            provisional_of: self
+                .provisional
+                .then_some(self.key.map(|k| k.draws))
+                .flatten(),
         })
     }
 
+    fn set_progressive(&mut self, on: bool) {
+        self.progressive = on;
+    }
+
+    fn refine(&mut self, budget_ms: f64) -> Option<f64> {
+        self.refine_run(budget_ms)
+    }
+
+    fn provisional(&self) -> Vec<&'static str> {
+        match self.provisional {
+            true => progressive::PROVISIONAL.to_vec(),
+            false => Vec::new(),
+        }
+    }
+
     fn figures(&self, p: &P, r: &Results) -> Vec<Figure> {
-        vec![
+        let mut figs = vec![
             figures::band(p, r),
             figures::histogram(
                 p,
@@ -342,31 +373,14 @@ impl Model for Uncertainty {
                 r.yield_pct,
                 &format!("Monte Carlo: {}", p.hist.label().0),
             ),
-        ]
+        ];
+        if let Some(full) = r.provisional_of {
+            for f in &mut figs[1..] {
+                text::mark_provisional(f, r.draws, full);
+            }
+        }
+        figs
     }
-}
-
-fn presets() -> Vec<Preset> {
-    let car = |label, zeta| Preset {
-        label,
-        values: vec![
-            ("system", 0.0),
-            ("m", 300.0),
-            ("k", 24_000.0),
-            ("zeta", zeta),
-            ("dm", 10.0),
-        ],
-    };
-    let rlc = |label, pct| Preset {
-        label,
-        values: vec![("system", 1.0), ("dR", pct), ("dL", pct), ("dC", pct)],
-    };
-    vec![
-        car("ζ = 1 design under ±10 % mass", 1.0),
-        car("ζ = 0.7 design under ±10 % mass", 0.7),
-        rlc("RLC 5 % parts", 5.0),
-        rlc("RLC 20 % parts", 20.0),
-    ]
 }
 
 #[cfg(test)]

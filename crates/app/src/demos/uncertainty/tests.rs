@@ -5,7 +5,7 @@
 #![allow(clippy::disallowed_methods)]
 
 use super::*;
-use crate::demos::testing::{number, run as run_demo};
+use crate::demos::testing::{number, run as run_demo, text, value};
 use crate::demos::Frame;
 use crate::params::resolve_query;
 
@@ -128,4 +128,53 @@ fn percentiles_and_yield_follow_the_distribution_of_the_parts() {
         1.0 / (1.0 + 0.1 * 1.6449 / 3.0f64).sqrt(),
         "normal ζ p5",
     );
+}
+
+/// Every readout but the measured compute time, and the figures.
+fn shown(f: &Frame) -> (Vec<(&str, &str)>, &[crate::figure::Figure]) {
+    let readouts = f.readouts.iter().filter(|r| r.key != "compute_time");
+    let readouts = readouts.map(|r| (r.key, r.data_value.as_str())).collect();
+    (readouts, &f.figures)
+}
+
+#[test]
+fn progressive_updates_show_the_first_draws_marked_then_exactly_the_full_run() {
+    let spec = Uncertainty::declare().spec();
+    let params = |q| crate::params::resolve_query(&spec, q).0;
+    let mut reference = crate::demos::create("uncertainty").unwrap();
+    let want = reference.update(&params("dm=12"));
+    let first_draws = reference.update(&params("dm=12&N=1000"));
+    let mut demo = crate::demos::create("uncertainty").unwrap();
+    demo.set_progressive(true);
+    demo.update(&params("dm=15"));
+    // Part of the run for ±15 %, then the tolerance moves on: that run is never shown.
+    assert!(matches!(demo.refine(0.0), Some(f) if f < 1.0));
+    let coarse = demo.update(&params("dm=12"));
+    assert!(demo.provisional().contains(&"yield") && demo.provisional().contains(&"hist"));
+    assert_eq!(text(&coarse, "draws"), "1000 (10000 on the way)");
+    assert!(coarse.figures[1].title.ends_with("(provisional)"));
+    // The coarse run is exactly the first 1000 draws of the full one.
+    assert_eq!(value(&coarse, "yield"), value(&first_draws, "yield"));
+    assert_eq!(value(&coarse, "zeta_min"), value(&want, "zeta_min"));
+    let mut slices = 0;
+    while demo.refine(0.0) != Some(1.0) {
+        slices += 1;
+        assert!(slices <= 200, "a slice of draws each time at least");
+    }
+    assert!(demo.provisional().is_empty() && demo.refine(5.0).is_none());
+    let full = demo.update(&params("dm=12"));
+    // Debug text: the figures may hold NaN gaps, which `==` never equates.
+    assert!(format!("{:?}", shown(&full)) == format!("{:?}", shown(&want)));
+}
+
+#[test]
+fn progressive_updates_keep_small_runs_and_spec_moves_immediate() {
+    let spec = Uncertainty::declare().spec();
+    let mut demo = crate::demos::create("uncertainty").unwrap();
+    demo.set_progressive(true);
+    demo.update(&crate::params::resolve_query(&spec, "N=800").0);
+    assert!(demo.provisional().is_empty() && demo.refine(5.0).is_none());
+    // Moving the spec reuses the draws: nothing to refine.
+    demo.update(&crate::params::resolve_query(&spec, "N=800&ts_max=0.7").0);
+    assert!(demo.provisional().is_empty() && demo.refine(5.0).is_none());
 }

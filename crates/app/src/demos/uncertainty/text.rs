@@ -4,6 +4,7 @@
 use super::ranges::Ranges;
 use super::{HistOf, System, P};
 use crate::format::{si, significant};
+use crate::spec::Preset;
 
 pub(super) const SUMMARY: &str =
     "Real parts are not their nominal values. Choose the system: the quarter \
@@ -127,4 +128,38 @@ pub(super) fn describe_histogram(
         ),
         None => format!("No draw has a finite {name}."),
     }
+}
+
+/// Marks a histogram drawn from the first `shown` draws while the full run of `full` draws
+/// continues as provisional, in its title and its description.
+pub(super) fn mark_provisional(fig: &mut crate::figure::Figure, shown: usize, full: usize) {
+    fig.title = format!("{} (provisional)", fig.title);
+    fig.description = format!(
+        "Provisional: from the first {shown} draws while the run of {full} continues. {}",
+        fig.description
+    );
+}
+
+/// The preset buttons.
+pub(super) fn presets() -> Vec<Preset> {
+    let car = |label, zeta| Preset {
+        label,
+        values: vec![
+            ("system", 0.0),
+            ("m", 300.0),
+            ("k", 24_000.0),
+            ("zeta", zeta),
+            ("dm", 10.0),
+        ],
+    };
+    let rlc = |label, pct| Preset {
+        label,
+        values: vec![("system", 1.0), ("dR", pct), ("dL", pct), ("dC", pct)],
+    };
+    vec![
+        car("ζ = 1 design under ±10 % mass", 1.0),
+        car("ζ = 0.7 design under ±10 % mass", 0.7),
+        rlc("RLC 5 % parts", 5.0),
+        rlc("RLC 20 % parts", 20.0),
+    ]
 }

@@ -1,0 +1,130 @@
+//! Progressive sweeps (issue 13): on a page, a moved map input gets a coarse
+//! [`COARSE_CELLS`]² sweep at once and the full grid a few rows at a time in later short
+//! tasks ([`DesignSpace::refine`]); the full maps replace the coarse ones only if they were
+//! computed for the inputs still current. Off (native tests, snapshots) the full sweep runs
+//! in the step, as before.
+
+use super::cache::SweepKey;
+use super::{DesignSpace, Stopwatch};
+use zeta_solver::design::pareto::pareto_front_into;
+use zeta_solver::design::sweep::{
+    sweep_kc_into, sweep_kc_rows, sweep_kc_start, KcMaps, KcSweepConfig,
+};
+use zeta_solver::grid::cell_centre;
+
+/// Cells per axis of the coarse sweep shown while the full one runs.
+pub(super) const COARSE_CELLS: usize = 25;
+
+/// Readouts and plots drawn from the coarse sweep while the full one runs.
+pub(super) const PROVISIONAL: [&str; 5] =
+    ["grid_size", "compute_time", "map", "pareto", "response"];
+
+/// A full sweep under way: its inputs, axes, maps so far and the next row to compute.
+#[derive(Debug)]
+pub(super) struct SweepJob {
+    key: SweepKey,
+    cfg: KcSweepConfig,
+    k_axis: Vec<f64>,
+    c_axis: Vec<f64>,
+    maps: KcMaps,
+    next_row: usize,
+    /// Compute time so far \[ms\].
+    ms: f64,
+}
+
+/// Cell centres of `n` cells over `(lo, hi)`.
+fn cells((lo, hi): (f64, f64), n: usize, out: &mut Vec<f64>) {
+    out.clear();
+    out.extend((0..n).map(|i| cell_centre(lo, hi, n, i)));
+}
+
+impl DesignSpace {
+    /// The sweep for `key`: the cached one, the full one (not progressive, or a small
+    /// grid), or a coarse one now with the full one left to [`DesignSpace::refine`].
+    pub(super) fn sweep_for(&mut self, key: SweepKey, cfg: KcSweepConfig) {
+        if self.key == Some(key) {
+            return;
+        }
+        // Inputs moved on: a sweep under way for other inputs is dropped unseen.
+        self.job = None;
+        let n = if self.progressive && key.n > COARSE_CELLS {
+            COARSE_CELLS
+        } else {
+            key.n
+        };
+        let watch = Stopwatch::start();
+        cells(key.k, n, &mut self.k_axis);
+        cells(key.c, n, &mut self.c_axis);
+        sweep_kc_into(&self.k_axis, &self.c_axis, &cfg, &mut self.maps);
+        self.finish_maps(key, watch.elapsed_ms());
+        self.provisional = n != key.n;
+        if self.provisional {
+            let mut job = SweepJob {
+                key,
+                cfg,
+                k_axis: Vec::new(),
+                c_axis: Vec::new(),
+                maps: KcMaps::default(),
+                next_row: 0,
+                ms: 0.0,
+            };
+            cells(key.k, key.n, &mut job.k_axis);
+            cells(key.c, key.n, &mut job.c_axis);
+            sweep_kc_start(&job.k_axis, &job.c_axis, &mut job.maps);
+            self.job = Some(job);
+        } else {
+            self.sweeps += 1;
+        }
+    }
+
+    /// Pareto front, timing and key of freshly swept maps.
+    fn finish_maps(&mut self, key: SweepKey, ms: f64) {
+        pareto_front_into(
+            &self.maps.settling_time,
+            &self.maps.accel_rms,
+            &mut self.front,
+        );
+        self.sweep_ms = ms;
+        self.key = Some(key);
+    }
+
+    /// Computes rows of the pending full sweep for about `budget_ms` (at least one row).
+    /// Returns the fraction done, or `None` when no sweep is pending; at 1 the full maps
+    /// have replaced the coarse ones.
+    pub(super) fn refine_sweep(&mut self, budget_ms: f64) -> Option<f64> {
+        let job = self.job.as_mut()?;
+        let watch = Stopwatch::start();
+        let rows = job.c_axis.len();
+        while job.next_row < rows {
+            let row = job.next_row;
+            sweep_kc_rows(
+                &job.k_axis,
+                &job.c_axis,
+                row..row + 1,
+                &job.cfg,
+                &mut job.maps,
+            );
+            job.next_row += 1;
+            if watch.elapsed_ms() >= budget_ms {
+                break;
+            }
+        }
+        job.ms += watch.elapsed_ms();
+        if job.next_row < rows {
+            return Some(job.next_row as f64 / rows.max(1) as f64);
+        }
+        let job = self.job.take()?;
+        // Shown only if computed for the inputs still current (always so here: a step
+        // with other inputs drops the job), never as the answer to other inputs.
+        if self.key != Some(job.key) {
+            return None;
+        }
+        self.k_axis = job.k_axis;
+        self.c_axis = job.c_axis;
+        self.maps = job.maps;
+        self.finish_maps(job.key, job.ms);
+        self.provisional = false;
+        self.sweeps += 1;
+        Some(1.0)
+    }
+}

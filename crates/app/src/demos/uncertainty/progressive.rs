@@ -1,0 +1,84 @@
+//! Progressive Monte Carlo (issue 13): on a page, moved inputs get the first
+//! [`COARSE_DRAWS`] draws at once (the same seeded sequence, so they are exactly the first
+//! draws of the full run) and the full run a few draws at a time in later short tasks
+//! ([`Uncertainty::refine_run`]); the full samples replace the coarse ones only if they were
+//! drawn for the inputs still current. Off (native tests, snapshots) the full run happens in
+//! the step, as before.
+
+use super::cache::McKey;
+use super::{Stopwatch, Uncertainty};
+use zeta_solver::design::monte_carlo::{McConfig, McRun, McSamples};
+
+/// Draws of the coarse run shown while the full one runs.
+pub(super) const COARSE_DRAWS: usize = 1_000;
+
+/// Readouts and plots drawn from the coarse run while the full one runs.
+pub(super) const PROVISIONAL: [&str; 9] = [
+    "yield",
+    "zeta_p5",
+    "zeta_p95",
+    "Q_p5",
+    "Q_p95",
+    "draws",
+    "compute_time",
+    "zeta_hist",
+    "hist",
+];
+
+/// A full run under way: its inputs, configuration, samples so far and the random state.
+#[derive(Debug)]
+pub(super) struct McJob {
+    key: McKey,
+    cfg: McConfig,
+    run: McRun,
+    samples: McSamples,
+    /// Compute time so far \[ms\].
+    ms: f64,
+}
+
+/// Draws per slice between clock reads.
+const SLICE: usize = 100;
+
+impl Uncertainty {
+    /// Starts the full run of `key` in the background of the page (see the module docs).
+    pub(super) fn start_job(&mut self, key: McKey, cfg: McConfig) {
+        let mut samples = McSamples::default();
+        let run = McRun::start(&cfg, &mut samples);
+        self.job = Some(McJob {
+            key,
+            cfg,
+            run,
+            samples,
+            ms: 0.0,
+        });
+    }
+
+    /// Continues the pending full run for about `budget_ms`. Returns the fraction done, or
+    /// `None` when no run is pending; at 1 the full samples have replaced the coarse ones.
+    pub(super) fn refine_run(&mut self, budget_ms: f64) -> Option<f64> {
+        let job = self.job.as_mut()?;
+        let watch = Stopwatch::start();
+        while !job.run.finished() {
+            let upto = job.run.done() + SLICE;
+            job.run.advance(&job.cfg, &mut job.samples, upto);
+            if watch.elapsed_ms() >= budget_ms {
+                break;
+            }
+        }
+        job.ms += watch.elapsed_ms();
+        if !job.run.finished() {
+            return Some(job.run.done() as f64 / job.run.total().max(1) as f64);
+        }
+        let job = self.job.take()?;
+        // Shown only if drawn for the inputs still current (a step with other inputs drops
+        // the job), never as the answer to other inputs.
+        if self.key != Some(job.key) {
+            return None;
+        }
+        self.samples = job.samples;
+        self.finish_run(job.ms);
+        self.provisional = false;
+        self.runs += 1;
+        Some(1.0)
+    }
+}
