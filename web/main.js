@@ -16,6 +16,7 @@ import { LANG, num, t, translatePage } from './i18n.js';
 
 const DEFAULT_DEMO = 'regimes';
 const ANNOUNCE_DELAY_MS = 1200;
+const REFINE_SLICE_MS = 8; // one slice of a pending full study: well inside a frame
 const darkQuery = window.matchMedia('(prefers-color-scheme: dark)');
 const reducedMotion = window.matchMedia('(prefers-reduced-motion: reduce)');
 
@@ -161,6 +162,7 @@ function drawFrame() {
     const dpr = sizeCanvases();
     const out = app.session.update(dpr, isDark());
     showReadouts(app.view.readouts, out.readouts);
+    markProvisional(out.provisional);
     for (const [key, value] of out.derived) {
       const control = app.view.controls.get(key);
       if (control) showValue(control, value);
@@ -235,6 +237,34 @@ function drawTime(dpr = window.devicePixelRatio || 1) {
     ctx.lineTo(x, overlay.height);
     ctx.stroke();
   }
+}
+
+/** Marks readouts and plots drawn from a coarse study while the full one runs (issue 13). */
+function markProvisional(keys) {
+  const now = new Set(keys);
+  for (const [key, item] of app.view.readouts) {
+    item.toggleAttribute('data-provisional', now.has(key));
+    if (now.has(key)) item.querySelector('dd').textContent += ' (provisional)';
+  }
+  for (const fig of document.querySelectorAll('[data-plot-wrap]')) {
+    const on = now.has(fig.dataset.plotWrap);
+    fig.toggleAttribute('data-provisional', on);
+    fig.setAttribute('aria-busy', String(on));
+  }
+  if (now.size) scheduleRefine();
+}
+
+/** Runs the pending full study in short slices between frames; redraws when it is done. */
+function scheduleRefine() {
+  if (app.refineTimer) return;
+  const slice = () => {
+    app.refineTimer = 0;
+    const done = app.session.refine(REFINE_SLICE_MS);
+    if (done === undefined) return;
+    if (done >= 1) requestDraw();
+    else app.refineTimer = setTimeout(slice, 0);
+  };
+  app.refineTimer = setTimeout(slice, 0);
 }
 
 /** Schedules one redraw on the next animation frame; bursts of input coalesce. */

@@ -289,6 +289,8 @@ struct UpdateResult<'a> {
     time_span: Option<(f64, f64)>,
     /// `[[key, value]]` of parameters the demo derived from others this update.
     derived: Vec<(&'static str, f64)>,
+    /// Keys of readouts and plots showing a coarse study while the full one runs.
+    provisional: Vec<&'static str>,
     /// The guided tour with its checked claims, for the demo that has one (`paper`).
     #[serde(skip_serializing_if = "Option::is_none")]
     tour: Option<crate::demos::paper::Tour>,
@@ -355,8 +357,9 @@ impl Session {
     /// Opens demo `id`; errors for an unknown id.
     #[wasm_bindgen(constructor)]
     pub fn new(id: &str) -> Result<Session, JsError> {
-        let demo =
+        let mut demo =
             demos::create(id).ok_or_else(|| JsError::new(&format!("unknown demo {id:?}")))?;
+        demo.set_progressive(true);
         let spec = demo.spec();
         let params = Params::defaults(&spec);
         let n = spec.plots.len();
@@ -502,6 +505,7 @@ impl Session {
             descriptions,
             time_span: frame.time_span,
             derived,
+            provisional: self.demo.provisional(),
             tour: self
                 .demo
                 .tour()
@@ -509,6 +513,12 @@ impl Session {
         });
         self.frame = Some(frame);
         out
+    }
+
+    /// Continues a pending heavy study (sweep, Monte Carlo) for about `budget_ms`:
+    /// `undefined` when none is pending, else the fraction done (1: finished, call `update`).
+    pub fn refine(&mut self, budget_ms: f64) -> Option<f64> {
+        self.demo.refine(budget_ms)
     }
 
     /// Draws the schematic at time `t` \[s\]; returns its text alternative.
