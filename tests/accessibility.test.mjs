@@ -64,16 +64,21 @@ test('keyboard only: change a parameter, play and export in every demo, in a log
       order.push(info);
     }
     assert.ok(order.length >= 5, `${id}: tab order reaches the controls`);
-    const firstSlider = order.find((o) => o.tag === 'INPUT' && o.key && !['share-button'].includes(o.key));
-    assert.ok(firstSlider, `${id}: a parameter control is reachable by Tab`);
     assert.ok(order.some((o) => o.key === 'png'), `${id}: export buttons are reachable by Tab`);
-    // Change the first slider with the keyboard.
-    const before = await page.$$eval('[data-readout]', (els) => els.map((e) => e.dataset.value).join('|'));
     const slider = await page.$('.controls input[type=range]:not([disabled])');
-    await slider.focus();
-    await page.keyboard.press('PageUp');
-    await page.keyboard.press('ArrowRight');
-    await page.waitForFunction((b) => [...document.querySelectorAll('[data-readout]')].map((e) => e.dataset.value).join('|') !== b, before);
+    if (slider) {
+      const firstSlider = order.find((o) => o.tag === 'INPUT' && o.key && !['share-button'].includes(o.key));
+      assert.ok(firstSlider, `${id}: a parameter control is reachable by Tab`);
+      // Change the first slider with the keyboard.
+      const before = await page.$$eval('[data-readout]', (els) => els.map((e) => e.dataset.value).join('|'));
+      await slider.focus();
+      await page.keyboard.press('PageUp');
+      await page.keyboard.press('ArrowRight');
+      await page.waitForFunction((b) => [...document.querySelectorAll('[data-readout]')].map((e) => e.dataset.value).join('|') !== b, before);
+    } else {
+      // A page without parameters (the paper's tour): its links are reachable instead.
+      assert.ok(order.some((o) => o.tag === 'A' && String(o.key).includes('tour-link')), `${id}: the tour's links are reachable by Tab`);
+    }
     // Play with Space (from outside a text control), if the demo animates.
     if (await page.$('button.play')) {
       await page.focus('button.play');

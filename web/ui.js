@@ -88,7 +88,8 @@ function paramControl(param) {
 function buildHead(spec) {
   const head = el('section', { class: 'demo-head', 'aria-labelledby': 'demo-title' });
   head.append(el('h1', { id: 'demo-title' }, spec.title));
-  const eq = el('div', { class: 'equation' });
+  // Focusable, so a keyboard can scroll an equation wider than a phone (axe: scrollable-region-focusable).
+  const eq = el('div', { class: 'equation', tabindex: '0', role: 'group', 'aria-label': t('equation') });
   eq.innerHTML = spec.equation_mathml; // trusted: compiled into the wasm, never from the URL
   const about = el('details', { class: 'about' });
   about.append(el('summary', {}, t('about')), el('p', { class: 'summary' }, spec.summary));
