@@ -4,7 +4,7 @@ use super::colour_bar::{draw_colour_bar, COLOUR_BAR_WIDTH};
 use super::heatmap::{blit_heatmap, draw_heatmap};
 use super::legend::{free_corner, legend_entries, Legend};
 use super::lines::draw_lines_and_markers;
-use super::ticks::tick_label;
+use super::ticks::axis_tick_label;
 use super::{err, px, Raster, RenderError};
 use crate::figure::Figure;
 use crate::theme::Theme;
@@ -113,8 +113,8 @@ where
         .axis_style(fg.stroke_width(px(1.0, scale)))
         .x_labels(6)
         .y_labels(6)
-        .x_label_formatter(&|v| tick_label(*v, theme.decimal_comma))
-        .y_label_formatter(&|v| tick_label(*v, theme.decimal_comma))
+        .x_label_formatter(&|v| axis_tick_label(*v, &fig.x, theme.decimal_comma))
+        .y_label_formatter(&|v| axis_tick_label(*v, &fig.y, theme.decimal_comma))
         .draw()
         .map_err(err)?;
 

@@ -159,6 +159,21 @@ fn tick_labels_are_short_and_follow_the_language() {
 }
 
 #[test]
+fn a_tick_at_zero_reads_0_not_the_rounding_left_from_adding_steps() {
+    use super::ticks::axis_tick_label;
+    let linear = Axis::linear("x", "m", (-1.5, 1.5));
+    assert_eq!(axis_tick_label(2.7255e-17, &linear, false), "0");
+    assert_eq!(axis_tick_label(-6.93889e-18, &linear, true), "0");
+    assert_eq!(axis_tick_label(0.5, &linear, false), "0.5");
+    // A tiny axis keeps its tiny ticks: only values tiny against the span are zero.
+    let tiny = Axis::linear("x", "m", (0.0, 1e-15));
+    assert_eq!(axis_tick_label(2e-16, &tiny, false), "2e-16");
+    // A log axis has no zero: a tick twelve decades below the top keeps its value.
+    let log = Axis::log("f", "Hz", (1e-12, 1.0));
+    assert_eq!(axis_tick_label(1e-12, &log, false), "1e-12");
+}
+
+#[test]
 fn held_axes_keep_their_ranges_and_widen_only_for_data_that_leaves_them() {
     let mut fig = sample();
     fig.x.range = (0.0, 1.2);
@@ -284,4 +299,29 @@ fn non_finite_points_split_lines_and_huge_ones_are_clamped() {
         render(&root, &fig, &Theme::LIGHT, 1.0).unwrap();
     }
     assert!(svg.contains("clipped"), "the plot says it is clipped");
+}
+
+#[test]
+fn a_drawn_axis_through_zero_labels_its_zero_tick_0() {
+    // Ranges whose ticks are reached by adding steps that do not land exactly on zero.
+    for &(lo, hi) in &[
+        (-0.3, 0.3),
+        (-0.7, 0.7),
+        (-1.1, 0.9),
+        (-0.33, 0.27),
+        (-2.7, 3.3),
+    ] {
+        let mut fig = sample();
+        fig.x.range = (lo, hi);
+        fig.y.range = (lo, hi);
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+            render(&root, &fig, &Theme::LIGHT, 1.0).unwrap();
+        }
+        assert!(
+            !svg.contains("e-1"),
+            "{lo}..{hi}: a rounding tail in a tick label"
+        );
+    }
 }

@@ -3,6 +3,7 @@
 // Drawing: tick placement on log axes (decades), not model maths.
 #![allow(clippy::disallowed_methods)]
 
+use crate::figure::{Axis, AxisScale};
 use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
 use plotters::prelude::*;
 
@@ -70,6 +71,21 @@ pub(super) fn decade_multiples(lo: f64, hi: f64, mantissas: &[f64]) -> Vec<f64> 
         }
     }
     out
+}
+
+/// The label of a tick at `v` on `axis`: [`tick_label`], except that on a linear axis a
+/// value within a billionth of the axis span of zero reads 0. Ticks are reached by adding
+/// up steps, which leaves rounding such as `2.7255e-17` where zero is meant; plotters puts
+/// at most a handful of labelled ticks across the span, so a step is at least a tenth of
+/// it and a real tick is never that close to zero. Log axes have no zero and keep every
+/// value (their ticks can be many decades below the span).
+pub(super) fn axis_tick_label(v: f64, axis: &Axis, decimal_comma: bool) -> String {
+    let (lo, hi) = axis.range;
+    let span = (hi - lo).abs();
+    if axis.scale == AxisScale::Linear && span.is_finite() && v.abs() < 1e-9 * span {
+        return "0".to_string();
+    }
+    tick_label(v, decimal_comma)
 }
 
 /// A tick label: at most 6 significant digits, no rounding tails (`0.30000000000000004` →
