@@ -1,0 +1,171 @@
+//! A plot with axes: the chart, its mesh and tick labels, and where each layer goes.
+
+use super::colour_bar::{draw_colour_bar, COLOUR_BAR_WIDTH};
+use super::heatmap::{blit_heatmap, draw_heatmap};
+use super::legend::{free_corner, legend_entries, Legend};
+use super::lines::draw_lines_and_markers;
+use super::ticks::axis_tick_label;
+use super::{err, px, Raster, RenderError};
+use crate::figure::Figure;
+use crate::theme::Theme;
+use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// Where a figure's legend goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Placement {
+    /// No legend entries.
+    None,
+    /// A box with its top-left corner here, in plotting-area pixels, over no data.
+    Inside(i32, i32),
+    /// Rows under the chart, outside the plotting area (no corner was free of data).
+    Below,
+}
+
+/// A chart over the coordinates `X` × `Y` describe.
+pub(super) type Chart<'a, DB, X, Y> = ChartContext<
+    'a,
+    DB,
+    Cartesian2d<<X as AsRangedCoord>::CoordDescType, <Y as AsRangedCoord>::CoordDescType>,
+>;
+
+pub(super) fn build<'a, DB, X, Y>(
+    area: &'a DrawingArea<DB, Shift>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+    xr: X,
+    yr: Y,
+) -> Result<Chart<'a, DB, X, Y>, RenderError>
+where
+    DB: DrawingBackend,
+    X: AsRangedCoord<Value = f64>,
+    Y: AsRangedCoord<Value = f64>,
+{
+    let font = ("sans-serif", 15.0 * scale)
+        .into_font()
+        .color(&theme.foreground);
+    let right = if fig.heatmap.is_some() {
+        COLOUR_BAR_WIDTH
+    } else {
+        10.0
+    };
+    ChartBuilder::on(area)
+        .caption(&fig.title, font)
+        .margin(px(10.0, scale))
+        .margin_right(px(right, scale))
+        .x_label_area_size(px(42.0, scale))
+        .y_label_area_size(px(64.0, scale))
+        .build_cartesian_2d(xr, yr)
+        .map_err(err)
+}
+
+pub(super) fn draw<DB, X, Y>(
+    root: &DrawingArea<DB, Shift>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+    raster: Raster,
+    xr: impl Fn() -> X,
+    yr: impl Fn() -> Y,
+) -> Result<(f64, f64, f64, f64), RenderError>
+where
+    DB: DrawingBackend,
+    X: AsRangedCoord<Value = f64>,
+    Y: AsRangedCoord<Value = f64>,
+    X::CoordDescType: ValueFormatter<f64>,
+    Y::CoordDescType: ValueFormatter<f64>,
+{
+    let fg = theme.foreground;
+    let font = |size: f64| ("sans-serif", size * scale).into_font().color(&fg);
+    let entries = legend_entries(fig);
+    let legend = Legend::measure(root, &entries, scale)?;
+
+    // Where the legend can go without covering data: a trial layout gives the pixels.
+    let mut placement = Placement::None;
+    if !entries.is_empty() {
+        let trial = build(root, fig, theme, scale, xr(), yr())?;
+        placement = match free_corner(&trial, fig, legend.size, scale) {
+            Some((x, y)) => Placement::Inside(x, y),
+            None => Placement::Below,
+        };
+        root.fill(&theme.background).map_err(err)?;
+    }
+    let (w, h) = root.dim_in_pixel();
+    let band_h = if placement == Placement::Below {
+        legend.band_height(w, scale).min(h / 3)
+    } else {
+        0
+    };
+    let (area, band) = root.split_vertically(h.saturating_sub(band_h));
+    let mut chart = build(&area, fig, theme, scale, xr(), yr())?;
+
+    chart
+        .configure_mesh()
+        .x_desc(fig.x.title())
+        .y_desc(fig.y.title())
+        .axis_desc_style(font(13.0))
+        .label_style(font(12.0))
+        .bold_line_style(theme.grid.stroke_width(px(1.0, scale)))
+        .light_line_style(theme.grid_minor.stroke_width(px(1.0, scale)))
+        .max_light_lines(4)
+        .axis_style(fg.stroke_width(px(1.0, scale)))
+        .x_labels(6)
+        .y_labels(6)
+        .x_label_formatter(&|v| axis_tick_label(*v, &fig.x, theme.decimal_comma))
+        .y_label_formatter(&|v| axis_tick_label(*v, &fig.y, theme.decimal_comma))
+        .draw()
+        .map_err(err)?;
+
+    if let Some(h) = &fig.heatmap {
+        match raster {
+            Raster::Cells => draw_heatmap(&mut chart, h)?,
+            Raster::Bitmap => blit_heatmap(&mut chart, h, theme)?,
+        }
+        let (xs, ys) = chart.plotting_area().get_pixel_range();
+        draw_colour_bar(&area, h, (xs.end, ys.start, ys.end), theme, scale)?;
+    }
+
+    if fig.origin_lines {
+        let (x0, x1) = fig.x.range;
+        let (y0, y1) = fig.y.range;
+        let style = fg.mix(0.6).stroke_width(px(1.0, scale));
+        if x0 < 0.0 && x1 > 0.0 {
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    vec![(0.0, y0), (0.0, y1)],
+                    style,
+                )))
+                .map_err(err)?;
+        }
+        if y0 < 0.0 && y1 > 0.0 {
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    vec![(x0, 0.0), (x1, 0.0)],
+                    style,
+                )))
+                .map_err(err)?;
+        }
+    }
+
+    draw_lines_and_markers(&mut chart, fig, theme, scale)?;
+    match placement {
+        Placement::Inside(x, y) => legend.draw_box(
+            &chart.plotting_area().strip_coord_spec(),
+            &entries,
+            (x, y),
+            theme,
+            scale,
+        )?,
+        Placement::Below => legend.draw_rows(&band, &entries, theme, scale)?,
+        Placement::None => {}
+    }
+    let (xs, ys) = chart.plotting_area().get_pixel_range();
+    Ok((
+        f64::from(xs.start),
+        f64::from(ys.start),
+        f64::from(xs.end),
+        f64::from(ys.end),
+    ))
+}

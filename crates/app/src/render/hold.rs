@@ -1,0 +1,45 @@
+//! Axes held still while a control is dragged, and eased back when it is released.
+
+// Drawing: axis ranges eased geometrically on log axes, not model maths.
+#![allow(clippy::disallowed_methods)]
+
+use crate::figure::{AxisScale, Figure, FigureKind};
+
+/// A plot's `(x, y)` axis ranges.
+pub type AxisRanges = ((f64, f64), (f64, f64));
+
+/// While a control is dragged, a plot keeps the ranges it was last drawn with (`held`),
+/// widened only as far as the new figure's own ranges need, so the axes hold still and the
+/// change the control makes is seen; the figure's own ranges return when the drag ends.
+/// Schematics (equal scales, no axes) are left alone.
+pub fn hold_axes(fig: &mut Figure, held: Option<AxisRanges>) {
+    let Some((hx, hy)) = held else { return };
+    if fig.kind != FigureKind::Plot {
+        return;
+    }
+    let widen = |(lo, hi): (f64, f64), (a, b): (f64, f64)| (lo.min(a), hi.max(b));
+    fig.x.range = widen(hx, fig.x.range);
+    fig.y.range = widen(hy, fig.y.range);
+}
+
+/// After a drag, moves a plot's axes from the ranges it was held at (`from`) towards the
+/// figure's own, by `f` in 0…1 (1 = the figure's own ranges); log axes move geometrically.
+/// Used over a few frames so the rescale is seen as a motion, not a jump.
+pub fn ease_axes(fig: &mut Figure, from: Option<AxisRanges>, f: f64) {
+    let Some((fx, fy)) = from else { return };
+    if fig.kind != FigureKind::Plot || !(0.0..1.0).contains(&f) {
+        return;
+    }
+    let mix = |a: f64, b: f64, log: bool| {
+        if log && a > 0.0 && b > 0.0 {
+            (a.ln() + f * (b.ln() - a.ln())).exp()
+        } else {
+            a + f * (b - a)
+        }
+    };
+    let x_log = fig.x.scale == AxisScale::Log;
+    let y_log = fig.y.scale == AxisScale::Log;
+    let (x, y) = (fig.x.range, fig.y.range);
+    fig.x.range = (mix(fx.0, x.0, x_log), mix(fx.1, x.1, x_log));
+    fig.y.range = (mix(fy.0, y.0, y_log), mix(fy.1, y.1, y_log));
+}

@@ -1,0 +1,142 @@
+//! Series (split where they cannot be drawn, clamped to the axes) and markers.
+
+use super::{err, px, RenderError};
+use crate::figure::{AxisScale, Dash, Figure, FigureKind, LineStyle, MarkerShape, Series};
+use crate::theme::Theme;
+use plotters::prelude::*;
+
+/// Splits a series at points that cannot be drawn (non-finite, or ≤ 0 on a log axis) and
+/// clamps the rest into the (slightly widened) plot area, so a diverging curve is drawn to
+/// the edge instead of off the canvas. The flag says whether anything was clamped.
+pub(super) fn segments(s: &Series, fig: &Figure) -> (Vec<Vec<(f64, f64)>>, bool) {
+    let widen = |(lo, hi): (f64, f64), log: bool| {
+        if log {
+            (lo / 1.05, hi * 1.05)
+        } else {
+            let pad = 0.02 * (hi - lo);
+            (lo - pad, hi + pad)
+        }
+    };
+    let (xl, xh) = widen(fig.x.range, fig.x.scale == AxisScale::Log);
+    let (yl, yh) = widen(fig.y.range, fig.y.scale == AxisScale::Log);
+    let x_log = fig.x.scale == AxisScale::Log;
+    let y_log = fig.y.scale == AxisScale::Log;
+    let mut out: Vec<Vec<(f64, f64)>> = Vec::new();
+    let mut cur: Vec<(f64, f64)> = Vec::new();
+    let mut clipped = false;
+    for &(x, y) in &s.points {
+        let drawable = x.is_finite() && y.is_finite() && (!x_log || x > 0.0) && (!y_log || y > 0.0);
+        if drawable {
+            let p = (x.clamp(xl, xh), y.clamp(yl, yh));
+            clipped |= p != (x, y);
+            cur.push(p);
+        } else if !cur.is_empty() {
+            out.push(std::mem::take(&mut cur));
+        }
+    }
+    if !cur.is_empty() {
+        out.push(cur);
+    }
+    (out, clipped)
+}
+
+/// Draws the series and markers of `fig`; returns the legend entries.
+pub(super) fn draw_lines_and_markers<'f, DB, X, Y>(
+    chart: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
+    fig: &'f Figure,
+    theme: &Theme,
+    scale: f64,
+) -> Result<Vec<(&'f str, LineStyle)>, RenderError>
+where
+    DB: DrawingBackend,
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let fg = theme.foreground;
+    let font = |size: f64| ("sans-serif", size * scale).into_font().color(&fg);
+    let mut legend: Vec<(&str, LineStyle)> = Vec::new();
+    let mut clipped = false;
+    for s in &fig.series {
+        let color = theme.color(s.style.ink.index());
+        let style = color.stroke_width(px(s.style.width, scale));
+        let (segs, cut) = segments(s, fig);
+        clipped |= cut;
+        for seg in segs {
+            match s.style.dash {
+                Dash::Solid => chart
+                    .draw_series(LineSeries::new(seg, style))
+                    .map_err(err)?,
+                Dash::Dashed => chart
+                    .draw_series(DashedLineSeries::new(
+                        seg,
+                        px(8.0, scale),
+                        px(5.0, scale),
+                        style,
+                    ))
+                    .map_err(err)?,
+                Dash::Dotted => chart
+                    .draw_series(DashedLineSeries::new(
+                        seg,
+                        px(2.0, scale),
+                        px(4.0, scale),
+                        style,
+                    ))
+                    .map_err(err)?,
+            };
+        }
+        if !s.label.is_empty() {
+            legend.push((&s.label, s.style));
+        }
+    }
+
+    for m in &fig.markers {
+        let color = theme.color(m.ink.index());
+        let (x, y) = m.at;
+        if !(x.is_finite() && y.is_finite()) {
+            continue;
+        }
+        let size = px(7.0, scale) as i32;
+        let stroke = color.stroke_width(px(2.5, scale));
+        match m.shape {
+            MarkerShape::Cross => {
+                chart
+                    .draw_series(std::iter::once(Cross::new((x, y), size, stroke)))
+                    .map_err(err)?;
+            }
+            MarkerShape::Dot => {
+                chart
+                    .draw_series(std::iter::once(Circle::new(
+                        (x, y),
+                        size / 2 + 1,
+                        color.filled(),
+                    )))
+                    .map_err(err)?;
+            }
+            MarkerShape::Label => {
+                chart
+                    .draw_series(std::iter::once(
+                        EmptyElement::at((x, y)) + Text::new(m.label.clone(), (0, 0), font(14.0)),
+                    ))
+                    .map_err(err)?;
+                continue;
+            }
+        }
+        if !m.label.is_empty() {
+            let off = (px(8.0, scale) as i32, -(px(16.0, scale) as i32));
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at((x, y)) + Text::new(m.label.clone(), off, font(12.0)),
+                ))
+                .map_err(err)?;
+        }
+    }
+
+    if clipped && fig.kind == FigureKind::Plot {
+        // Say so when a curve leaves the axes, so a clamped line is not read as data.
+        let area = chart.plotting_area().strip_coord_spec();
+        let at = (px(6.0, scale) as i32, px(4.0, scale) as i32);
+        let note = theme.clipped_note;
+        area.draw(&Text::new(note, at, font(11.0))).map_err(err)?;
+    }
+    Ok(legend)
+}

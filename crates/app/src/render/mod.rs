@@ -1,0 +1,225 @@
+//! Draws a [`Figure`] on any plotters backend: the canvas in the browser, SVG natively.
+//!
+//! Sizes are given in CSS pixels and multiplied by `scale` (the screen's
+//! `devicePixelRatio`) so text and lines look the same on every screen, and crisp.
+
+// Drawing: pixel geometry of log axes (data ↔ pixels), not model maths.
+#![allow(clippy::disallowed_methods)]
+
+mod chart;
+mod colour_bar;
+mod heatmap;
+mod hold;
+mod legend;
+mod lines;
+#[cfg(test)]
+mod tests;
+mod ticks;
+
+pub use hold::{ease_axes, hold_axes, AxisRanges};
+pub use ticks::{log_ticks, tick_label};
+
+use crate::figure::{AxisScale, Figure, FigureKind};
+use crate::theme::Theme;
+use chart::draw;
+use lines::draw_lines_and_markers;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use ticks::log_axis;
+
+/// Why a figure could not be drawn (a backend failure; figures themselves are always drawable).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RenderError(pub String);
+
+impl std::fmt::Display for RenderError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "could not draw the plot: {}", self.0)
+    }
+}
+
+impl std::error::Error for RenderError {}
+
+fn err<E: std::fmt::Debug>(e: E) -> RenderError {
+    RenderError(format!("{e:?}"))
+}
+
+/// Where the data went on the backend: the plotting area in backend pixels and the
+/// ranges mapped onto it, so the page can turn a pointer position back into data values.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlotGeometry {
+    /// Left, top, right, bottom edges of the plotting area, in backend pixels.
+    pub area: (f64, f64, f64, f64),
+    /// x range shown.
+    pub x: (f64, f64),
+    /// y range shown.
+    pub y: (f64, f64),
+    /// Whether x is logarithmic.
+    pub x_log: bool,
+    /// Whether y is logarithmic.
+    pub y_log: bool,
+}
+
+impl PlotGeometry {
+    fn frac(v: f64, (lo, hi): (f64, f64), log: bool) -> f64 {
+        if log {
+            (v.ln() - lo.ln()) / (hi.ln() - lo.ln())
+        } else {
+            (v - lo) / (hi - lo)
+        }
+    }
+
+    fn unfrac(f: f64, (lo, hi): (f64, f64), log: bool) -> f64 {
+        if log {
+            (lo.ln() + f * (hi.ln() - lo.ln())).exp()
+        } else {
+            lo + f * (hi - lo)
+        }
+    }
+
+    /// Backend pixel of data point `(x, y)`.
+    pub fn to_pixel(&self, x: f64, y: f64) -> (f64, f64) {
+        let (l, t, r, b) = self.area;
+        (
+            l + Self::frac(x, self.x, self.x_log) * (r - l),
+            b - Self::frac(y, self.y, self.y_log) * (b - t),
+        )
+    }
+
+    /// Data point at backend pixel `(px, py)`, or `None` outside the plotting area.
+    pub fn to_data(&self, px: f64, py: f64) -> Option<(f64, f64)> {
+        let (l, t, r, b) = self.area;
+        if !(l..=r).contains(&px) || !(t..=b).contains(&py) || r <= l || b <= t {
+            return None;
+        }
+        Some((
+            Self::unfrac((px - l) / (r - l), self.x, self.x_log),
+            Self::unfrac((b - py) / (b - t), self.y, self.y_log),
+        ))
+    }
+}
+
+/// Draws `fig` onto `root`, filling it with the theme's background first; returns where
+/// the plotting area went. Heatmaps are drawn as one rectangle per cell (exact in SVG).
+pub fn render<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+) -> Result<PlotGeometry, RenderError> {
+    render_with(root, fig, theme, scale, Raster::Cells)
+}
+
+/// How heatmaps are drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Raster {
+    /// One filled rectangle per cell: exact, and right for vector output.
+    Cells,
+    /// One bitmap blitted into the plotting area (linear axes only; log axes fall back to
+    /// cells): for backends with a fast `blit_bitmap`, such as the canvas, where 10 000
+    /// rectangle fills would take ~10 ms a frame.
+    Bitmap,
+}
+
+/// [`render`], choosing how heatmaps are drawn.
+pub fn render_with<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+    raster: Raster,
+) -> Result<PlotGeometry, RenderError> {
+    root.fill(&theme.background).map_err(err)?;
+    if fig.kind == FigureKind::Schematic {
+        let g = draw_schematic(root, fig, theme, scale)?;
+        root.present().map_err(err)?;
+        return Ok(g);
+    }
+    let (x0, x1) = fig.x.range;
+    let (y0, y1) = fig.y.range;
+    let area = match (fig.x.scale, fig.y.scale) {
+        (AxisScale::Linear, AxisScale::Linear) => {
+            draw(root, fig, theme, scale, raster, || x0..x1, || y0..y1)
+        }
+        (AxisScale::Log, AxisScale::Linear) => draw(
+            root,
+            fig,
+            theme,
+            scale,
+            Raster::Cells,
+            || log_axis(x0, x1),
+            || y0..y1,
+        ),
+        (AxisScale::Linear, AxisScale::Log) => draw(
+            root,
+            fig,
+            theme,
+            scale,
+            Raster::Cells,
+            || x0..x1,
+            || log_axis(y0, y1),
+        ),
+        (AxisScale::Log, AxisScale::Log) => draw(
+            root,
+            fig,
+            theme,
+            scale,
+            Raster::Cells,
+            || log_axis(x0, x1),
+            || log_axis(y0, y1),
+        ),
+    }?;
+    root.present().map_err(err)?;
+    Ok(PlotGeometry {
+        area,
+        x: fig.x.range,
+        y: fig.y.range,
+        x_log: fig.x.scale == AxisScale::Log,
+        y_log: fig.y.scale == AxisScale::Log,
+    })
+}
+
+/// A schematic: no axes, equal scales, the ranges widened to the canvas's shape.
+fn draw_schematic<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+) -> Result<PlotGeometry, RenderError> {
+    let (w, h) = root.dim_in_pixel();
+    let (w, h) = (f64::from(w.max(1)), f64::from(h.max(1)));
+    let (mut x, mut y) = (fig.x.range, fig.y.range);
+    let (sx, sy) = ((x.1 - x.0) / w, (y.1 - y.0) / h);
+    if sx > sy {
+        let pad = (sx * h - (y.1 - y.0)) / 2.0;
+        y = (y.0 - pad, y.1 + pad);
+    } else {
+        let pad = (sy * w - (x.1 - x.0)) / 2.0;
+        x = (x.0 - pad, x.1 + pad);
+    }
+    let mut chart = ChartBuilder::on(root)
+        .build_cartesian_2d(x.0..x.1, y.0..y.1)
+        .map_err(err)?;
+    let fitted = Figure {
+        x: crate::figure::Axis {
+            range: x,
+            ..fig.x.clone()
+        },
+        y: crate::figure::Axis {
+            range: y,
+            ..fig.y.clone()
+        },
+        ..fig.clone()
+    };
+    draw_lines_and_markers(&mut chart, &fitted, theme, scale)?;
+    Ok(PlotGeometry {
+        area: (0.0, 0.0, w, h),
+        x,
+        y,
+        x_log: false,
+        y_log: false,
+    })
+}
+
+fn px(v: f64, scale: f64) -> u32 {
+    (v * scale).round().max(1.0) as u32
+}

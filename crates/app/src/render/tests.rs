@@ -1,0 +1,327 @@
+use super::lines::segments;
+use super::*;
+use crate::figure::{Axis, LineStyle, Marker, MarkerShape, Series};
+use crate::plot::Ink;
+
+fn sample() -> Figure {
+    Figure {
+        series: vec![Series {
+            label: "x(t)".into(),
+            points: vec![(0.0, 0.0), (0.5, f64::NAN), (0.6, 1e300), (1.0, -0.5)],
+            style: LineStyle::solid(Ink::Blue, 2.0),
+        }],
+        markers: vec![Marker {
+            label: "p".into(),
+            at: (0.5, 0.5),
+            shape: MarkerShape::Cross,
+            ink: Ink::Vermillion,
+        }],
+        origin_lines: true,
+        ..Figure::plot(
+            "test",
+            Axis::linear("time t", "s", (0.0, 1.0)),
+            Axis::linear("x", "m", (-1.0, 1.0)),
+        )
+    }
+}
+
+#[test]
+fn draws_to_svg_with_axes_legend_and_markers() {
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        render(&root, &sample(), &Theme::LIGHT, 1.0).unwrap();
+    }
+    assert!(svg.contains("time t [s]"));
+    assert!(svg.contains("x(t)"));
+    assert!(
+        svg.matches("<polyline").count() >= 2,
+        "line split at the NaN"
+    );
+}
+
+#[test]
+fn log_axes_never_receive_zero_or_negative_values() {
+    let mut fig = sample();
+    fig.x = Axis {
+        scale: AxisScale::Log,
+        ..Axis::linear("r", "", (0.01, 100.0))
+    };
+    fig.series[0].points = vec![
+        (0.0, 1.0),
+        (-1.0, 1.0),
+        (0.1, 0.5),
+        (1.0, 0.2),
+        (-0.5, 0.1),
+        (10.0, 0.3),
+    ];
+    let (segs, _) = segments(&fig.series[0], &fig);
+    assert_eq!(segs.len(), 2);
+    assert!(segs.iter().flatten().all(|p| p.0 > 0.0));
+    let mut svg = String::new();
+    let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+    render(&root, &fig, &Theme::LIGHT, 1.0).unwrap();
+}
+
+#[test]
+fn heatmap_cells_are_filled_and_blank_where_undefined() {
+    let mut fig = sample();
+    fig.heatmap = Some(crate::figure::Heatmap {
+        nx: 4,
+        ny: 3,
+        values: (0..12)
+            .map(|i| if i == 5 { f64::NAN } else { i as f64 })
+            .collect(),
+        x_edges: (0.0, 1.0),
+        y_edges: (-1.0, 1.0),
+        scale: (0.0, 11.0),
+        label: "metric [s]".into(),
+    });
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        render(&root, &fig, &Theme::LIGHT, 1.0).unwrap();
+    }
+    let lo = crate::theme::viridis(0.0);
+    let hi = crate::theme::viridis(1.0);
+    let hex = |c: RGBColor| format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2);
+    assert!(
+        svg.contains(&hex(lo)) && svg.contains(&hex(hi)),
+        "both ends of the colour map"
+    );
+    // The same map with every cell undefined: the same axes, legend and colour bar.
+    let without = {
+        let mut blank = fig.clone();
+        if let Some(h) = &mut blank.heatmap {
+            h.values = vec![f64::NAN; 12];
+        }
+        let mut s = String::new();
+        let root = SVGBackend::with_string(&mut s, (640, 360)).into_drawing_area();
+        render(&root, &blank, &Theme::LIGHT, 1.0).unwrap();
+        drop(root);
+        s
+    };
+    assert!(
+        svg.contains("metric [s]"),
+        "the colour bar names the metric and unit"
+    );
+    assert_eq!(
+        svg.matches("<rect").count() - without.matches("<rect").count(),
+        11
+    );
+}
+
+#[test]
+fn bitmap_heatmap_paints_the_same_colours_as_cells() {
+    let mut fig = sample();
+    fig.series.clear();
+    fig.markers.clear();
+    fig.heatmap = Some(crate::figure::Heatmap {
+        nx: 2,
+        ny: 1,
+        values: vec![0.0, 1.0],
+        x_edges: (0.0, 1.0),
+        y_edges: (-1.0, 1.0),
+        scale: (0.0, 1.0),
+        label: String::new(),
+    });
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (320, 160)).into_drawing_area();
+        render_with(&root, &fig, &Theme::LIGHT, 1.0, Raster::Bitmap).unwrap();
+    }
+    let hex = |c: RGBColor| format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2);
+    let (lo, hi) = (
+        hex(crate::theme::viridis(0.0)),
+        hex(crate::theme::viridis(1.0)),
+    );
+    let (a, b) = (svg.matches(&lo).count(), svg.matches(&hi).count());
+    assert!(
+        a > 100 && b > 100,
+        "both halves painted pixel by pixel: {a} {b}"
+    );
+    assert!(
+        (a as f64 / b as f64 - 1.0).abs() < 0.1,
+        "left and right halves equal: {a} {b}"
+    );
+}
+
+#[test]
+fn tick_labels_are_short_and_follow_the_language() {
+    assert_eq!(tick_label(0.1 + 0.2, false), "0.3");
+    assert_eq!(tick_label(2.0, false), "2");
+    assert_eq!(tick_label(-0.05, false), "-0.05");
+    assert_eq!(tick_label(1.000_000_000_000_000_2e-6, false), "1e-6");
+    assert_eq!(tick_label(1e-7, false), "1e-7");
+    assert_eq!(tick_label(24_000.0, false), "24000");
+    assert_eq!(tick_label(0.25, true), "0,25");
+    assert_eq!(tick_label(0.0, true), "0");
+}
+
+#[test]
+fn a_tick_at_zero_reads_0_not_the_rounding_left_from_adding_steps() {
+    use super::ticks::axis_tick_label;
+    let linear = Axis::linear("x", "m", (-1.5, 1.5));
+    assert_eq!(axis_tick_label(2.7255e-17, &linear, false), "0");
+    assert_eq!(axis_tick_label(-6.93889e-18, &linear, true), "0");
+    assert_eq!(axis_tick_label(0.5, &linear, false), "0.5");
+    // A tiny axis keeps its tiny ticks: only values tiny against the span are zero.
+    let tiny = Axis::linear("x", "m", (0.0, 1e-15));
+    assert_eq!(axis_tick_label(2e-16, &tiny, false), "2e-16");
+    // A log axis has no zero: a tick twelve decades below the top keeps its value.
+    let log = Axis::log("f", "Hz", (1e-12, 1.0));
+    assert_eq!(axis_tick_label(1e-12, &log, false), "1e-12");
+}
+
+#[test]
+fn held_axes_keep_their_ranges_and_widen_only_for_data_that_leaves_them() {
+    let mut fig = sample();
+    fig.x.range = (0.0, 1.2);
+    fig.y.range = (-0.5, 0.5);
+    hold_axes(&mut fig, Some(((0.0, 1.5), (-1.0, 1.0))));
+    assert_eq!((fig.x.range, fig.y.range), ((0.0, 1.5), (-1.0, 1.0)));
+    fig.y.range = (-2.0, 0.5);
+    hold_axes(&mut fig, Some(((0.0, 1.5), (-1.0, 1.0))));
+    assert_eq!(fig.y.range, (-2.0, 1.0));
+    let mut drawing = Figure::schematic(
+        "s",
+        Axis::linear("x", "m", (0.0, 1.0)),
+        Axis::linear("y", "m", (0.0, 1.0)),
+    );
+    hold_axes(&mut drawing, Some(((0.0, 5.0), (0.0, 5.0))));
+    assert_eq!(drawing.x.range, (0.0, 1.0));
+}
+
+#[test]
+fn log_axes_label_enough_ticks_to_read_a_value() {
+    // Two decades: 1, 2, 5 in each.
+    assert_eq!(
+        log_ticks(0.1, 10.0),
+        vec![0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0]
+    );
+    // Under one decade: still several labelled values.
+    assert_eq!(log_ticks(0.5, 3.0), vec![0.5, 0.7, 1.0, 1.5, 2.0, 3.0]);
+    assert!(log_ticks(1.1, 1.9).len() >= 2);
+    // Many decades: the decades alone.
+    assert_eq!(log_ticks(1e-3, 1e2).len(), 6);
+    assert!(log_ticks(0.0, 1.0).is_empty());
+}
+
+/// The top of the legend box in an SVG rendering, if a box was drawn.
+fn legend_box_y(svg: &str) -> Option<f64> {
+    // The legend box is the only rectangle filled with the background at 88 % opacity.
+    let at = svg.find("opacity=\"0.88\"")?;
+    let start = svg[..at].rfind("<rect")?;
+    let y = svg[start..].split("y=\"").nth(1)?.split('"').next()?;
+    y.parse().ok()
+}
+
+#[test]
+fn the_legend_goes_where_the_curves_are_not() {
+    // A curve along the top of the plot: the legend moves to the bottom.
+    let mut fig = sample();
+    fig.markers.clear();
+    fig.series[0].points = (0..=50).map(|i| (f64::from(i) / 50.0, 0.9)).collect();
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        render(&root, &fig, &Theme::LIGHT, 1.0).unwrap();
+    }
+    let y = legend_box_y(&svg).expect("a legend box inside the plot");
+    assert!(
+        y > 180.0,
+        "legend in the lower half, clear of the curve: y = {y}"
+    );
+    // Curves everywhere: the legend goes under the chart, outside the plotting area.
+    fig.series = (0..12)
+        .map(|k| {
+            let level = -1.0 + f64::from(k) / 6.0;
+            Series::new(
+                format!("level {k}"),
+                vec![(0.0, level), (1.0, level)],
+                LineStyle::solid(Ink::Blue, 1.0),
+            )
+        })
+        .collect();
+    let mut svg = String::new();
+    let g = {
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        render(&root, &fig, &Theme::LIGHT, 1.0).unwrap()
+    };
+    assert!(legend_box_y(&svg).is_none(), "no box over the data");
+    assert!(svg.contains("level 11"), "every entry still drawn");
+    assert!(
+        g.area.3 < 300.0,
+        "room left under the chart for the legend rows"
+    );
+}
+
+#[test]
+fn released_axes_ease_from_the_held_ranges_to_the_figures_own() {
+    let mut fig = sample();
+    fig.x.range = (0.0, 1.0);
+    ease_axes(&mut fig, Some(((0.0, 3.0), (-1.0, 1.0))), 0.5);
+    assert_eq!(fig.x.range, (0.0, 2.0));
+    let mut fig = sample();
+    fig.x = Axis::log("f", "Hz", (1.0, 100.0));
+    ease_axes(&mut fig, Some(((1.0, 10_000.0), (-1.0, 1.0))), 0.5);
+    assert!((fig.x.range.1 - 1000.0).abs() < 1e-9);
+    let mut fig = sample();
+    ease_axes(&mut fig, Some(((0.0, 3.0), (-5.0, 5.0))), 1.0);
+    assert_eq!(fig.x.range, (0.0, 1.0), "at 1 the figure's own ranges");
+}
+
+#[test]
+fn geometry_round_trips_pixels_and_data() {
+    let mut svg = String::new();
+    let g = {
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        render(&root, &sample(), &Theme::LIGHT, 1.0).unwrap()
+    };
+    let (l, t, r, b) = g.area;
+    assert!(l > 20.0 && r < 640.0 && t > 10.0 && b < 360.0 && l < r && t < b);
+    let (px, py) = g.to_pixel(0.25, 0.5);
+    let (x, y) = g.to_data(px, py).unwrap();
+    assert!((x - 0.25).abs() < 1e-12 && (y - 0.5).abs() < 1e-12);
+    assert!(g.to_data(0.0, 0.0).is_none());
+}
+
+#[test]
+fn non_finite_points_split_lines_and_huge_ones_are_clamped() {
+    let fig = sample();
+    let (segs, clipped) = segments(&fig.series[0], &fig);
+    assert_eq!(segs.len(), 2);
+    assert!(segs[1][0].1 <= 1.05);
+    assert!(clipped);
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        render(&root, &fig, &Theme::LIGHT, 1.0).unwrap();
+    }
+    assert!(svg.contains("clipped"), "the plot says it is clipped");
+}
+
+#[test]
+fn a_drawn_axis_through_zero_labels_its_zero_tick_0() {
+    // Ranges whose ticks are reached by adding steps that do not land exactly on zero.
+    for &(lo, hi) in &[
+        (-0.3, 0.3),
+        (-0.7, 0.7),
+        (-1.1, 0.9),
+        (-0.33, 0.27),
+        (-2.7, 3.3),
+    ] {
+        let mut fig = sample();
+        fig.x.range = (lo, hi);
+        fig.y.range = (lo, hi);
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+            render(&root, &fig, &Theme::LIGHT, 1.0).unwrap();
+        }
+        assert!(
+            !svg.contains("e-1"),
+            "{lo}..{hi}: a rounding tail in a tick label"
+        );
+    }
+}

@@ -1,0 +1,126 @@
+//! Tick choice on log axes and tick labels.
+
+// Drawing: tick placement on log axes (decades), not model maths.
+#![allow(clippy::disallowed_methods)]
+
+use crate::figure::{Axis, AxisScale};
+use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
+use plotters::prelude::*;
+
+/// A log axis over `lo..hi` (both > 0) with its labelled ticks from [`log_ticks`] and a
+/// minor grid line at every 1…9 × 10ᵏ when the range spans fewer than six decades.
+pub(super) fn log_axis(lo: f64, hi: f64) -> WithKeyPoints<LogCoord<f64>> {
+    let minor = if (hi / lo).log10() < 6.0 {
+        decade_multiples(lo, hi, &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0])
+    } else {
+        Vec::new()
+    };
+    (lo..hi)
+        .log_scale()
+        .with_key_points(log_ticks(lo, hi))
+        .with_light_points(minor)
+}
+
+/// Labelled ticks of a log axis over `lo..hi`: every decade, and between them enough
+/// values to read a number off the axis when it spans few decades — 1, 2, 5 × 10ᵏ under
+/// three decades, 1, 1.5, 2, 3, 5, 7 × 10ᵏ under one and a half; every other decade
+/// above eight. At least two ticks whenever the range allows.
+pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    if !(lo > 0.0 && hi > lo && lo.is_finite() && hi.is_finite()) {
+        return Vec::new();
+    }
+    let decades = (hi / lo).log10();
+    let ticks = if decades < 1.5 {
+        decade_multiples(lo, hi, &[1.0, 1.5, 2.0, 3.0, 5.0, 7.0])
+    } else if decades < 3.0 {
+        decade_multiples(lo, hi, &[1.0, 2.0, 5.0])
+    } else if decades <= 8.0 {
+        decade_multiples(lo, hi, &[1.0])
+    } else {
+        decade_multiples(lo, hi, &[1.0])
+            .into_iter()
+            .filter(|v| (v.log10().round() as i64).rem_euclid(2) == 0)
+            .collect()
+    };
+    if ticks.len() >= 2 || decades < 0.05 {
+        ticks
+    } else {
+        decade_multiples(
+            lo,
+            hi,
+            &[1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0],
+        )
+    }
+}
+
+/// Every `m × 10ᵏ` (m from `mantissas`) inside `lo..=hi`, ascending.
+pub(super) fn decade_multiples(lo: f64, hi: f64, mantissas: &[f64]) -> Vec<f64> {
+    let mut out = Vec::new();
+    let first = lo.log10().floor() as i32;
+    let last = hi.log10().ceil() as i32;
+    for k in first..=last.min(first + 400) {
+        let base = 10f64.powi(k);
+        for m in mantissas {
+            // Round to 12 significant digits so labels read 0.2, not 0.20000000000000004.
+            let v = crate::format::significant(m * base, 12)
+                .parse::<f64>()
+                .unwrap_or(m * base);
+            if v >= lo * (1.0 - 1e-12) && v <= hi * (1.0 + 1e-12) {
+                out.push(v);
+            }
+        }
+    }
+    out
+}
+
+/// The label of a tick at `v` on `axis`: [`tick_label`], except that on a linear axis a
+/// value within a billionth of the axis span of zero reads 0. Ticks are reached by adding
+/// up steps, which leaves rounding such as `2.7255e-17` where zero is meant; plotters puts
+/// at most a handful of labelled ticks across the span, so a step is at least a tenth of
+/// it and a real tick is never that close to zero. Log axes have no zero and keep every
+/// value (their ticks can be many decades below the span).
+pub(super) fn axis_tick_label(v: f64, axis: &Axis, decimal_comma: bool) -> String {
+    let (lo, hi) = axis.range;
+    let span = (hi - lo).abs();
+    if axis.scale == AxisScale::Linear && span.is_finite() && v.abs() < 1e-9 * span {
+        return "0".to_string();
+    }
+    tick_label(v, decimal_comma)
+}
+
+/// A tick label: at most 6 significant digits, no rounding tails (`0.30000000000000004` →
+/// `0.3`), trailing zeros dropped, and the language's decimal separator.
+pub fn tick_label(v: f64, decimal_comma: bool) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return "0".to_string();
+    }
+    let s = crate::format::significant(v, 6);
+    let s = match s.split_once('e') {
+        Some((mantissa, exp)) => format!("{}e{exp}", trim_zeros(mantissa)),
+        None => trim_zeros(&s).to_string(),
+    };
+    if decimal_comma {
+        s.replace('.', ",")
+    } else {
+        s
+    }
+}
+
+/// A colour-bar label: three significant digits, as [`tick_label`] otherwise.
+pub(super) fn short_label(v: f64, decimal_comma: bool) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return "0".to_string();
+    }
+    tick_label(
+        crate::format::significant(v, 3).parse::<f64>().unwrap_or(v),
+        decimal_comma,
+    )
+}
+
+pub(super) fn trim_zeros(s: &str) -> &str {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        s
+    }
+}
