@@ -227,6 +227,9 @@ pub struct Heatmap {
     pub y_edges: (f64, f64),
     /// Colour scale `(low, high)`; values outside are clamped.
     pub scale: (f64, f64),
+    /// Whether `values` and `scale` are natural logarithms of the metric (a logarithmic
+    /// colour scale): the colour bar then labels `exp` of its positions, in the metric's unit.
+    pub log: bool,
     /// What the colour means, with unit, for the legend (e.g. "settling time \[s\]").
     pub label: String,
 }

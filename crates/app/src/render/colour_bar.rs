@@ -43,10 +43,12 @@ pub(super) fn draw_colour_bar<DB: DrawingBackend>(
         .into_font()
         .color(&theme.foreground);
     let label_x = x1 + px(4.0, scale) as i32;
+    // On a logarithmic bar the positions are ln(value): label the values themselves.
+    let value = |position: f64| if h.log { position.exp() } else { position };
     let ends = [
-        (hi, top, VPos::Top),
-        ((lo + hi) / 2.0, (top + bottom) / 2, VPos::Center),
-        (lo, bottom, VPos::Bottom),
+        (value(hi), top, VPos::Top),
+        (value((lo + hi) / 2.0), (top + bottom) / 2, VPos::Center),
+        (value(lo), bottom, VPos::Bottom),
     ];
     for (v, y, vpos) in ends {
         area.draw(&Text::new(

@@ -67,6 +67,7 @@ fn log_axes_never_receive_zero_or_negative_values() {
 fn heatmap_cells_are_filled_and_blank_where_undefined() {
     let mut fig = sample();
     fig.heatmap = Some(crate::figure::Heatmap {
+        log: false,
         nx: 4,
         ny: 3,
         values: (0..12)
@@ -117,6 +118,7 @@ fn bitmap_heatmap_paints_the_same_colours_as_cells() {
     fig.series.clear();
     fig.markers.clear();
     fig.heatmap = Some(crate::figure::Heatmap {
+        log: false,
         nx: 2,
         ny: 1,
         values: vec![0.0, 1.0],

@@ -98,6 +98,7 @@ pub(super) fn map(d: &DesignSpace, p: &P, r: &Results) -> Figure {
         x_edges: (k0 / KILO, k1 / KILO),
         y_edges: (c0 / KILO, c1 / KILO),
         scale: colours.scale,
+        log: colours.log,
         label: p.metric.bar_label(p.band, colours.log),
     });
     fig.described(description)
