@@ -2,7 +2,8 @@
 // declaration, and redraws at most once per animation frame while controls move.
 // No physics here: every number comes from the Session (Rust).
 import './state.js'; // first: expands a state= token in the address before anything reads it
-import init, { Session, demoList, setLanguage, takePanicMessage } from '../zeta-app.js';
+import init, { demoList, setLanguage } from '../zeta-app.js';
+import * as firstInstance from '../zeta-app.js';
 import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
 import { fillLiveCells } from './live-table.js';
 import { applyConditions } from './conditional.js';
@@ -17,6 +18,7 @@ import { LANG, num, t, translatePage } from './i18n.js';
 const DEFAULT_DEMO = 'regimes';
 const ANNOUNCE_DELAY_MS = 1200;
 const REFINE_SLICE_MS = 8; // one slice of a pending full study: well inside a frame
+const WASM_URL = new URL('../zeta-app_bg.wasm', import.meta.url);
 const darkQuery = window.matchMedia('(prefers-color-scheme: dark)');
 const reducedMotion = window.matchMedia('(prefers-reduced-motion: reduce)');
 
@@ -42,6 +44,11 @@ const app = {
   sound: createSonifier(),
   dragging: false,
   layoutDirty: true,
+  /** The glue of the module instance in use: replaced by a fresh instance after a trap. */
+  wasm: firstInstance,
+  /** How many times the module has been instantiated afresh (cache-busts the glue's URL). */
+  instances: 0,
+  recovering: null,
 };
 
 function isDark() {
@@ -53,7 +60,7 @@ function isDark() {
 
 /** Reports an error from a wasm call without breaking the page; the next input recovers. */
 function reportFailure(err) {
-  const panic = takePanicMessage();
+  const panic = app.wasm.takePanicMessage();
   const text = panic || (err && err.message) || String(err);
   console.warn('Zeta Lab recovered from an error:', text);
   notify(app.notices, t('failed', { text }), 'error');
@@ -72,10 +79,32 @@ function shownValues() {
   return values;
 }
 
-/** A fresh Session with the values the page shows (the old one may be unusable after a trap). */
+/**
+ * After a failed call: a fresh module instance (fresh memory, allocator and `RefCell`s;
+ * the old one may be poisoned by a trap) and in it a new Session with the values the page
+ * shows. Returns a promise; concurrent calls share one recovery.
+ */
 function recover() {
+  app.recovering ??= reinstantiate()
+    .then(() => {
+      app.changed = true;
+      requestDraw();
+    })
+    .finally(() => {
+      app.recovering = null;
+    });
+  return app.recovering;
+}
+
+async function reinstantiate() {
   const values = shownValues();
-  app.session = new Session(app.demoId);
+  app.instances += 1;
+  // A new URL is a new ES module record, so the glue instantiates the wasm afresh.
+  const glue = await import(`../zeta-app.js?instance=${app.instances}`);
+  await glue.default({ module_or_path: WASM_URL });
+  glue.setLanguage(LANG);
+  app.wasm = glue;
+  app.session = new glue.Session(app.demoId);
   app.session.applyQuery(currentQuery()); // keeps range./step. overrides after a recovery
   for (const [k, v] of values) app.session.set(k, v);
   attachCanvases();
@@ -157,8 +186,11 @@ function announce(text) {
 
 function drawFrame() {
   app.framePending = false;
+  if (app.needsRecovery) {
+    recover().catch(reportFailure); // draws again when the new instance is ready
+    return;
+  }
   try {
-    if (app.needsRecovery) recover();
     const dpr = sizeCanvases();
     const out = app.session.update(dpr, isDark());
     showReadouts(app.view.readouts, out.readouts);
@@ -283,8 +315,11 @@ function syncUrl() {
 }
 
 function setParam(control, raw) {
+  if (app.needsRecovery) {
+    recover().then(() => setParam(control, raw), reportFailure);
+    return;
+  }
   try {
-    if (app.needsRecovery) recover();
     const res = app.session.set(control.param.key, raw);
     if (!res) return;
     if (res.notice) notify(app.notices, res.notice.message, 'warn');
@@ -544,7 +579,7 @@ function showAllValues() {
 function openDemo(id, query) {
   setPlaying(false);
   app.demoId = id;
-  app.session = new Session(id);
+  app.session = new app.wasm.Session(id);
   const notices = query ? app.session.applyQuery(query) : [];
   const spec = app.session.spec();
   app.view = buildDemo(app.root, spec);
@@ -625,7 +660,7 @@ async function main() {
   app.root = document.getElementById('demo');
   app.notices = document.getElementById('notices');
   try {
-    const wasm = await init({ module_or_path: new URL('../zeta-app_bg.wasm', import.meta.url) });
+    const wasm = await init({ module_or_path: WASM_URL });
     // Read-only diagnostics for the soak test and curious lecturers.
     window.zetaDiagnostics = Object.freeze({ wasmBytes: () => wasm.memory.buffer.byteLength });
   } catch (err) {

@@ -1,0 +1,202 @@
+//! The spec, figures and notices in the page's language (keys, symbols and units unchanged).
+
+use super::lang;
+use crate::i18n::{tr, Lang};
+use crate::params::Notice;
+use crate::spec::DemoSpec;
+use serde::Serialize;
+
+/// Translates, in place, every string of a figure that the page shows.
+pub(super) fn translate_figure(fig: &mut crate::figure::Figure, l: Lang) {
+    if l == Lang::En {
+        return;
+    }
+    let t = |s: &mut String| *s = tr(l, s).into_owned();
+    t(&mut fig.title);
+    t(&mut fig.description);
+    t(&mut fig.x.label);
+    t(&mut fig.y.label);
+    for s in &mut fig.series {
+        t(&mut s.label);
+    }
+    for m in &mut fig.markers {
+        t(&mut m.label);
+    }
+    if let Some(h) = &mut fig.heatmap {
+        t(&mut h.label);
+    }
+}
+
+/// The spec with its human strings in language `l` (keys, symbols and units unchanged).
+pub(super) fn translate_spec(spec: &DemoSpec, l: Lang) -> TranslatedSpec {
+    let t = |s: &str| tr(l, s).into_owned();
+    TranslatedSpec {
+        id: spec.id,
+        title: t(spec.title),
+        summary: t(spec.summary),
+        equation_mathml: spec.equation_mathml,
+        params: spec
+            .params
+            .iter()
+            .map(|p| TranslatedParam {
+                key: p.key,
+                label: t(p.label),
+                symbol: p.symbol,
+                unit: p.unit,
+                min: p.min,
+                max: p.max,
+                step: p.step,
+                default: p.default,
+                scale: p.scale,
+                kind: p.kind,
+                options: p.options.iter().map(|o| (o.key, t(o.label))).collect(),
+                visible_when: p.visible_when,
+            })
+            .collect(),
+        readouts: spec
+            .readouts
+            .iter()
+            .map(|r| (r.key, t(r.label), r.unit))
+            .collect(),
+        plots: spec
+            .plots
+            .iter()
+            .map(|p| (p.key, t(p.title), p.aspect))
+            .collect(),
+        presets: spec
+            .presets
+            .iter()
+            .map(|p| (t(p.label), p.values.clone()))
+            .collect(),
+        table: spec.table.as_ref().map(|tb| TranslatedTable {
+            caption: t(tb.caption),
+            columns: tb.columns.iter().map(|c| t(c)).collect(),
+            rows: tb
+                .rows
+                .iter()
+                .map(|(k, cells)| (*k, cells.iter().map(|c| t(c)).collect()))
+                .collect(),
+            highlight_readout: tb.highlight_readout,
+        }),
+        primary_plot: spec.primary(),
+        schematic: spec.schematic,
+    }
+}
+
+#[derive(Serialize)]
+struct TranslatedParam {
+    key: &'static str,
+    label: String,
+    symbol: &'static str,
+    unit: &'static str,
+    min: f64,
+    max: f64,
+    step: f64,
+    default: f64,
+    scale: crate::spec::Scale,
+    kind: crate::spec::Kind,
+    #[serde(serialize_with = "options_as_objects")]
+    options: Vec<(&'static str, String)>,
+    /// `[key, index]`: shown only while that parameter has that value (absent: always).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    visible_when: Option<(&'static str, usize)>,
+}
+
+fn options_as_objects<S: serde::Serializer>(
+    v: &[(&'static str, String)],
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeSeq;
+    #[derive(Serialize)]
+    struct Opt<'a> {
+        key: &'a str,
+        label: &'a str,
+    }
+    let mut seq = s.serialize_seq(Some(v.len()))?;
+    for (key, label) in v {
+        seq.serialize_element(&Opt { key, label })?;
+    }
+    seq.end()
+}
+
+#[derive(Serialize)]
+struct TranslatedTable {
+    caption: String,
+    columns: Vec<String>,
+    rows: Vec<(&'static str, Vec<String>)>,
+    highlight_readout: &'static str,
+}
+
+/// [`DemoSpec`] as the page receives it, in the page's language. Same field names.
+#[derive(Serialize)]
+pub(super) struct TranslatedSpec {
+    id: &'static str,
+    title: String,
+    summary: String,
+    equation_mathml: &'static str,
+    params: Vec<TranslatedParam>,
+    #[serde(serialize_with = "readouts_as_objects")]
+    readouts: Vec<(&'static str, String, &'static str)>,
+    #[serde(serialize_with = "plots_as_objects")]
+    plots: Vec<(&'static str, String, f64)>,
+    #[serde(serialize_with = "presets_as_objects")]
+    presets: Vec<(String, Vec<(&'static str, f64)>)>,
+    table: Option<TranslatedTable>,
+    primary_plot: &'static str,
+    schematic: bool,
+}
+
+fn readouts_as_objects<S: serde::Serializer>(
+    v: &[(&'static str, String, &'static str)],
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    struct R<'a> {
+        key: &'a str,
+        label: &'a str,
+        unit: &'a str,
+    }
+    s.collect_seq(v.iter().map(|(key, label, unit)| R { key, label, unit }))
+}
+
+fn plots_as_objects<S: serde::Serializer>(
+    v: &[(&'static str, String, f64)],
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    struct P<'a> {
+        key: &'a str,
+        title: &'a str,
+        aspect: f64,
+    }
+    s.collect_seq(v.iter().map(|(key, title, aspect)| P {
+        key,
+        title,
+        aspect: *aspect,
+    }))
+}
+
+fn presets_as_objects<S: serde::Serializer>(
+    v: &[(String, Vec<(&'static str, f64)>)],
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    struct P<'a> {
+        label: &'a str,
+        values: &'a [(&'static str, f64)],
+    }
+    s.collect_seq(v.iter().map(|(label, values)| P { label, values }))
+}
+
+/// A notice in the page's language: its message, with the parameter's label too.
+pub(super) fn translate_notice(spec: &DemoSpec, n: &mut Notice) {
+    let l = lang();
+    if l == Lang::En {
+        return;
+    }
+    let mut msg = n.message.clone();
+    if let Some(p) = spec.param(&n.key) {
+        msg = msg.replace(p.label, &tr(l, p.label));
+    }
+    n.message = tr(l, &msg).into_owned();
+}
