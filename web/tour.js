@@ -58,6 +58,8 @@ function claimItem(c) {
 export function renderTour(root, tour) {
   let section = root.querySelector('.tour');
   if (section) return section;
+  // The tour has no parameters and lays out its own thumbnails: no stage picker, no empty form.
+  root.classList.add('touring');
   // The paper's own order: each figure or table, with the claims read beside it.
   section = el('section', { class: 'tour', 'aria-labelledby': 'tour-head' });
   section.append(el('h2', { id: 'tour-head' }, t('tourHead')));

@@ -36,15 +36,18 @@ pub struct Results {
 }
 
 impl Results {
-    fn count(&self, verdict: Verdict) -> Option<f64> {
-        Some(
-            self.tour
-                .claims
-                .iter()
-                .filter(|c| c.verdict == verdict)
-                .count() as f64,
-        )
+    fn count(&self, verdict: Verdict) -> usize {
+        self.tour
+            .claims
+            .iter()
+            .filter(|c| c.verdict == verdict)
+            .count()
     }
+}
+
+/// A count as a readout: the number and its plain text.
+fn count(n: usize) -> Option<(f64, String)> {
+    Some((n as f64, n.to_string()))
 }
 
 /// The thumbnail of exhibit `id`: its demo's plot, or the demo's primary plot.
@@ -78,14 +81,14 @@ impl Model for Paper {
     fn declare() -> Declaration<P, Results> {
         Declaration {
             readouts: vec![
-                ReadoutDef::number("claims", "claims checked", "", 2, |r| {
-                    Some(r.tour.claims.len() as f64)
+                ReadoutDef::formatted("claims", "claims checked", "", |r| {
+                    count(r.tour.claims.len())
                 }),
-                ReadoutDef::number("confirmed", "claims confirmed", "", 2, |r| {
-                    r.count(Verdict::Confirmed)
+                ReadoutDef::formatted("confirmed", "claims confirmed", "", |r| {
+                    count(r.count(Verdict::Confirmed))
                 }),
-                ReadoutDef::number("differs", "claims that differ", "", 2, |r| {
-                    r.count(Verdict::Differs)
+                ReadoutDef::formatted("differs", "claims that differ", "", |r| {
+                    count(r.count(Verdict::Differs))
                 }),
             ],
             plots: EXHIBITS
