@@ -155,7 +155,8 @@ function addPresets(view, presets) {
 function addFullscreenButton() {
   const root = document.getElementById('demo');
   if (!root || !document.fullscreenEnabled) return;
-  const head = root.querySelector('.demo-head') || root;
+  // Beside the plot's export buttons (no row of its own in a small frame), else in the heading.
+  const head = root.querySelector('.stage-bar') || root.querySelector('.demo-head') || root;
   const button = document.createElement('button');
   button.type = 'button';
   button.className = 'zeta-fullscreen';
@@ -171,7 +172,7 @@ function addFullscreenButton() {
     button.textContent = label();
     button.setAttribute('aria-pressed', String(Boolean(document.fullscreenElement)));
   });
-  head.append(button);
+  head.prepend(button);
 }
 
 /** What the host connection knows of the page once connected (see connectHost). */
