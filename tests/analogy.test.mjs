@@ -2,24 +2,14 @@
 // driven through the URL contract and the keyboard. The numbers are checked against the
 // native snapshots (crates/app/tests/snapshots/analogy.snap), not recomputed here; what is
 // checked here is that the page shows them, and that the twins' readouts agree.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
+import { sidewaysOverflow } from './support/page.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 // The force–voltage analogy with equal numbers: each mechanical readout and its twin.
 const TWINS = [
@@ -166,14 +156,7 @@ test('a phone-sized screen shows both machines', async () => {
   const [ink] = await canvasFingerprint(page, 'schematic');
   assert.ok(ink > 1000);
   // Nothing of the demo sticks out sideways (the equation and the table scroll in their own boxes).
-  const overflow = await page.evaluate(() => {
-    let worst = 0;
-    for (const e of document.querySelectorAll('#demo *')) {
-      if (e.closest('.equation, .table-wrap')) continue;
-      worst = Math.max(worst, e.getBoundingClientRect().right - window.innerWidth);
-    }
-    return worst;
-  });
+  const overflow = await sidewaysOverflow(page);
   assert.ok(overflow <= 0.5, `nothing wider than the screen (${overflow} px)`);
   await page.screenshot({ path: `${SHOTS}analogy-360.png`, fullPage: true });
   assert.deepEqual(errors, []);

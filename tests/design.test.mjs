@@ -2,24 +2,13 @@
 // contract, checked against the readouts and text alternatives recorded by the native
 // snapshot tests (no physics recomputed here); every control moved from the keyboard,
 // picking designs by clicking the map and the Pareto front, and the sweep's compute time.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, assertReadoutsMatch } from './support/golden.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 const DEFAULTS = { m: 300, metric: 0, band: 5, road: 1, k_min: 10000, k_max: 60000, c_min: 500, c_max: 8000, k: 24000, c: 2000, n: 100 };
 const PLOTS = ['map', 'pareto', 'response'];

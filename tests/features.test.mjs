@@ -1,24 +1,13 @@
 // End to end: the features every demo shares — presets, reset, the animated schematic and
 // time cursor, the crosshair read-out, exports (PNG, SVG, CSV), and text alternatives —
 // exercised on the regimes demo.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, waitForReadout } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForReadout } from './support/browser.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 test('presets set their values; reset restores the defaults', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&zeta=0.5&wn=9`);

@@ -2,24 +2,14 @@
 // from the native snapshots (crates/app/tests/snapshots/flutter.snap, via golden.mjs);
 // here we check that the page shows them, and how it behaves: presets, the regime row,
 // every slider and menu, the animation, the narrow screen.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
+import { nudge } from './support/page.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 const PLOTS = ['derivative', 'damping', 'locus', 'response'];
 const FAILURE_DAY = 'Tacoma 1940, 19 m/s (failure day, ≈ 42 mph)';
@@ -97,17 +87,6 @@ test('a narrow phone screen still shows every plot', async () => {
 /** Fingerprints of every plot. */
 async function prints(page) {
   return Promise.all(PLOTS.map((k) => canvasFingerprint(page, k)));
-}
-
-/** Presses ArrowRight on slider `key` and waits until readout `watch` changes. */
-async function nudge(page, key, watch) {
-  const old = await readout(page, watch);
-  await page.focus(`#p-${key}`);
-  await page.keyboard.press('ArrowRight');
-  await page.waitForFunction(
-    ([k, v]) => document.querySelector(`[data-readout="${k}"]`).dataset.value !== v,
-    [watch, old],
-  );
 }
 
 test('every slider moves readouts and pixels by the keyboard', async () => {

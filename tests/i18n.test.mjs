@@ -1,23 +1,12 @@
 // End to end, languages: ?lang=es (or a Spanish browser) shows the interface, labels,
 // readout text and plot descriptions in Spanish with decimal commas, while data-value
 // attributes, URL keys and CSV numbers stay machine-readable.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, waitForReadout } from './support/browser.mjs';
+import { open, readout, waitForReadout } from './support/browser.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 test('?lang=es translates the page and keeps data-value in SI', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&zeta=0.25&lang=es`);

@@ -1,24 +1,14 @@
 // End to end: the integrators demo in headless Chromium. Readouts and text alternatives are
 // checked against the golden snapshots written natively (crates/app/tests/snapshots/), not
 // against physics re-implemented here; then every slider, toggle and preset is exercised.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, goldenState } from './support/golden.mjs';
+import { waitForChange } from './support/page.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 const PLOTS = ['response', 'error', 'convergence', 'work', 'stability'];
 const PRESET = 'demo=integrators&zeta=0.05&wn=2&h=0.3';
@@ -49,13 +39,6 @@ async function assertReadoutsMatch(page, state) {
 }
 
 const num = async (page, key) => Number(await readout(page, key));
-
-async function waitForChange(page, key, old) {
-  await page.waitForFunction(
-    ([k, v]) => document.querySelector(`[data-readout="${k}"]`).dataset.value !== v,
-    [key, old],
-  );
-}
 
 async function assertInk(page) {
   for (const plot of PLOTS) {

@@ -2,24 +2,14 @@
 // the native snapshots (crates/app/tests/snapshots/nonlinear.snap, via golden.mjs), where
 // the solver's own tests check them against closed forms; here we check that the page
 // shows them and how it behaves: presets, the effect row, every slider, the narrow screen.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
+import { nudge } from './support/page.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 const PLOTS = ['response', 'phase', 'spring', 'damper'];
 
@@ -83,13 +73,7 @@ test('every slider moves readouts and pixels by the keyboard', async () => {
     ['v0', 'max_deviation'],
   ]) {
     const before = await Promise.all(PLOTS.map((k) => canvasFingerprint(page, k)));
-    const old = await readout(page, watch);
-    await page.focus(`#p-${key}`);
-    await page.keyboard.press('ArrowRight');
-    await page.waitForFunction(
-      ([k, v]) => document.querySelector(`[data-readout="${k}"]`).dataset.value !== v,
-      [watch, old],
-    );
+    await nudge(page, key, watch);
     const after = await Promise.all(PLOTS.map((k) => canvasFingerprint(page, k)));
     assert.notDeepEqual(after, before, `${key} changes the plots`);
   }

@@ -3,30 +3,19 @@
 // provisional (readouts and plots), then the full one; a study for parameters that have
 // since moved on is dropped: every state shown as final matches the snapshot recorded
 // natively for the parameters then current.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open } from './support/browser.mjs';
+import { open } from './support/browser.mjs';
 import { goldenState, assertReadoutsMatch } from './support/golden.mjs';
 import { readFileSync } from 'node:fs';
+import { server, browser, useSession } from './support/session.mjs';
 
 // The page hooks (Session.refine, the `provisional` keys, web/main.js's slices) arrive with
 // bench/issue-13-hooks.patch; until the built site has them these tests are skipped.
 const built = readFileSync(new URL('../dist/zeta-app.js', import.meta.url), 'utf8');
 const skip = /\brefine\(/.test(built) ? false : 'needs the issue-13 page hooks (bench/issue-13-hooks.patch)';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 /** Resolves when no readout or plot is marked provisional any more. */
 const settled = (page) => page.waitForFunction(() => !document.querySelector('[data-provisional]'), null, { timeout: 60000 });

@@ -2,24 +2,14 @@
 // checked against the native snapshots (crates/app/tests/snapshots/quarter-car-2dof.snap,
 // read through tests/support/golden.mjs); the tests here drive the page through the URL,
 // the keyboard and the menus and check that readouts, pixels and the animation follow.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
+import { nudge } from './support/page.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 const ID = 'quarter-car-2dof';
 const PLOTS = ['motion', 'accel', 'frf', 'tyre'];
@@ -108,18 +98,6 @@ test('a narrow phone screen still shows every plot', async () => {
   assert.deepEqual(errors, []);
   await context.close();
 });
-
-/** ArrowRight on a slider; waits for readout `watch` to change; returns the new value. */
-async function nudge(page, key, watch) {
-  const old = await readout(page, watch);
-  await page.focus(`#p-${key}`);
-  await page.keyboard.press('ArrowRight');
-  await page.waitForFunction(
-    ([k, v]) => document.querySelector(`[data-readout="${k}"]`).dataset.value !== v,
-    [watch, old],
-  );
-  return Number(await page.inputValue(`input[type=number][data-key="${key}"]`));
-}
 
 test('every slider and choice moves readouts and pixels', async () => {
   const { page, errors, context } = await open(browser, url(goldenState(ID, 'Speed bump 5 cm at 10 m/s').query));

@@ -1,55 +1,17 @@
 // End to end: the quarter-car demo in headless Chromium, driven through the URL contract,
 // the preset buttons and the keyboard. Every expected number comes from the native
 // snapshots (crates/app/tests/snapshots/quarter-car.snap); nothing is recomputed here.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, waitForReadout, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForReadout, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
+import { waitForChange, allReadouts, assertSameReadouts } from './support/page.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
 const ID = 'quarter-car';
 const PLOTS = ['response', 'settling', 'sensitivity'];
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
-
-/** Waits until readout `key` differs from `old` (a data-value string). */
-async function waitForChange(page, key, old) {
-  await page.waitForFunction(
-    ([k, o]) => document.querySelector(`[data-readout="${k}"]`).dataset.value !== o,
-    [key, old],
-  );
-}
-
-/** Readouts equal as texts, or as numbers to 1e-12 (a link carries the shortest decimals). */
-function assertSameReadouts(got, want, what) {
-  assert.deepEqual(Object.keys(got), Object.keys(want), what);
-  for (const [k, v] of Object.entries(want)) {
-    const [a, b] = [Number(got[k]), Number(v)];
-    if (v !== '' && Number.isFinite(b)) {
-      assert.ok(Math.abs(a - b) <= 1e-12 * Math.max(1, Math.abs(b)), `${what}: ${k} ${got[k]} vs ${v}`);
-    } else {
-      assert.equal(got[k], v, `${what}: ${k}`);
-    }
-  }
-}
-
-/** Every readout's data-value, by key. */
-async function allReadouts(page) {
-  return Object.fromEntries(
-    await page.$$eval('[data-readout]', (els) => els.map((e) => [e.dataset.readout, e.dataset.value])),
-  );
-}
+useSession();
 
 /** The value shown in the number box of parameter `key`. */
 async function shown(page, key) {

@@ -1,23 +1,12 @@
 // End to end: the regimes demo in headless Chromium, driven through the URL contract,
 // the keyboard and the mouse.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, waitForUrlParam, waitForReadout, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForUrlParam, waitForReadout, SHOTS } from './support/browser.mjs';
 import { golden, assertReadoutsMatch } from './support/golden.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 test('opens from the URL with its values, readouts and drawn plots', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&zeta=0.2`);

@@ -2,46 +2,16 @@
 // through the URL contract, the preset buttons, the keyboard and the magnitude-view list.
 // Every expected number comes from the native snapshots
 // (crates/app/tests/snapshots/resonance.snap); nothing is recomputed here.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
+import { allReadouts, assertSameReadouts, sidewaysOverflow } from './support/page.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
 const ID = 'resonance';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
-
-/** Readouts equal as texts, or as numbers to 1e-12 (a link carries the shortest decimals). */
-function assertSameReadouts(got, want, what) {
-  assert.deepEqual(Object.keys(got), Object.keys(want), what);
-  for (const [k, v] of Object.entries(want)) {
-    const [a, b] = [Number(got[k]), Number(v)];
-    if (v !== '' && Number.isFinite(b)) {
-      assert.ok(Math.abs(a - b) <= 1e-12 * Math.max(1, Math.abs(b)), `${what}: ${k} ${got[k]} vs ${v}`);
-    } else {
-      assert.equal(got[k], v, `${what}: ${k}`);
-    }
-  }
-}
-
-/** Every readout's data-value, by key. */
-async function allReadouts(page) {
-  return Object.fromEntries(
-    await page.$$eval('[data-readout]', (els) => els.map((e) => [e.dataset.readout, e.dataset.value])),
-  );
-}
+useSession();
 
 /** Undefined readouts show a dash with an empty data-value; none shows NaN or Infinity. */
 async function assertNoNonsense(page) {
@@ -180,14 +150,7 @@ test('a phone-sized screen shows the whole demo', async () => {
   const [ink] = await canvasFingerprint(page, 'magnitude');
   assert.ok(ink > 1000);
   // Nothing of the demo sticks out sideways (the equation and the table scroll in their own boxes).
-  const overflow = await page.evaluate(() => {
-    let worst = 0;
-    for (const e of document.querySelectorAll('#demo *')) {
-      if (e.closest('.equation, .table-wrap')) continue;
-      worst = Math.max(worst, e.getBoundingClientRect().right - window.innerWidth);
-    }
-    return worst;
-  });
+  const overflow = await sidewaysOverflow(page);
   assert.ok(overflow <= 0.5, `nothing wider than the screen (${overflow} px)`);
   await page.screenshot({ path: `${SHOTS}resonance-360.png`, fullPage: true });
   assert.deepEqual(errors, []);

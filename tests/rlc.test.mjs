@@ -1,34 +1,17 @@
 // End to end: the series RLC demo in headless Chromium, driven through the URL contract,
 // the preset buttons and the keyboard. The numbers are checked against the native
 // snapshots (crates/app/tests/snapshots/rlc.snap), not recomputed here.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
+import { waitForChange } from './support/page.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 const PLOTS = ['current', 'voltage'];
 const READOUTS = ['w0', 'f0', 'alpha', 'zeta', 'Q', 'bandwidth', 'R_crit', 'wd', 'settling_time'];
-
-async function waitForChange(page, key, old) {
-  await page.waitForFunction(
-    ([k, o]) => document.querySelector(`[data-readout="${k}"]`).dataset.value !== o,
-    [key, old],
-  );
-}
 
 /** Every readout's data-value on the page, by key. */
 function shownReadouts(page) {

@@ -2,24 +2,13 @@
 // checked against the readouts and text alternatives recorded by the native snapshot tests
 // (no physics or statistics recomputed here), the seed's reproducibility, every control
 // moved from the keyboard, and the time of a 100 000-draw run.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, assertReadoutsMatch } from './support/golden.mjs';
+import { server, browser, useSession } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 const PLOTS = ['band', 'zeta_hist', 'hist'];
 const num = async (page, key) => Number(await readout(page, key));

@@ -117,17 +117,22 @@ pub struct Comparison {
     pub sticking: Option<Sticking>,
 }
 
+/// The displacement `x` (m), the first component, of each `[x, v]` state.
+fn displacements(states: &[[f64; 2]]) -> Vec<f64> {
+    states.iter().map(|s| s[0]).collect()
+}
+
 impl Comparison {
     /// Period of the nonlinear response from its upward zero crossings (s); `None` with
     /// fewer than two.
     pub fn period_nonlinear(&self) -> Option<f64> {
-        let x: Vec<f64> = self.nonlinear.iter().map(|s| s[0]).collect();
+        let x = displacements(&self.nonlinear);
         period_from_zero_crossings(&self.t, &x)
     }
 
     /// Period of the linear response, measured the same way (s) (equals `2π/ω_d`).
     pub fn period_linear(&self) -> Option<f64> {
-        let x: Vec<f64> = self.linear.iter().map(|s| s[0]).collect();
+        let x = displacements(&self.linear);
         period_from_zero_crossings(&self.t, &x)
     }
 
@@ -139,14 +144,14 @@ impl Comparison {
     /// Period of the first full swing of the nonlinear response (s), see
     /// [`first_swing_period`].
     pub fn first_swing_nonlinear(&self) -> Option<f64> {
-        let x: Vec<f64> = self.nonlinear.iter().map(|s| s[0]).collect();
+        let x = displacements(&self.nonlinear);
         first_swing_period(&self.t, &x)
     }
 
     /// Period of the first full swing of the linear response (s): `2π/ω_d` exactly, since
     /// a damped sinusoid crosses zero every half damped period.
     pub fn first_swing_linear(&self) -> Option<f64> {
-        let x: Vec<f64> = self.linear.iter().map(|s| s[0]).collect();
+        let x = displacements(&self.linear);
         first_swing_period(&self.t, &x)
     }
 
@@ -170,7 +175,7 @@ impl Comparison {
     /// The nonlinear displacement (m) at time `t` (s), linearly interpolated on the grid
     /// and held at the ends; `None` on an empty run.
     pub fn nonlinear_at(&self, t: f64) -> Option<f64> {
-        let x: Vec<f64> = self.nonlinear.iter().map(|s| s[0]).collect();
+        let x = displacements(&self.nonlinear);
         crate::grid::interpolate(&self.t, &x, t)
     }
 
@@ -552,7 +557,7 @@ impl NonlinearModel {
         let t_end = t_lin * f64::from(cycles.max(2) + 1);
         let h = t_lin / f64::from(steps_per_period.max(8));
         let sol = self.simulate(amplitude, 0.0, t_end, h).ok()?;
-        let x: Vec<f64> = sol.y.iter().map(|s| s[0]).collect();
+        let x = displacements(&sol.y);
         period_from_zero_crossings(&sol.t, &x)
     }
 

@@ -62,7 +62,7 @@ const MAX_SWITCHES_PER_STEP: usize = 8;
 /// rounded at `t ≈ 10 s` make equal steps differ by ~1e-11 of a 0.1 ms step, and using the
 /// cached step moves the state by under 1e-9 of a step's motion.
 const SAME_STEP: f64 = 1e-9;
-/// Iterations of the switch location and of the peak refinement.
+/// Iterations of the switch location.
 const ITERATIONS: usize = 60;
 
 /// How the tyre meets the road.
@@ -399,40 +399,13 @@ impl Runner<'_> {
                 let p = mat_vec(&expm(&scaled(&m, tau)), &z);
                 (p[0] - p[1]).abs()
             };
-            let (tau, v) = golden_max(f, lo, hi);
-            if v > best.0 {
-                best = (v, t0 + tau);
+            if let Some((tau, v)) = crate::search::maximise(f, lo, hi) {
+                if v > best.0 {
+                    best = (v, t0 + tau);
+                }
             }
         }
         best
-    }
-}
-
-/// The maximum of `f` on `[a, b]` by golden-section search, assuming one peak there:
-/// `(argmax, max)`.
-fn golden_max(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
-    let r = 0.618_033_988_749_894_9; // (√5 − 1)/2
-    let (mut c, mut d) = (b - r * (b - a), a + r * (b - a));
-    let (mut fc, mut fd) = (f(c), f(d));
-    for _ in 0..ITERATIONS {
-        if fc > fd {
-            b = d;
-            d = c;
-            fd = fc;
-            c = b - r * (b - a);
-            fc = f(c);
-        } else {
-            a = c;
-            c = d;
-            fc = fd;
-            d = a + r * (b - a);
-            fd = f(d);
-        }
-    }
-    if fc > fd {
-        (c, fc)
-    } else {
-        (d, fd)
     }
 }
 

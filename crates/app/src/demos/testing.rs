@@ -13,6 +13,29 @@ pub fn run(id: &str, query: &str) -> Frame {
     demo.update(&params)
 }
 
+/// Demo `id` at its preset `label`: the query that preset writes (its values on top of
+/// the defaults), run as [`run`] does.
+pub fn preset(id: &str, label: &str) -> Frame {
+    let spec = create(id).unwrap_or_else(|| panic!("no demo {id}")).spec();
+    let preset = spec
+        .presets
+        .iter()
+        .find(|p| p.label == label)
+        .unwrap_or_else(|| panic!("{id} has no preset {label:?}"));
+    let query = preset
+        .values
+        .iter()
+        .map(|(k, v)| format!("{k}={v}"))
+        .collect::<Vec<_>>()
+        .join("&");
+    run(id, &query)
+}
+
+/// Whether `a` equals `b` to `tol` relative to `1 + |b|` (so also absolutely near 0).
+pub fn close(a: f64, b: f64, tol: f64) -> bool {
+    (a - b).abs() <= tol * (1.0 + b.abs())
+}
+
 /// The `data-value` of readout `key`.
 pub fn value(frame: &Frame, key: &str) -> String {
     frame

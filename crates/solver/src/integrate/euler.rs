@@ -1,7 +1,6 @@
 //! Forward (explicit) Euler: `y₁ = y₀ + h·f(t₀, y₀)`.
 
 use super::analysis::{euler_pole_limit, Amplification, StepLimit};
-use super::{FixedStep, IntegrationError, System};
 use crate::complex::Complex;
 
 /// Forward Euler, order 1, one `rhs` call per step. Amplification `R(z) = 1 + z`: stable
@@ -16,30 +15,14 @@ use crate::complex::Complex;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Euler;
 
-impl FixedStep for Euler {
-    fn name(&self) -> &'static str {
-        "Euler"
+fixed_step!(Euler, "Euler", order 1, |sys, t, h, y| {
+    let mut k = [0.0; N];
+    sys.rhs(t, y, &mut k);
+    for (yi, ki) in y.iter_mut().zip(&k) {
+        *yi += h * ki;
     }
-
-    fn order(&self) -> u32 {
-        1
-    }
-
-    fn step<const N: usize, S: System<N>>(
-        &self,
-        sys: &S,
-        t: f64,
-        h: f64,
-        y: &mut [f64; N],
-    ) -> Result<usize, IntegrationError> {
-        let mut k = [0.0; N];
-        sys.rhs(t, y, &mut k);
-        for (yi, ki) in y.iter_mut().zip(&k) {
-            *yi += h * ki;
-        }
-        Ok(1)
-    }
-}
+    Ok(1)
+});
 
 impl Amplification for Euler {
     fn amplification(&self, z: Complex) -> Complex {

@@ -2,7 +2,6 @@
 
 use super::analysis::Amplification;
 use super::tableau::heun::B;
-use super::{FixedStep, IntegrationError, System};
 use crate::complex::Complex;
 
 /// Heun's method, order 2, two `rhs` calls per step:
@@ -18,36 +17,20 @@ use crate::complex::Complex;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Heun;
 
-impl FixedStep for Heun {
-    fn name(&self) -> &'static str {
-        "Heun (RK2)"
+fixed_step!(Heun, "Heun (RK2)", order 2, |sys, t, h, y| {
+    let mut k1 = [0.0; N];
+    let mut k2 = [0.0; N];
+    sys.rhs(t, y, &mut k1);
+    let mut stage = *y;
+    for (s, k) in stage.iter_mut().zip(&k1) {
+        *s += h * k;
     }
-
-    fn order(&self) -> u32 {
-        2
+    sys.rhs(t + h, &stage, &mut k2);
+    for ((yi, a), b) in y.iter_mut().zip(&k1).zip(&k2) {
+        *yi += h * (B[0] * a + B[1] * b);
     }
-
-    fn step<const N: usize, S: System<N>>(
-        &self,
-        sys: &S,
-        t: f64,
-        h: f64,
-        y: &mut [f64; N],
-    ) -> Result<usize, IntegrationError> {
-        let mut k1 = [0.0; N];
-        let mut k2 = [0.0; N];
-        sys.rhs(t, y, &mut k1);
-        let mut stage = *y;
-        for (s, k) in stage.iter_mut().zip(&k1) {
-            *s += h * k;
-        }
-        sys.rhs(t + h, &stage, &mut k2);
-        for ((yi, a), b) in y.iter_mut().zip(&k1).zip(&k2) {
-            *yi += h * (B[0] * a + B[1] * b);
-        }
-        Ok(2)
-    }
-}
+    Ok(2)
+});
 
 impl Amplification for Heun {
     fn amplification(&self, z: Complex) -> Complex {

@@ -32,6 +32,32 @@
 // Stage loops index several arrays in lock-step, exactly as the formulas are written.
 #![allow(clippy::needless_range_loop)]
 
+/// Implements [`FixedStep`] for a one-step method: its name, its order and the body of its
+/// `step(sys, t, h, y)`, which advances `y: &mut [f64; N]` from `t` to `t + h` and returns
+/// `Result<usize, IntegrationError>` (the number of `rhs` calls). Everything else
+/// ([`FixedStep::solve`] and the other drivers) comes from the trait's default methods.
+macro_rules! fixed_step {
+    ($method:ty, $name:literal, order $order:literal, |$sys:ident, $t:ident, $h:ident, $y:ident| $body:block) => {
+        impl $crate::integrate::FixedStep for $method {
+            fn name(&self) -> &'static str {
+                $name
+            }
+
+            fn order(&self) -> u32 {
+                $order
+            }
+
+            fn step<const N: usize, S: $crate::integrate::System<N>>(
+                &self,
+                $sys: &S,
+                $t: f64,
+                $h: f64,
+                $y: &mut [f64; N],
+            ) -> Result<usize, $crate::integrate::IntegrationError> $body
+        }
+    };
+}
+
 pub mod analysis;
 pub mod convergence;
 mod dopri5;

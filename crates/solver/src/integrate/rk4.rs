@@ -2,7 +2,6 @@
 
 use super::analysis::Amplification;
 use super::tableau::rk4::{B, C};
-use super::{FixedStep, IntegrationError, System};
 use crate::complex::Complex;
 
 /// Classical RK4, order 4, four `rhs` calls per step. Amplification
@@ -18,46 +17,30 @@ use crate::complex::Complex;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Rk4;
 
-impl FixedStep for Rk4 {
-    fn name(&self) -> &'static str {
-        "RK4"
+fixed_step!(Rk4, "RK4", order 4, |sys, t, h, y| {
+    let mut k1 = [0.0; N];
+    let mut k2 = [0.0; N];
+    let mut k3 = [0.0; N];
+    let mut k4 = [0.0; N];
+    let mut stage = [0.0; N];
+    sys.rhs(t, y, &mut k1);
+    for i in 0..N {
+        stage[i] = y[i] + C[1] * h * k1[i];
     }
-
-    fn order(&self) -> u32 {
-        4
+    sys.rhs(t + C[1] * h, &stage, &mut k2);
+    for i in 0..N {
+        stage[i] = y[i] + C[2] * h * k2[i];
     }
-
-    fn step<const N: usize, S: System<N>>(
-        &self,
-        sys: &S,
-        t: f64,
-        h: f64,
-        y: &mut [f64; N],
-    ) -> Result<usize, IntegrationError> {
-        let mut k1 = [0.0; N];
-        let mut k2 = [0.0; N];
-        let mut k3 = [0.0; N];
-        let mut k4 = [0.0; N];
-        let mut stage = [0.0; N];
-        sys.rhs(t, y, &mut k1);
-        for i in 0..N {
-            stage[i] = y[i] + C[1] * h * k1[i];
-        }
-        sys.rhs(t + C[1] * h, &stage, &mut k2);
-        for i in 0..N {
-            stage[i] = y[i] + C[2] * h * k2[i];
-        }
-        sys.rhs(t + C[2] * h, &stage, &mut k3);
-        for i in 0..N {
-            stage[i] = y[i] + C[3] * h * k3[i];
-        }
-        sys.rhs(t + C[3] * h, &stage, &mut k4);
-        for i in 0..N {
-            y[i] += h * (B[0] * k1[i] + B[1] * k2[i] + B[2] * k3[i] + B[3] * k4[i]);
-        }
-        Ok(4)
+    sys.rhs(t + C[2] * h, &stage, &mut k3);
+    for i in 0..N {
+        stage[i] = y[i] + C[3] * h * k3[i];
     }
-}
+    sys.rhs(t + C[3] * h, &stage, &mut k4);
+    for i in 0..N {
+        y[i] += h * (B[0] * k1[i] + B[1] * k2[i] + B[2] * k3[i] + B[3] * k4[i]);
+    }
+    Ok(4)
+});
 
 impl Amplification for Rk4 {
     fn amplification(&self, z: Complex) -> Complex {

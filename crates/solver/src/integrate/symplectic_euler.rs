@@ -1,6 +1,6 @@
 //! Semi-implicit (symplectic) Euler for systems split into positions and velocities.
 
-use super::{FixedStep, IntegrationError, System};
+use super::IntegrationError;
 
 /// Semi-implicit Euler, order 1, two `rhs` calls per step.
 ///
@@ -27,35 +27,19 @@ use super::{FixedStep, IntegrationError, System};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct SymplecticEuler;
 
-impl FixedStep for SymplecticEuler {
-    fn name(&self) -> &'static str {
-        "symplectic Euler"
+fixed_step!(SymplecticEuler, "symplectic Euler", order 1, |sys, t, h, y| {
+    if !N.is_multiple_of(2) {
+        return Err(IntegrationError::OddDimension { n: N });
     }
-
-    fn order(&self) -> u32 {
-        1
+    let m = N / 2;
+    let mut k = [0.0; N];
+    sys.rhs(t, y, &mut k);
+    for i in m..N {
+        y[i] += h * k[i];
     }
-
-    fn step<const N: usize, S: System<N>>(
-        &self,
-        sys: &S,
-        t: f64,
-        h: f64,
-        y: &mut [f64; N],
-    ) -> Result<usize, IntegrationError> {
-        if !N.is_multiple_of(2) {
-            return Err(IntegrationError::OddDimension { n: N });
-        }
-        let m = N / 2;
-        let mut k = [0.0; N];
-        sys.rhs(t, y, &mut k);
-        for i in m..N {
-            y[i] += h * k[i];
-        }
-        sys.rhs(t, y, &mut k);
-        for i in 0..m {
-            y[i] += h * k[i];
-        }
-        Ok(2)
+    sys.rhs(t, y, &mut k);
+    for i in 0..m {
+        y[i] += h * k[i];
     }
-}
+    Ok(2)
+});

@@ -4,7 +4,7 @@
 use super::analysis::{Amplification, StepLimit};
 use super::linalg::Lu;
 use super::tableau::trapezoid::THETA;
-use super::{FixedStep, IntegrationError, System};
+use super::IntegrationError;
 use crate::complex::Complex;
 
 /// Newton iterations allowed per step before giving up.
@@ -38,67 +38,51 @@ const NEWTON_ATOL: f64 = 1e-300;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Trapezoid;
 
-impl FixedStep for Trapezoid {
-    fn name(&self) -> &'static str {
-        "trapezoid"
+fixed_step!(Trapezoid, "trapezoid", order 2, |sys, t, h, y| {
+    let failed = IntegrationError::ImplicitSolveFailed { t };
+    let mut f0 = [0.0; N];
+    sys.rhs(t, y, &mut f0);
+    let mut jac = [[0.0; N]; N];
+    sys.jacobian(t, y, &mut jac);
+    let mut m = [[0.0; N]; N];
+    for i in 0..N {
+        for j in 0..N {
+            let identity = if i == j { 1.0 } else { 0.0 };
+            m[i][j] = identity - THETA * h * jac[i][j];
+        }
     }
-
-    fn order(&self) -> u32 {
-        2
-    }
-
-    fn step<const N: usize, S: System<N>>(
-        &self,
-        sys: &S,
-        t: f64,
-        h: f64,
-        y: &mut [f64; N],
-    ) -> Result<usize, IntegrationError> {
-        let failed = IntegrationError::ImplicitSolveFailed { t };
-        let mut f0 = [0.0; N];
-        sys.rhs(t, y, &mut f0);
-        let mut jac = [[0.0; N]; N];
-        sys.jacobian(t, y, &mut jac);
-        let mut m = [[0.0; N]; N];
+    let lu = Lu::new(m).ok_or(failed.clone())?;
+    let t1 = t + h;
+    let y0 = *y;
+    let mut y1 = y0;
+    let mut f1 = [0.0; N];
+    let mut n_rhs = 1;
+    for _ in 0..MAX_NEWTON {
+        sys.rhs(t1, &y1, &mut f1);
+        n_rhs += 1;
+        // Residual G(y₁) = y₁ − y₀ − (h/2)(f₀ + f₁); Newton update Δ = M⁻¹·G.
+        let mut g = [0.0; N];
         for i in 0..N {
-            for j in 0..N {
-                let identity = if i == j { 1.0 } else { 0.0 };
-                m[i][j] = identity - THETA * h * jac[i][j];
-            }
+            g[i] = y1[i] - y0[i] - THETA * h * (f0[i] + f1[i]);
         }
-        let lu = Lu::new(m).ok_or(failed.clone())?;
-        let t1 = t + h;
-        let y0 = *y;
-        let mut y1 = y0;
-        let mut f1 = [0.0; N];
-        let mut n_rhs = 1;
-        for _ in 0..MAX_NEWTON {
-            sys.rhs(t1, &y1, &mut f1);
-            n_rhs += 1;
-            // Residual G(y₁) = y₁ − y₀ − (h/2)(f₀ + f₁); Newton update Δ = M⁻¹·G.
-            let mut g = [0.0; N];
-            for i in 0..N {
-                g[i] = y1[i] - y0[i] - THETA * h * (f0[i] + f1[i]);
-            }
-            let delta = lu.solve(&g);
-            let mut size = 0.0f64;
-            let mut change = 0.0f64;
-            for i in 0..N {
-                y1[i] -= delta[i];
-                size = size.max(y1[i].abs()).max(y0[i].abs());
-                change = change.max(delta[i].abs());
-            }
-            if !change.is_finite() {
-                return Err(failed);
-            }
-            if change <= NEWTON_RTOL * size + NEWTON_ATOL {
-                *y = y1;
-                return Ok(n_rhs);
-            }
+        let delta = lu.solve(&g);
+        let mut size = 0.0f64;
+        let mut change = 0.0f64;
+        for i in 0..N {
+            y1[i] -= delta[i];
+            size = size.max(y1[i].abs()).max(y0[i].abs());
+            change = change.max(delta[i].abs());
         }
-        Err(failed)
+        if !change.is_finite() {
+            return Err(failed);
+        }
+        if change <= NEWTON_RTOL * size + NEWTON_ATOL {
+            *y = y1;
+            return Ok(n_rhs);
+        }
     }
-}
+    Err(failed)
+});
 
 impl Amplification for Trapezoid {
     fn amplification(&self, z: Complex) -> Complex {

@@ -10,19 +10,9 @@ fn run(query: &str) -> Frame {
     testing::run("flutter", query)
 }
 
-fn preset_query(label: &str) -> String {
-    let spec = Flutter::declare().spec();
-    let p = spec.presets.iter().find(|p| p.label == label).unwrap();
-    p.values
-        .iter()
-        .map(|(k, v)| format!("{k}={v}"))
-        .collect::<Vec<_>>()
-        .join("&")
-}
-
 #[test]
 fn the_failure_day_grows_to_a_large_twist_within_the_plotted_window() {
-    let f = run(&preset_query("Tacoma 1940, 19 m/s (failure day, ≈ 42 mph)"));
+    let f = testing::preset("flutter", "Tacoma 1940, 19 m/s (failure day, ≈ 42 mph)");
     assert_eq!(value(&f, "regime"), "negatively damped");
     let uc = number(&f, "U_crit");
     assert!(uc > 17.0 && uc < 19.0, "{uc}");
@@ -49,7 +39,7 @@ fn the_failure_day_grows_to_a_large_twist_within_the_plotted_window() {
 
 #[test]
 fn below_the_critical_speed_a_twist_dies_away() {
-    let f = run(&preset_query("Tacoma 1940, 10 m/s (stable)"));
+    let f = testing::preset("flutter", "Tacoma 1940, 10 m/s (stable)");
     assert_eq!(value(&f, "regime"), "underdamped");
     assert!(number(&f, "growth_rate") < 0.0);
     assert_eq!(value(&f, "doubling_time"), "");
@@ -60,7 +50,7 @@ fn below_the_critical_speed_a_twist_dies_away() {
 
 #[test]
 fn a_streamlined_box_never_flutters_and_the_h_section_does() {
-    let boxed = run(&preset_query("Streamlined box deck, 40 m/s"));
+    let boxed = testing::preset("flutter", "Streamlined box deck, 40 m/s");
     assert_eq!(value(&boxed, "U_crit"), "");
     assert!(number(&boxed, "A2") < 0.0);
     assert!(boxed.figures[1].description.contains("never crosses zero"));
@@ -76,9 +66,7 @@ fn a_streamlined_box_never_flutters_and_the_h_section_does() {
 
 #[test]
 fn the_simplest_picture_is_the_old_linear_model() {
-    let f = run(&preset_query(
-        "Simplest picture, 19 m/s (ζ_eff = ζ_s − g·U)",
-    ));
+    let f = testing::preset("flutter", "Simplest picture, 19 m/s (ζ_eff = ζ_s − g·U)");
     let uc = number(&f, "U_crit");
     assert!((uc - TACOMA_FAILURE_WIND).abs() < 1e-6, "{uc}");
     let z = number(&f, "zeta_eff");

@@ -13,19 +13,9 @@ fn run(query: &str) -> Frame {
     testing::run("nonlinear", query)
 }
 
-fn preset_query(label: &str) -> String {
-    let spec = Nonlinear::declare().spec();
-    let p = spec.presets.iter().find(|p| p.label == label).unwrap();
-    p.values
-        .iter()
-        .map(|(k, v)| format!("{k}={v}"))
-        .collect::<Vec<_>>()
-        .join("&")
-}
-
 #[test]
 fn linear_settings_reproduce_the_linear_model() {
-    let f = run(&preset_query("Linear (all off)"));
+    let f = testing::preset("nonlinear", "Linear (all off)");
     assert_eq!(value(&f, "effect"), "linear");
     assert!((number(&f, "period_ratio") - 1.0).abs() < 1e-6);
     // RK4 with ~720 steps per period against the closed form.
@@ -39,24 +29,24 @@ fn linear_settings_reproduce_the_linear_model() {
 
 #[test]
 fn each_preset_shows_its_effect() {
-    let hard = run(&preset_query("Hardening spring"));
+    let hard = testing::preset("nonlinear", "Hardening spring");
     assert_eq!(value(&hard, "effect"), "hardening spring");
     assert!(number(&hard, "period_ratio") < 0.95);
-    let soft = run(&preset_query("Softening spring"));
+    let soft = testing::preset("nonlinear", "Softening spring");
     assert_eq!(value(&soft, "effect"), "softening spring");
     assert!(number(&soft, "period_ratio") > 1.03);
-    let fric = run(&preset_query("Friction stick–slip"));
+    let fric = testing::preset("nonlinear", "Friction stick–slip");
     assert_eq!(value(&fric, "effect"), "stick-slip");
     let x = number(&fric, "stick_position");
     // Held where the spring cannot overcome static friction: |k·x| ≤ F_static = 1.2·300 N.
     assert!(x.abs() <= 1.2 * 300.0 / 24_000.0 + 1e-9, "{x}");
     assert!(x.abs() > 1e-4, "{x}");
-    let stop = run(&preset_query("Bump-stop impact"));
+    let stop = testing::preset("nonlinear", "Bump-stop impact");
     assert_eq!(value(&stop, "effect"), "bump-stop impact");
     let travel = number(&stop, "max_travel");
     let linear_reach = 1.5 / (24_000.0f64 / 300.0).sqrt();
     assert!(travel > 0.05 && travel < linear_reach, "{travel}");
-    let asym = run(&preset_query("Asymmetric damper"));
+    let asym = testing::preset("nonlinear", "Asymmetric damper");
     assert_eq!(value(&asym, "effect"), "asymmetric damper");
     assert!(number(&asym, "max_deviation") > 1e-3);
     for f in [&hard, &soft, &fric, &stop, &asym] {
@@ -88,7 +78,7 @@ fn every_table_row_is_a_possible_effect() {
     let spec = Nonlinear::declare().spec();
     let table = spec.table.unwrap();
     for preset in &spec.presets {
-        let e = value(&run(&preset_query(preset.label)), "effect");
+        let e = value(&testing::preset("nonlinear", preset.label), "effect");
         assert!(table.rows.iter().any(|(k, _)| *k == e), "{e}");
     }
     assert!(table

@@ -5,16 +5,12 @@
 #![allow(clippy::disallowed_methods)]
 
 use super::*;
-use crate::demos::testing::{self, number, value};
+use crate::demos::testing::{self, close, number, value};
 use crate::demos::{create, Frame};
 use crate::params::Params;
 
 fn run(query: &str) -> Frame {
     testing::run("quarter-car", query)
-}
-
-fn close(a: f64, b: f64, tol: f64) -> bool {
-    (a - b).abs() <= tol * (1.0 + b.abs())
 }
 
 #[test]

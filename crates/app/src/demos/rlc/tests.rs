@@ -5,15 +5,11 @@
 #![allow(clippy::disallowed_methods)]
 
 use super::text::ohms;
-use crate::demos::testing::{self, number, value};
+use crate::demos::testing::{self, close, number, value};
 use crate::demos::Frame;
 
 fn run(query: &str) -> Frame {
     testing::run("rlc", query)
-}
-
-fn close(a: f64, b: f64, tol: f64) -> bool {
-    (a - b).abs() <= tol * (1.0 + b.abs())
 }
 
 #[test]

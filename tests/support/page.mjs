@@ -1,0 +1,54 @@
+// Helpers the end-to-end tests share for reading readouts and moving sliders.
+import assert from 'node:assert/strict';
+import { readout } from './browser.mjs';
+
+/** Waits until readout `key` differs from `old` (a data-value string). */
+export async function waitForChange(page, key, old) {
+  await page.waitForFunction(
+    ([k, o]) => document.querySelector(`[data-readout="${k}"]`).dataset.value !== o,
+    [key, old],
+  );
+}
+
+/** Every readout's data-value, by key. */
+export async function allReadouts(page) {
+  return Object.fromEntries(
+    await page.$$eval('[data-readout]', (els) => els.map((e) => [e.dataset.readout, e.dataset.value])),
+  );
+}
+
+/** Readouts equal as texts, or as numbers to 1e-12 (a link carries the shortest decimals). */
+export function assertSameReadouts(got, want, what) {
+  assert.deepEqual(Object.keys(got), Object.keys(want), what);
+  for (const [k, v] of Object.entries(want)) {
+    const [a, b] = [Number(got[k]), Number(v)];
+    if (v !== '' && Number.isFinite(b)) {
+      assert.ok(Math.abs(a - b) <= 1e-12 * Math.max(1, Math.abs(b)), `${what}: ${k} ${got[k]} vs ${v}`);
+    } else {
+      assert.equal(got[k], v, `${what}: ${k}`);
+    }
+  }
+}
+
+/** Presses ArrowRight on slider `key` and waits until readout `watch` changes. */
+export async function nudge(page, key, watch) {
+  const old = await readout(page, watch);
+  await page.focus(`#p-${key}`);
+  await page.keyboard.press('ArrowRight');
+  await waitForChange(page, watch, old);
+}
+
+/**
+ * How far (px) the widest element of the demo sticks out past the right edge of the
+ * window; the equation and the tables scroll in their own boxes and are not counted.
+ */
+export function sidewaysOverflow(page) {
+  return page.evaluate(() => {
+    let worst = 0;
+    for (const e of document.querySelectorAll('#demo *')) {
+      if (e.closest('.equation, .table-wrap')) continue;
+      worst = Math.max(worst, e.getBoundingClientRect().right - window.innerWidth);
+    }
+    return worst;
+  });
+}
