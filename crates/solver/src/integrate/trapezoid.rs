@@ -22,7 +22,7 @@ const NEWTON_ATOL: f64 = 1e-300;
 /// The implicit equation is solved by a simplified Newton iteration with the matrix
 /// `I − (h/2)·J(t, y₀)` factorised once per step (LU with partial pivoting), starting from
 /// `y₀`, for at most 20 iterations until the update is below `1e-12` of the state.
-/// For a linear system with an exact [`System::jacobian`] (such as
+/// For a linear system with an exact [`System::jacobian`](super::System::jacobian) (such as
 /// [`super::Linear2`], whose 2×2 matrix is exact) the first iteration is already the exact
 /// solution of the linear step and the second only confirms it. Nonlinear systems converge
 /// when `h` is small enough for the contraction; otherwise the step fails with
