@@ -82,7 +82,7 @@ impl HistOf {
             HistOf::F0 => ("natural frequency f0", "Hz"),
             HistOf::Q => ("quality factor Q", ""),
             HistOf::Bandwidth => ("half-power bandwidth", "rad/s"),
-            HistOf::SettlingTime => ("settling time (5 %)", "s"),
+            HistOf::SettlingTime => ("free-response settling time (±5 %)", "s"),
         }
     }
 
