@@ -51,7 +51,7 @@ fn count(n: usize) -> Option<(f64, String)> {
 }
 
 /// The thumbnail of exhibit `id`: its demo's plot, or the demo's primary plot.
-fn thumbnail(e: &tour::Exhibit) -> Figure {
+fn thumbnail(e: &tour::Exhibit, runs: &mut verdict::Runs) -> Figure {
     let drawn = crate::demos::create(e.demo).and_then(|d| {
         let spec = d.spec();
         let key = if e.plot.is_empty() {
@@ -60,7 +60,7 @@ fn thumbnail(e: &tour::Exhibit) -> Figure {
             e.plot
         };
         let i = spec.plots.iter().position(|p| p.key == key)?;
-        verdict::run(e.demo, e.query)?.figures.into_iter().nth(i)
+        runs.get(e.demo, e.query)?.figures.get(i).cloned()
     });
     match drawn {
         Some(fig) => fig,
@@ -105,12 +105,16 @@ impl Model for Paper {
     }
 
     fn step(&mut self, _p: &P) -> Option<Results> {
+        let mut runs = verdict::Runs::default();
         Some(Results {
             tour: Tour {
                 exhibits: EXHIBITS.iter().map(verdict::exhibit).collect(),
-                claims: CLAIMS.iter().filter_map(verdict::judge).collect(),
+                claims: CLAIMS
+                    .iter()
+                    .filter_map(|c| verdict::judge(c, &mut runs))
+                    .collect(),
             },
-            thumbnails: EXHIBITS.iter().map(thumbnail).collect(),
+            thumbnails: EXHIBITS.iter().map(|e| thumbnail(e, &mut runs)).collect(),
         })
     }
 

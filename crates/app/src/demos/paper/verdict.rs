@@ -107,10 +107,25 @@ pub(super) fn link(demo: &str, query: &str) -> String {
 }
 
 /// Demo `demo` updated once at `query`, as the page shows it when the link is opened.
-pub(super) fn run(demo: &str, query: &str) -> Option<Frame> {
+fn run(demo: &str, query: &str) -> Option<Frame> {
     let mut d = create(demo)?;
     let (params, _) = resolve_query(&d.spec(), query);
     Some(d.update(&params))
+}
+
+/// The linked demos' frames, each `(demo, query)` computed once per tour: several
+/// exhibits and claims share a state (the integrators at h = 0.3 s serve five of them).
+#[derive(Default)]
+pub(super) struct Runs(std::collections::HashMap<(&'static str, &'static str), Option<Frame>>);
+
+impl Runs {
+    /// Demo `demo` at `query` (see [`run`]); `None` if the demo is not registered.
+    pub(super) fn get(&mut self, demo: &'static str, query: &'static str) -> Option<&Frame> {
+        self.0
+            .entry((demo, query))
+            .or_insert_with(|| run(demo, query))
+            .as_ref()
+    }
 }
 
 /// Readout `key` of `frame`: its value and the text the demo shows for it.
@@ -155,8 +170,8 @@ fn euler_slope(frame_query: &str) -> Option<(f64, f64, f64)> {
 }
 
 /// Checks one claim; `None` only if its demo is missing from the registry.
-pub(super) fn judge(def: &ClaimDef) -> Option<ClaimView> {
-    let frame = run(def.demo, def.query)?;
+pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
+    let frame = runs.get(def.demo, def.query)?;
     // The paper's numbers carry two or three digits.
     let fmt = |v: f64| si(v, def.unit, 3);
     let (claimed, computed, agrees, mut reason) = match def.check {
@@ -165,7 +180,7 @@ pub(super) fn judge(def: &ClaimDef) -> Option<ClaimView> {
             claimed,
             tol,
         } => {
-            let (v, shown) = readout(&frame, key)?;
+            let (v, shown) = readout(frame, key)?;
             let agrees = (v - claimed).abs() <= tol;
             let relation = if agrees {
                 "within the rounding of"
@@ -183,7 +198,7 @@ pub(super) fn judge(def: &ClaimDef) -> Option<ClaimView> {
             readout: key,
             bound,
         } => {
-            let (v, shown) = readout(&frame, key)?;
+            let (v, shown) = readout(frame, key)?;
             let agrees = v < bound;
             let relation = if agrees { "below" } else { "above" };
             let why = format!(
@@ -198,7 +213,7 @@ pub(super) fn judge(def: &ClaimDef) -> Option<ClaimView> {
             claimed,
             tol,
         } => {
-            let ((a, a_text), (b, b_text)) = (readout(&frame, lo)?, readout(&frame, hi)?);
+            let ((a, a_text), (b, b_text)) = (readout(frame, lo)?, readout(frame, hi)?);
             let agrees = (a - claimed.0).abs() <= tol && (b - claimed.1).abs() <= tol;
             let computed = format!("{a_text} to {b_text}");
             let relation = if agrees {
@@ -234,14 +249,12 @@ pub(super) fn judge(def: &ClaimDef) -> Option<ClaimView> {
         }
     };
     if let Some(ctx) = &def.context {
-        let other;
-        let source = if ctx.query.is_empty() {
-            &frame
+        let query = if ctx.query.is_empty() {
+            def.query
         } else {
-            other = run(def.demo, ctx.query)?;
-            &other
+            ctx.query
         };
-        if let Some((_, shown)) = readout(source, ctx.readout) {
+        if let Some((_, shown)) = readout(runs.get(def.demo, query)?, ctx.readout) {
             reason.push(' ');
             reason.push_str(&ctx.sentence.replacen("{}", &shown, 1));
         }
