@@ -3,6 +3,20 @@
 // Number formatting needs the decimal exponent of a value.
 #![allow(clippy::disallowed_methods)]
 
+/// The name of a damping regime in the interface language.
+pub fn regime(r: zeta_solver::Regime) -> String {
+    use zeta_solver::Regime;
+    match r {
+        Regime::Undamped => crate::t!("regime-undamped"),
+        Regime::Underdamped => crate::t!("regime-underdamped"),
+        Regime::CriticallyDamped => crate::t!("regime-critically-damped"),
+        Regime::Overdamped => crate::t!("regime-overdamped"),
+        Regime::NegativelyDamped => crate::t!("regime-negatively-damped"),
+        Regime::Neutral => crate::t!("regime-neutral"),
+        Regime::Divergent => crate::t!("regime-divergent"),
+    }
+}
+
 /// Formats `v` with `sig` significant digits and an SI prefix for `unit`
 /// (`0.0012 s` → `1.20 ms`). Dimensionless values and percentages get no prefix.
 pub fn si(v: f64, unit: &str, sig: usize) -> String {
@@ -45,8 +59,23 @@ fn engineering(v: f64) -> (f64, &'static str) {
 }
 
 /// `v` rounded to `sig` significant digits, in plain or (for extreme magnitudes)
-/// scientific notation.
+/// scientific notation, in the interface language's digits and decimal separator.
 pub fn significant(v: f64, sig: usize) -> String {
+    let s = significant_plain(v, sig);
+    let (mantissa, exp) = match s.split_once('e') {
+        Some((m, e)) => (m, Some(e)),
+        None => (s.as_str(), None),
+    };
+    let decimals = mantissa.split_once('.').map_or(0, |(_, f)| f.len());
+    let local = crate::i18n::number::fixed(mantissa.parse().unwrap_or(0.0), decimals);
+    match exp {
+        Some(e) => format!("{local}e{e}"),
+        None => local,
+    }
+}
+
+/// [`significant`] in the locale-free form (`1.20`, `3.5e-7`).
+pub fn significant_plain(v: f64, sig: usize) -> String {
     if v == 0.0 {
         return "0".to_string();
     }

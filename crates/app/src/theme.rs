@@ -2,9 +2,6 @@
 
 use plotters::style::RGBColor;
 
-/// The English clipped-plot note (translated by the page's language catalogue).
-pub const CLIPPED_NOTE: &str = "clipped: some values lie beyond the axes";
-
 /// Plot colours for one theme.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Theme {
@@ -18,18 +15,12 @@ pub struct Theme {
     pub grid_minor: RGBColor,
     /// Series colours, indexed by `LineStyle::color` (wrapping).
     pub palette: [RGBColor; 7],
-    /// Whether tick labels use a decimal comma (the page's language decides).
-    pub decimal_comma: bool,
-    /// The note drawn on a plot whose curves leave the axes, in the page's language.
-    pub clipped_note: &'static str,
 }
 
 impl Theme {
     /// Dark text on white. Okabe–Ito colours, with yellow swapped for a darker amber so every
     /// line keeps ≥ 3:1 contrast on white.
     pub const LIGHT: Theme = Theme {
-        decimal_comma: false,
-        clipped_note: CLIPPED_NOTE,
         background: RGBColor(255, 255, 255),
         foreground: RGBColor(33, 37, 41),
         grid: RGBColor(206, 212, 218),
@@ -47,8 +38,6 @@ impl Theme {
 
     /// Light text on near-black, with the palette lightened for contrast.
     pub const DARK: Theme = Theme {
-        decimal_comma: false,
-        clipped_note: CLIPPED_NOTE,
         background: RGBColor(24, 26, 31),
         foreground: RGBColor(230, 233, 237),
         grid: RGBColor(70, 76, 86),

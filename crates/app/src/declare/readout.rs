@@ -190,7 +190,12 @@ impl<R> ReadoutDef<R> {
         match &self.show {
             Show::Number { sig, get } => Readout::number(self.key, get(r), self.unit, *sig),
             Show::Plain { sig, get } => Readout::plain(self.key, get(r), self.unit, *sig),
-            Show::Text(get) => Readout::text(self.key, get(r)),
+            // The text in the interface language; the data-value in English, locale-free.
+            Show::Text(get) => Readout {
+                key: self.key,
+                text: get(r),
+                data_value: crate::i18n::in_english(|| get(r)),
+            },
             Show::Formatted(get) => match get(r).filter(|(v, _)| v.is_finite()) {
                 Some((v, text)) => Readout {
                     key: self.key,

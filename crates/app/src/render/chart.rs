@@ -113,8 +113,8 @@ where
         .axis_style(fg.stroke_width(px(1.0, scale)))
         .x_labels(6)
         .y_labels(6)
-        .x_label_formatter(&|v| axis_tick_label(*v, &fig.x, theme.decimal_comma))
-        .y_label_formatter(&|v| axis_tick_label(*v, &fig.y, theme.decimal_comma))
+        .x_label_formatter(&|v| axis_tick_label(*v, &fig.x))
+        .y_label_formatter(&|v| axis_tick_label(*v, &fig.y))
         .draw()
         .map_err(err)?;
 

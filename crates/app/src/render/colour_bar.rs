@@ -52,7 +52,7 @@ pub(super) fn draw_colour_bar<DB: DrawingBackend>(
     ];
     for (v, y, vpos) in ends {
         area.draw(&Text::new(
-            short_label(v, theme.decimal_comma),
+            short_label(v),
             (label_x, y),
             font.clone().pos(Pos::new(HPos::Left, vpos)),
         ))

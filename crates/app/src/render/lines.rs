@@ -135,7 +135,7 @@ where
         // Say so when a curve leaves the axes, so a clamped line is not read as data.
         let area = chart.plotting_area().strip_coord_spec();
         let at = (px(6.0, scale) as i32, px(4.0, scale) as i32);
-        let note = theme.clipped_note;
+        let note = crate::t!("plot-clipped");
         area.draw(&Text::new(note, at, font(11.0))).map_err(err)?;
     }
     Ok(legend)

@@ -79,41 +79,42 @@ pub(super) fn decade_multiples(lo: f64, hi: f64, mantissas: &[f64]) -> Vec<f64> 
 /// at most a handful of labelled ticks across the span, so a step is at least a tenth of
 /// it and a real tick is never that close to zero. Log axes have no zero and keep every
 /// value (their ticks can be many decades below the span).
-pub(super) fn axis_tick_label(v: f64, axis: &Axis, decimal_comma: bool) -> String {
+pub(super) fn axis_tick_label(v: f64, axis: &Axis) -> String {
     let (lo, hi) = axis.range;
     let span = (hi - lo).abs();
     if axis.scale == AxisScale::Linear && span.is_finite() && v.abs() < 1e-9 * span {
         return "0".to_string();
     }
-    tick_label(v, decimal_comma)
+    tick_label(v)
 }
 
 /// A tick label: at most 6 significant digits, no rounding tails (`0.30000000000000004` →
-/// `0.3`), trailing zeros dropped, and the language's decimal separator.
-pub fn tick_label(v: f64, decimal_comma: bool) -> String {
+/// `0.3`), trailing zeros dropped, in the language's digits and separators.
+pub fn tick_label(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return "0".to_string();
     }
-    let s = crate::format::significant(v, 6);
-    let s = match s.split_once('e') {
-        Some((mantissa, exp)) => format!("{}e{exp}", trim_zeros(mantissa)),
-        None => trim_zeros(&s).to_string(),
+    let s = crate::format::significant_plain(v, 6);
+    let localized = |digits: &str| {
+        let digits = trim_zeros(digits);
+        let decimals = digits.split_once('.').map_or(0, |(_, f)| f.len());
+        crate::i18n::number::fixed(digits.parse().unwrap_or(0.0), decimals)
     };
-    if decimal_comma {
-        s.replace('.', ",")
-    } else {
-        s
+    match s.split_once('e') {
+        Some((mantissa, exp)) => format!("{}e{exp}", localized(mantissa)),
+        None => localized(&s),
     }
 }
 
 /// A colour-bar label: three significant digits, as [`tick_label`] otherwise.
-pub(super) fn short_label(v: f64, decimal_comma: bool) -> String {
+pub(super) fn short_label(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return "0".to_string();
     }
     tick_label(
-        crate::format::significant(v, 3).parse::<f64>().unwrap_or(v),
-        decimal_comma,
+        crate::format::significant_plain(v, 3)
+            .parse::<f64>()
+            .unwrap_or(v),
     )
 }
 

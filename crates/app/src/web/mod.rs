@@ -14,7 +14,7 @@ mod translate;
 pub use session::Session;
 
 use crate::demos;
-use crate::i18n::{tr, Lang};
+use crate::i18n::Lang;
 use crate::theme::Theme;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
@@ -33,26 +33,87 @@ thread_local! {
     static LAST_PANIC: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
 }
 
-/// The interface language, set once by the page ([`set_language`]).
-static LANG: std::sync::atomic::AtomicU8 = std::sync::atomic::AtomicU8::new(0);
-
 fn lang() -> Lang {
-    match LANG.load(std::sync::atomic::Ordering::Relaxed) {
-        1 => Lang::Es,
-        _ => Lang::En,
+    Lang::from_tag(crate::i18n::active().tag)
+}
+
+#[derive(Serialize)]
+struct LanguageEntry {
+    tag: &'static str,
+    name: &'static str,
+    dir: crate::i18n::Dir,
+    pseudo: bool,
+    /// The catalogue file to fetch (absent: built in).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    file: Option<String>,
+    /// Whether its messages are available now.
+    loaded: bool,
+}
+
+fn entry(l: &'static crate::i18n::Locale) -> LanguageEntry {
+    LanguageEntry {
+        tag: l.tag,
+        name: l.name,
+        dir: l.dir,
+        pseudo: l.is_pseudo(),
+        file: l.file(),
+        loaded: crate::i18n::is_loaded(l),
     }
 }
 
-/// Sets the language of every string the module returns (a BCP 47 tag: `en`, `es`, …);
-/// returns the tag in use.
+/// `[{tag, name, dir, pseudo, file?, loaded}]` of every interface language.
+#[wasm_bindgen]
+pub fn languages() -> Result<JsValue, JsError> {
+    to_js(&crate::i18n::LOCALES.iter().map(entry).collect::<Vec<_>>())
+}
+
+/// Makes the language that best matches `requested` (BCP 47 tags, most wanted first,
+/// separated by commas: `lang=`, then the browser's) active for every string the module
+/// returns; returns its entry. A language whose catalogue is not loaded yet shows English
+/// until [`load_catalogue`] brings it.
 #[wasm_bindgen(js_name = setLanguage)]
-pub fn set_language(tag: &str) -> String {
-    let l = Lang::from_tag(tag);
-    LANG.store(
-        if l == Lang::Es { 1 } else { 0 },
-        std::sync::atomic::Ordering::Relaxed,
-    );
-    l.tag().to_string()
+pub fn set_language(requested: &str) -> Result<JsValue, JsError> {
+    let tags: Vec<&str> = requested.split(',').map(str::trim).collect();
+    to_js(&entry(crate::i18n::set_language(&tags)))
+}
+
+/// Loads the catalogue of language `tag` from its `.ftl` text; returns the problems
+/// found (empty when it parsed cleanly; messages that parsed are kept either way).
+#[wasm_bindgen(js_name = loadCatalogue)]
+pub fn load_catalogue(tag: &str, ftl: &str) -> Vec<String> {
+    crate::i18n::load(tag, ftl).err().unwrap_or_default()
+}
+
+/// The message ids shown in English since the last call because the active language's
+/// catalogue lacks them (empty when everything on screen is translated).
+#[wasm_bindgen(js_name = takeMissingMessages)]
+pub fn take_missing_messages() -> Vec<String> {
+    crate::i18n::take_missing()
+}
+
+/// Message `id` in the active language, with `args` (an object of strings and numbers;
+/// integers select plural forms) — for the page's own strings.
+#[wasm_bindgen]
+pub fn message(id: &str, args: JsValue) -> String {
+    use crate::i18n::Arg;
+    let mut list: Vec<(String, Arg)> = Vec::new();
+    if let Some(obj) = args.dyn_ref::<js_sys::Object>() {
+        for pair in js_sys::Object::entries(obj).iter() {
+            let pair = js_sys::Array::from(&pair);
+            let Some(name) = pair.get(0).as_string() else {
+                continue;
+            };
+            let v = pair.get(1);
+            let arg = match v.as_f64() {
+                Some(n) if n.fract() == 0.0 && n.abs() < 9e15 => Arg::Count(n as i64),
+                Some(n) => Arg::Text(crate::format::significant(n, 6)),
+                None => Arg::Text(v.as_string().unwrap_or_default()),
+            };
+            list.push((name, arg));
+        }
+    }
+    let borrowed: Vec<(&str, Arg)> = list.iter().map(|(k, a)| (k.as_str(), a.clone())).collect();
+    crate::i18n::message(id, &borrowed)
 }
 
 /// The message of the last panic, if any (read by the page after a failed call).
@@ -79,23 +140,17 @@ pub fn demo_list() -> Result<JsValue, JsError> {
         .filter_map(|id| demos::create(id).map(|d| d.spec()))
         .map(|s| DemoEntry {
             id: s.id,
-            title: tr(lang(), s.title).into_owned(),
+            title: crate::i18n::declared::tr(&format!("{}-title", s.id), s.title),
         })
         .collect();
     to_js(&list)
 }
 
 fn theme(dark: bool) -> Theme {
-    let base = if dark { Theme::DARK } else { Theme::LIGHT };
-    let note = match tr(lang(), crate::theme::CLIPPED_NOTE) {
-        std::borrow::Cow::Borrowed(s) => s,
-        // The note is a whole-string catalogue entry; an owned result means no entry.
-        std::borrow::Cow::Owned(_) => crate::theme::CLIPPED_NOTE,
-    };
-    Theme {
-        decimal_comma: lang() == Lang::Es,
-        clipped_note: note,
-        ..base
+    if dark {
+        Theme::DARK
+    } else {
+        Theme::LIGHT
     }
 }
 

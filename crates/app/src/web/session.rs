@@ -60,7 +60,7 @@ impl Session {
 
     /// The demo's declaration (see [`DemoSpec`]).
     pub fn spec(&self) -> Result<JsValue, JsError> {
-        to_js(&translate_spec(&self.spec, lang()))
+        to_js(&translate_spec(&self.spec))
     }
 
     /// Applies a URL query string (`?demo=…&zeta=0.2`); returns the notices `[{key, message}]`.

@@ -1,6 +1,7 @@
 //! The spec, figures and notices in the page's language (keys, symbols and units unchanged).
 
 use super::lang;
+use crate::i18n::declared::{self, slug};
 use crate::i18n::{tr, Lang};
 use crate::params::Notice;
 use crate::spec::DemoSpec;
@@ -27,54 +28,94 @@ pub(super) fn translate_figure(fig: &mut crate::figure::Figure, l: Lang) {
     }
 }
 
-/// The spec with its human strings in language `l` (keys, symbols and units unchanged).
-pub(super) fn translate_spec(spec: &DemoSpec, l: Lang) -> TranslatedSpec {
-    let t = |s: &str| tr(l, s).into_owned();
+/// The spec with its declared strings in the active language (keys, symbols and units
+/// unchanged), each looked up by its structural id ([`crate::i18n::declared`]).
+pub(super) fn translate_spec(spec: &DemoSpec) -> TranslatedSpec {
+    let d = spec.id;
+    let t = |id: String, english: &'static str| declared::tr(&id, english);
     TranslatedSpec {
         id: spec.id,
-        title: t(spec.title),
-        summary: t(spec.summary),
+        title: t(format!("{d}-title"), spec.title),
+        summary: t(format!("{d}-summary"), spec.summary),
         equation_mathml: spec.equation_mathml,
         params: spec
             .params
             .iter()
-            .map(|p| TranslatedParam {
-                key: p.key,
-                label: t(p.label),
-                symbol: p.symbol,
-                unit: p.unit,
-                min: p.min,
-                max: p.max,
-                step: p.step,
-                default: p.default,
-                scale: p.scale,
-                kind: p.kind,
-                options: p.options.iter().map(|o| (o.key, t(o.label))).collect(),
-                visible_when: p.visible_when,
+            .map(|p| {
+                let k = slug(p.key);
+                TranslatedParam {
+                    key: p.key,
+                    label: t(format!("{d}-param-{k}"), p.label),
+                    symbol: p.symbol,
+                    unit: p.unit,
+                    min: p.min,
+                    max: p.max,
+                    step: p.step,
+                    default: p.default,
+                    scale: p.scale,
+                    kind: p.kind,
+                    options: p
+                        .options
+                        .iter()
+                        .map(|o| (o.key, t(format!("{d}-param-{k}-{}", slug(o.key)), o.label)))
+                        .collect(),
+                    visible_when: p.visible_when,
+                }
             })
             .collect(),
         readouts: spec
             .readouts
             .iter()
-            .map(|r| (r.key, t(r.label), r.unit))
+            .map(|r| {
+                (
+                    r.key,
+                    t(format!("{d}-readout-{}", slug(r.key)), r.label),
+                    r.unit,
+                )
+            })
             .collect(),
         plots: spec
             .plots
             .iter()
-            .map(|p| (p.key, t(p.title), p.aspect))
+            .map(|p| {
+                (
+                    p.key,
+                    t(format!("{d}-plot-{}", slug(p.key)), p.title),
+                    p.aspect,
+                )
+            })
             .collect(),
         presets: spec
             .presets
             .iter()
-            .map(|p| (t(p.label), p.values.clone()))
+            .enumerate()
+            .map(|(i, p)| {
+                (
+                    t(format!("{d}-preset-{}", i + 1), p.label),
+                    p.values.clone(),
+                )
+            })
             .collect(),
         table: spec.table.as_ref().map(|tb| TranslatedTable {
-            caption: t(tb.caption),
-            columns: tb.columns.iter().map(|c| t(c)).collect(),
+            caption: t(format!("{d}-table-caption"), tb.caption),
+            columns: tb
+                .columns
+                .iter()
+                .enumerate()
+                .map(|(i, c)| t(format!("{d}-table-column-{}", i + 1), c))
+                .collect(),
             rows: tb
                 .rows
                 .iter()
-                .map(|(k, cells)| (*k, cells.iter().map(|c| t(c)).collect()))
+                .map(|(k, cells)| {
+                    let row = slug(k);
+                    let cells = cells
+                        .iter()
+                        .enumerate()
+                        .map(|(i, c)| t(format!("{d}-table-{row}-{}", i + 1), c))
+                        .collect();
+                    (*k, cells)
+                })
                 .collect(),
             highlight_readout: tb.highlight_readout,
         }),

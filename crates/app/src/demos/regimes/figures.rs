@@ -3,9 +3,10 @@
 
 use super::{text, Results};
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
-use crate::format::si;
+use crate::format::{self, si};
 use crate::plot::{circle, curve, Ink};
 use crate::schematic::{mass_spring_damper, MassLabels};
+use crate::t;
 
 /// Samples per curve: smooth at any canvas width up to ~1200 CSS px.
 const SAMPLES: usize = 600;
@@ -27,19 +28,19 @@ pub(super) fn response(r: &Results) -> Figure {
         finite_extent(x.iter().map(|p| p.1).chain(envelope_values)).unwrap_or((-floor, floor));
     let y = padded((lo.min(-0.2 * floor), hi.max(0.2 * floor)), 0.08);
     let mut fig = Figure::plot(
-        RESPONSE_TITLE,
-        Axis::linear("time t", "s", (0.0, r.t_end)),
-        Axis::linear("displacement x", "m", y),
+        t!("regimes-plot-response"),
+        Axis::linear(t!("axis-time"), "s", (0.0, r.t_end)),
+        Axis::linear(t!("axis-displacement"), "m", y),
     );
     if let Some(upper) = envelope {
         let lower = upper.iter().map(|&(t, e)| (t, -e)).collect();
         let style = LineStyle::dashed(Ink::Vermillion, 1.5);
         fig = fig
-            .with_line("envelope ±A·e^(−ζωₙt)", upper, style)
+            .with_line(t!("regimes-envelope"), upper, style)
             .with_line("", lower, style);
     }
     fig.with_line(
-        format!("x(t), {}", r.regime.key()),
+        t!("regimes-series-response", regime = format::regime(r.regime)),
         x,
         LineStyle::solid(Ink::Blue, 2.5),
     )
@@ -53,10 +54,10 @@ pub(super) fn poles(r: &Results) -> Figure {
     let reach = r.poles.iter().map(|p| p.abs()).fold(wn, f64::max).max(1e-6) * 1.25;
     let [s1, s2] = r.poles;
     Figure::plot(
-        POLES_TITLE,
+        t!("regimes-plot-poles"),
         // Wider than tall, like the canvas, so the circle |s| = ωₙ looks round.
-        Axis::linear("real part Re s", "1/s", (-1.35 * reach, 1.35 * reach)),
-        Axis::linear("imaginary part Im s", "rad/s", (-reach, reach)),
+        Axis::linear(t!("axis-real-part"), "1/s", (-1.35 * reach, 1.35 * reach)),
+        Axis::linear(t!("axis-imaginary-part"), "rad/s", (-reach, reach)),
     )
     .with_line(
         "|s| = ωₙ",
@@ -77,10 +78,10 @@ pub(super) fn schematic(x: f64, reach: f64, t: f64) -> Figure {
         damper: "c",
         base: "",
     };
-    let description = format!(
-        "Mass on a spring and damper at t = {}: displaced {} from rest.",
-        si(t, "s", 3),
-        si(x, "m", 3)
+    let description = t!(
+        "regimes-schematic",
+        time = si(t, "s", 3),
+        displacement = si(x, "m", 3)
     );
     mass_spring_damper(x / reach, 0.0, &labels, description)
 }

@@ -2,8 +2,9 @@
 //! text alternatives.
 
 use super::Results;
-use crate::format::si;
+use crate::format::{self, si};
 use crate::spec::Table;
+use crate::t;
 use zeta_solver::{Complex, Regime};
 
 pub(super) const SUMMARY: &str =
@@ -87,37 +88,39 @@ pub(super) fn regime_table() -> Table {
 
 /// The response described in words, for screen readers and the plot's text alternative.
 pub(super) fn describe(r: &Results) -> String {
+    let regime = format::regime(r.regime);
     match &r.metrics {
         Some(m) => {
-            let settle = m
-                .settling_time
-                .map(|t| format!("stays within 5 % of rest after {}", si(t, "s", 3)))
-                .unwrap_or_else(|| "does not settle".to_string());
+            let rebound = si(100.0 * m.peak_rebound, "%", 3);
             // The solver counts crossings before the response settles into the band.
-            let swings = match m.zero_crossings {
-                0 => "no swing past equilibrium before settling".to_string(),
-                1 => "swings past equilibrium once before settling".to_string(),
-                n => format!("swings past equilibrium {n} times before settling"),
-            };
-            format!(
-                "{}: {}, {}, peak rebound {}.",
-                r.regime.key(),
-                swings,
-                settle,
-                si(100.0 * m.peak_rebound, "%", 3)
-            )
+            let swings = m.zero_crossings;
+            match m.settling_time {
+                Some(t) => t!(
+                    "regimes-describe-settles",
+                    regime = regime,
+                    swings = swings,
+                    time = si(t, "s", 3),
+                    rebound = rebound
+                ),
+                None => t!(
+                    "regimes-describe-unsettled",
+                    regime = regime,
+                    swings = swings,
+                    rebound = rebound
+                ),
+            }
         }
         None => match r.regime {
-            Regime::Undamped => format!(
-                "undamped: oscillates forever with amplitude {} at {}.",
-                si(r.response.envelope_amplitude().unwrap_or(0.0), "m", 3),
-                si(r.sys.natural_frequency().unwrap_or(0.0), "rad/s", 3)
+            Regime::Undamped => t!(
+                "regimes-describe-undamped",
+                amplitude = si(r.response.envelope_amplitude().unwrap_or(0.0), "m", 3),
+                frequency = si(r.sys.natural_frequency().unwrap_or(0.0), "rad/s", 3)
             ),
-            Regime::NegativelyDamped => format!(
-                "negatively damped: the response grows without bound, by a factor e every {}.",
-                si(1.0 / (-r.sys.alpha()).max(1e-300), "s", 3)
+            Regime::NegativelyDamped => t!(
+                "regimes-describe-growing",
+                time = si(1.0 / (-r.sys.alpha()).max(1e-300), "s", 3)
             ),
-            _ => format!("{}: starts at rest at equilibrium.", r.regime.key()),
+            _ => t!("regimes-describe-at-rest", regime = regime),
         },
     }
 }
@@ -125,19 +128,14 @@ pub(super) fn describe(r: &Results) -> String {
 /// The poles in words.
 pub(super) fn describe_poles(poles: &[Complex; 2]) -> String {
     let sign = |im: f64| if im < 0.0 { "−" } else { "+" };
-    let side = if poles[0].re > 0.0 {
-        "right (unstable)"
-    } else {
-        "left (stable)"
-    };
-    format!(
-        "Poles at {} {} {}i and {} {} {}i 1/s, in the {} half-plane.",
-        si(poles[0].re, "", 4),
-        sign(poles[0].im),
-        si(poles[0].im.abs(), "", 4),
-        si(poles[1].re, "", 4),
-        sign(poles[1].im),
-        si(poles[1].im.abs(), "", 4),
-        side
+    t!(
+        "regimes-poles",
+        re1 = si(poles[0].re, "", 4),
+        sign1 = sign(poles[0].im),
+        im1 = si(poles[0].im.abs(), "", 4),
+        re2 = si(poles[1].re, "", 4),
+        sign2 = sign(poles[1].im),
+        im2 = si(poles[1].im.abs(), "", 4),
+        side = if poles[0].re > 0.0 { "right" } else { "left" }
     )
 }

@@ -1,0 +1,860 @@
+# Zeta Lab — English, the source catalogue (Project Fluent, https://projectfluent.org).
+#
+# Every string the interface shows has an id here. Other languages copy this file's ids
+# into locales/<tag>.ftl; a message may use only the variables its English source uses.
+# Variables hold text already in the language (a quantity with its unit, a name) or a
+# count ($n), which selects plural forms: [one] …  *[other] ….
+#
+# The block "Declared strings" at the end is generated from the demo declarations:
+# `ZETA_UPDATE_DOCS=1 cargo test -p zeta-app --test catalogues` rewrites it.
+
+## The page
+
+page-skip = Skip to the demo
+page-demo = Demo
+page-share = Share / Embed
+page-loading = Loading the solver…
+page-footer = Zeta Lab — every number on this page is computed in Rust (compiled to WebAssembly) from closed-form solutions.
+page-parameters = Parameters
+page-readouts = Readouts
+page-about = About this demo
+page-plot-in-view = Plot in view
+page-presets = Presets
+page-reset = Reset to defaults
+page-exact-value = exact value
+page-export-group = Export { $plot }
+page-download = Download { $plot } as { $format }
+page-play = Play
+page-pause = Pause
+page-sound-on = Sound on
+page-sound-off = Sound off
+page-sound-hint = Hear x(t): pitch follows displacement
+page-anim-time = Animation time
+page-time-words = time { $t } seconds
+page-schematic = Animated schematic
+page-dismiss = Dismiss notice
+page-failed = Something went wrong and the demo was restarted: { $text }
+page-no-demo = There is no demo called “{ $id }”; showing { $fallback }.
+page-no-wasm = The solver could not be loaded ({ $text }). This page needs WebAssembly.
+page-copy = Copy
+page-equation = Equation
+page-tour-head = The paper, figure by figure
+page-tour-open = Open this state in the demo
+page-tour-paper = The paper says
+page-tour-app = The app computes
+page-tour-confirmed = Confirmed.
+page-tour-differs = Differs.
+page-copied = Copied
+page-copy-manual = Select and copy (Ctrl+C)
+page-share-title = Share or embed “{ $title }”
+page-embed-view = {" "}Embed view (no site header)
+page-autoplay = {" "}Start the animation
+page-theme = Theme{" "}
+page-width = {" "}Width{" "}
+page-height = {" "}Height{" "}
+page-sliders-shown = Sliders shown
+page-sliders-locked = Sliders locked
+page-plots-shown = Plots shown
+page-link = Link
+page-embed-code = Embed code
+page-preview = Preview of the embedded demo
+page-close = Close
+
+## Plots
+
+plot-clipped = clipped: some values lie beyond the axes
+
+## Shared words: axes, regimes
+
+axis-time = time t
+axis-displacement = displacement x
+axis-extension = extension x
+axis-force = force F
+axis-velocity = velocity v
+axis-real-part = real part Re s
+axis-imaginary-part = imaginary part Im s
+regime-undamped = undamped
+regime-underdamped = underdamped
+regime-critically-damped = critically damped
+regime-overdamped = overdamped
+regime-negatively-damped = negatively damped
+regime-neutral = neutral
+regime-divergent = divergent
+
+## Demos
+
+### regimes
+
+regimes-envelope = envelope ±A·e^(−ζωₙt)
+regimes-series-response = x(t), { $regime }
+regimes-describe-settles = { $regime }: { $swings ->
+        [0] no swing past equilibrium before settling
+        [one] swings past equilibrium once before settling
+       *[other] swings past equilibrium { $swings } times before settling
+    }, stays within 5 % of rest after { $time }, peak rebound { $rebound }.
+regimes-describe-unsettled = { $regime }: { $swings ->
+        [0] no swing past equilibrium before settling
+        [one] swings past equilibrium once before settling
+       *[other] swings past equilibrium { $swings } times before settling
+    }, does not settle, peak rebound { $rebound }.
+regimes-describe-undamped = undamped: oscillates forever with amplitude { $amplitude } at { $frequency }.
+regimes-describe-growing = negatively damped: the response grows without bound, by a factor e every { $time }.
+regimes-describe-at-rest = { $regime }: starts at rest at equilibrium.
+regimes-poles = Poles at { $re1 } { $sign1 } { $im1 }i and { $re2 } { $sign2 } { $im2 }i 1/s, in the { $side ->
+        [right] right (unstable)
+       *[left] left (stable)
+    } half-plane.
+regimes-schematic = Mass on a spring and damper at t = { $time }: displaced { $displacement } from rest.
+
+## Declared strings (generated from the demo declarations)
+
+### regimes
+
+regimes-title = Damping regimes
+regimes-summary = Free response from x(0) = x₀, x′(0) = v₀. The damping ratio ζ decides the regime: ζ = 0 undamped, 0 < ζ < 1 underdamped, ζ = 1 critically damped, ζ > 1 overdamped, ζ < 0 negatively damped (the response grows). The poles s = −ζωₙ ± ωₙ√(ζ² − 1) move around a circle of radius ωₙ, onto the real axis at ζ = 1 and across the imaginary axis at ζ = 0.
+regimes-param-wn = natural frequency
+regimes-param-zeta = damping ratio
+regimes-param-x0 = initial displacement
+regimes-param-v0 = initial velocity
+regimes-readout-regime = regime
+regimes-readout-wn = natural frequency ωₙ
+regimes-readout-zeta = damping ratio ζ
+regimes-readout-wd = damped frequency ω_d
+regimes-readout-pole-re = pole real part
+regimes-readout-pole-im = pole imaginary part
+regimes-plot-response = Free response x(t)
+regimes-plot-poles = Poles in the s-plane
+regimes-preset-1 = Undamped ζ = 0
+regimes-preset-2 = Underdamped ζ = 0.2
+regimes-preset-3 = Critically damped ζ = 1
+regimes-preset-4 = Overdamped ζ = 2
+regimes-preset-5 = Negative damping ζ = −0.1
+regimes-table-caption = The damping regimes
+regimes-table-column-1 = regime
+regimes-table-column-2 = condition
+regimes-table-column-3 = roots s₁, s₂
+regimes-table-column-4 = behaviour
+regimes-table-column-5 = engineering examples
+regimes-table-undamped-1 = Undamped
+regimes-table-undamped-2 = ζ = 0
+regimes-table-undamped-3 = ±iωₙ, on the imaginary axis
+regimes-table-undamped-4 = oscillates forever at ωₙ
+regimes-table-undamped-5 = ideal pendulum, LC tank circuit
+regimes-table-underdamped-1 = Underdamped
+regimes-table-underdamped-2 = 0 < ζ < 1
+regimes-table-underdamped-3 = −ζωₙ ± iω_d, complex pair
+regimes-table-underdamped-4 = decaying oscillation at ω_d
+regimes-table-underdamped-5 = car suspension (ζ ≈ 0.2–0.7), guitar string
+regimes-table-critically-damped-1 = Critically damped
+regimes-table-critically-damped-2 = ζ = 1
+regimes-table-critically-damped-3 = −ωₙ, double real root
+regimes-table-critically-damped-4 = fastest return without oscillating
+regimes-table-critically-damped-5 = door closer, analogue meter needle
+regimes-table-overdamped-1 = Overdamped
+regimes-table-overdamped-2 = ζ > 1
+regimes-table-overdamped-3 = two negative real roots
+regimes-table-overdamped-4 = slow return, no oscillation
+regimes-table-overdamped-5 = heavy hydraulic damper, thermometer
+regimes-table-negatively-damped-1 = Negatively damped
+regimes-table-negatively-damped-2 = ζ < 0
+regimes-table-negatively-damped-3 = right half-plane
+regimes-table-negatively-damped-4 = growing oscillation
+regimes-table-negatively-damped-5 = flutter (Tacoma Narrows), squealing brakes
+
+### quarter-car
+
+quarter-car-title = Quarter-car suspension
+quarter-car-summary = One corner of a car: the body (sprung mass m) on a spring k and a damper c over a fixed road, pushed by x₀ and released from rest (x′(0) = 0). c and ζ are two views of one damper, c = 2ζ√(km): move either and the other follows; changing m or k keeps the damper, so ζ moves. The thin curves show the textbook settings on this car: comfort (ζ ≈ 0.3–0.4) rebounds, performance (ζ ≈ 0.65–0.7) settles fastest, critical (ζ = 1) and overdamped settings return without rebound but more slowly. Settling time jumps as ζ passes the values where a rebound drops inside the band: the fastest ζ sits just past such a jump, so a heavier load can push a well-tuned car over the edge (see the mass strip). Settling is measured on this free response: the settling time is the last time |x| equals band·|x₀|, after which the body stays within ±band·|x₀| of rest (not the band around the final value of a step response).
+quarter-car-param-m = sprung mass
+quarter-car-param-k = spring rate
+quarter-car-param-c = damper rate
+quarter-car-param-zeta = damping ratio
+quarter-car-param-x0 = initial displacement
+quarter-car-param-band = settling band around rest, relative to x₀
+quarter-car-param-dm = sprung-mass variation
+quarter-car-readout-regime = regime
+quarter-car-readout-wn = natural frequency ωₙ
+quarter-car-readout-fn = natural frequency fₙ
+quarter-car-readout-zeta = damping ratio ζ
+quarter-car-readout-c = damper rate c in use
+quarter-car-readout-c-crit = critical damping 2√(km)
+quarter-car-readout-wd = damped frequency ω_d
+quarter-car-readout-settling-time = settling time t_s into ±band·|x₀| (free response)
+quarter-car-readout-overshoot = peak rebound (of x₀)
+quarter-car-readout-peak-time = time of peak rebound
+quarter-car-readout-zeta-argmin = fastest-settling ζ (free response, same band)
+quarter-car-readout-settling-min = its settling time
+quarter-car-readout-zeta-lo = ζ at mass +dm %
+quarter-car-readout-zeta-hi = ζ at mass −dm %
+quarter-car-plot-response = Body displacement x(t)
+quarter-car-plot-settling = Free-response settling time against ζ
+quarter-car-plot-sensitivity = ζ when the sprung mass varies
+quarter-car-preset-1 = Comfort ζ = 0.3
+quarter-car-preset-2 = Comfort ζ = 0.4
+quarter-car-preset-3 = Performance ζ = 0.65
+quarter-car-preset-4 = Performance ζ = 0.7
+quarter-car-preset-5 = Critical ζ = 1
+quarter-car-preset-6 = Overdamped ζ = 2
+
+### rlc
+
+rlc-title = Series RLC circuit
+rlc-summary = A capacitor charged to V₀ is switched into a loop with an inductor and a resistor at t = 0. Charge q obeys the same equation as a mass on a spring: L plays the mass, R the damper, 1/C the spring. With R below the critical resistance 2√(L/C) the energy sloshes between C and L and the current rings at ω_d, decaying as e^(−αt), α = R/(2L); at R = 2√(L/C) the capacitor empties fastest without reversing; above it the discharge is slower again. Q = 1/(2ζ) counts the ringing, and R/L is the half-power bandwidth of the current's resonance: driven by a sine voltage, |I|² stays above half its peak over a band exactly R/L rad/s wide, for any R. The current is negative while the capacitor discharges (i = dq/dt).
+rlc-param-R = resistance
+rlc-param-L = inductance
+rlc-param-C = capacitance
+rlc-param-V0 = initial capacitor voltage
+rlc-readout-regime = regime
+rlc-readout-w0 = resonant frequency ω₀ = 1/√(LC)
+rlc-readout-f0 = resonant frequency f₀
+rlc-readout-alpha = decay rate α = R/(2L)
+rlc-readout-zeta = damping ratio ζ
+rlc-readout-Q = quality factor Q = 1/(2ζ)
+rlc-readout-bandwidth = current-resonance half-power bandwidth Δω = R/L
+rlc-readout-R-crit = critical resistance 2√(L/C)
+rlc-readout-wd = ringing frequency ω_d
+rlc-readout-settling-time = v_C within 5 % of V₀ after
+rlc-plot-current = Current i(t)
+rlc-plot-voltage = Capacitor voltage v_C(t)
+rlc-preset-1 = Lossless LC, R = 0
+rlc-preset-2 = Ringing, R = 2 Ω
+rlc-preset-3 = Underdamped, R = 5 Ω
+rlc-preset-4 = Critical, R = 10 Ω
+rlc-preset-5 = Overdamped, R = 20 Ω
+
+### analogy
+
+analogy-title = One equation, two machines
+analogy-summary = A mass on a spring and damper and a series inductor–resistor–capacitor loop obey the same second-order equation. In the force–voltage analogy mass m ↔ inductance L, damping c ↔ resistance R, stiffness k ↔ 1/C, force F ↔ voltage E and displacement x ↔ charge q (so velocity ↔ current). Here the circuit is given the same numbers as the mechanism (L in H = m in kg, R in Ω = c in N·s/m, 1/C in 1/F = k in N/m, q₀ in C = x₀ in m), both released from rest: change any slider and both machines change together, their normalised responses stay one curve, and the energy swings between spring and mass exactly as between capacitor and inductor.
+analogy-param-m = mass (≙ inductance L)
+analogy-param-c = damping (≙ resistance R)
+analogy-param-k = spring rate (≙ 1/C)
+analogy-param-x0 = initial displacement (≙ charge q₀)
+analogy-readout-m = mass m
+analogy-readout-L = inductance L (≙ mass m)
+analogy-readout-c = damping c
+analogy-readout-R = resistance R (≙ damping c)
+analogy-readout-k = spring rate k
+analogy-readout-elastance = elastance 1/C (≙ k)
+analogy-readout-compliance = compliance 1/k (≙ C)
+analogy-readout-C = capacitance C (≙ 1/k)
+analogy-readout-x0 = initial displacement x₀
+analogy-readout-q0 = initial charge q₀ (≙ x₀)
+analogy-readout-wn = natural frequency ωₙ = √(k/m)
+analogy-readout-w0 = resonant frequency ω₀ = 1/√(LC) (≙ ωₙ)
+analogy-readout-zeta = damping ratio ζ (both)
+analogy-readout-regime = regime (both)
+analogy-readout-Q = quality factor Q (both)
+analogy-readout-energy = stored energy ½kx₀² = ½q₀²/C
+analogy-plot-responses = Normalised responses of both machines
+analogy-plot-energy = Energy exchange
+analogy-preset-1 = Frictionless spring ↔ LC tank (c = R = 0)
+analogy-preset-2 = Light damping ζ = 0.05
+analogy-preset-3 = Critical ζ = 1 (c = 2√(mk), R = 2√(L/C))
+analogy-preset-4 = Overdamped ζ = 2
+analogy-preset-5 = Heavy and soft: m = 4 kg ↔ L = 4 H, k = 25 N/m ↔ C = 40 mF
+analogy-table-caption = The force–voltage analogy: a·y″ + b·y′ + c·y = f(t) read two ways, with the values of both machines now
+analogy-table-column-1 = role in the equation
+analogy-table-column-2 = mechanical
+analogy-table-column-3 = value now
+analogy-table-column-4 = electrical
+analogy-table-column-5 = value now
+analogy-table-inertia-1 = inertia a
+analogy-table-inertia-2 = mass m [kg]
+analogy-table-inertia-4 = inductance L [H]
+analogy-table-dissipation-1 = dissipation b
+analogy-table-dissipation-2 = damping coefficient c [N·s/m]
+analogy-table-dissipation-4 = resistance R [Ω]
+analogy-table-stiffness-1 = stiffness c
+analogy-table-stiffness-2 = spring rate k [N/m]
+analogy-table-stiffness-4 = elastance 1/C [1/F]
+analogy-table-compliance-1 = compliance 1/c
+analogy-table-compliance-2 = compliance 1/k [m/N]
+analogy-table-compliance-4 = capacitance C [F]
+analogy-table-drive-1 = drive f(t)
+analogy-table-drive-2 = force F [N]
+analogy-table-drive-3 = 0: released from rest
+analogy-table-drive-4 = voltage E [V]
+analogy-table-drive-5 = 0: no source in the loop
+analogy-table-coordinate-1 = coordinate y, initially y₀
+analogy-table-coordinate-2 = displacement x, initially x₀ [m]
+analogy-table-coordinate-4 = charge q, initially q₀ [C]
+analogy-table-rate-1 = rate y′
+analogy-table-rate-2 = velocity v = ẋ [m/s]
+analogy-table-rate-3 = 0 at release
+analogy-table-rate-4 = current i = q̇ [A]
+analogy-table-rate-5 = 0 at release
+analogy-table-natural-frequency-1 = natural frequency √(c/a)
+analogy-table-natural-frequency-2 = ωₙ = √(k/m) [rad/s]
+analogy-table-natural-frequency-4 = ω₀ = 1/√(LC) [rad/s]
+analogy-table-damping-ratio-1 = damping ratio ζ = b/(2√(ac))
+analogy-table-damping-ratio-2 = ζ = c/(2√(mk))
+analogy-table-damping-ratio-4 = ζ = (R/2)·√(C/L)
+analogy-table-quality-factor-1 = quality factor Q = √(ac)/b
+analogy-table-quality-factor-2 = Q = √(mk)/c
+analogy-table-quality-factor-4 = Q = √(L/C)/R
+analogy-table-potential-energy-1 = stored by the stiffness
+analogy-table-potential-energy-2 = spring ½kx², at release ½kx₀² [J]
+analogy-table-potential-energy-4 = capacitor ½q²/C, at release ½q₀²/C [J]
+analogy-table-kinetic-energy-1 = stored by the inertia
+analogy-table-kinetic-energy-2 = mass ½mv² [J]
+analogy-table-kinetic-energy-3 = 0 at release
+analogy-table-kinetic-energy-4 = inductor ½Li² [J]
+analogy-table-kinetic-energy-5 = 0 at release
+analogy-table-power-lost-1 = dissipated power
+analogy-table-power-lost-2 = damper c·v² [W]
+analogy-table-power-lost-3 = 0 at release
+analogy-table-power-lost-4 = resistor R·i² [W]
+analogy-table-power-lost-5 = 0 at release
+
+### universality
+
+universality-title = One equation, many machines
+universality-summary = Six machines, one equation a·y″ + b·y′ + c·y = f(t). Choose a machine for A and one for B and set each by its own physical parameters: each gives its own a, b and c, in its own units, and so a natural frequency ωₙ = √(c/a) and a damping ratio ζ = b/(2√(ac)). Released from y₀ at rest, a machine's normalised response y/y₀ against ωₙt depends on ζ alone, so machines with equal ζ draw one curve. Tick “match” and B's tuning parameters are solved so that its ωₙ and ζ equal A's: then B behaves exactly like A, second by second. The two-capacity thermal system never oscillates: b² − 4ac = (τ₁ − τ₂)² + R₁C₂(2τ₁ + 2τ₂ + R₁C₂) > 0, so its ζ > 1 whatever its capacities and resistances — heat has no inertia to carry it past equilibrium.
+universality-param-A = machine A
+universality-param-A-mass-spring = mass–spring–damper
+universality-param-A-rlc = series RLC circuit
+universality-param-A-u-tube = U-tube manometer
+universality-param-A-servo = DC-motor position servo (PD control)
+universality-param-A-storey = building storey under ground motion
+universality-param-A-thermal = two-capacity thermal system
+universality-param-A-m = mass
+universality-param-A-c = damping coefficient
+universality-param-A-k = spring rate
+universality-param-A-L = inductance
+universality-param-A-R = resistance
+universality-param-A-C = capacitance
+universality-param-A-len = liquid column length
+universality-param-A-bore = tube bore
+universality-param-A-rho = liquid density
+universality-param-A-mu = dynamic viscosity
+universality-param-A-J = inertia of motor and load
+universality-param-A-Kt = motor torque constant
+universality-param-A-Ra = armature resistance
+universality-param-A-Kp = proportional gain
+universality-param-A-Kd = derivative gain
+universality-param-A-mf = floor mass
+universality-param-A-h = storey height
+universality-param-A-EI = bending stiffness of each of the 4 columns
+universality-param-A-cf = storey damping coefficient
+universality-param-A-C1 = heat capacity of body 1
+universality-param-A-R1 = thermal resistance, body 1 to surroundings
+universality-param-A-C2 = heat capacity of body 2
+universality-param-A-R2 = thermal resistance, body 2 to body 1
+universality-param-B = machine B
+universality-param-B-mass-spring = mass–spring–damper
+universality-param-B-rlc = series RLC circuit
+universality-param-B-u-tube = U-tube manometer
+universality-param-B-servo = DC-motor position servo (PD control)
+universality-param-B-storey = building storey under ground motion
+universality-param-B-thermal = two-capacity thermal system
+universality-param-B-m = mass
+universality-param-B-c = damping coefficient
+universality-param-B-k = spring rate
+universality-param-B-L = inductance
+universality-param-B-R = resistance
+universality-param-B-C = capacitance
+universality-param-B-len = liquid column length
+universality-param-B-bore = tube bore
+universality-param-B-rho = liquid density
+universality-param-B-mu = dynamic viscosity
+universality-param-B-J = inertia of motor and load
+universality-param-B-Kt = motor torque constant
+universality-param-B-Ra = armature resistance
+universality-param-B-Kp = proportional gain
+universality-param-B-Kd = derivative gain
+universality-param-B-mf = floor mass
+universality-param-B-h = storey height
+universality-param-B-EI = bending stiffness of each of the 4 columns
+universality-param-B-cf = storey damping coefficient
+universality-param-B-C1 = heat capacity of body 1
+universality-param-B-R1 = thermal resistance, body 1 to surroundings
+universality-param-B-C2 = heat capacity of body 2
+universality-param-B-R2 = thermal resistance, body 2 to body 1
+universality-param-match = match: tune B to behave like A (same ωₙ and ζ)
+universality-readout-a-A = inertia coefficient a of A
+universality-readout-b-A = damping coefficient b of A
+universality-readout-c-A = stiffness coefficient c of A
+universality-readout-wn-A = natural frequency ωₙ of A
+universality-readout-zeta-A = damping ratio ζ of A
+universality-readout-regime-A = regime of A
+universality-readout-a-B = inertia coefficient a of B
+universality-readout-b-B = damping coefficient b of B
+universality-readout-c-B = stiffness coefficient c of B
+universality-readout-wn-B = natural frequency ωₙ of B
+universality-readout-zeta-B = damping ratio ζ of B
+universality-readout-regime-B = regime of B
+universality-readout-wn-ratio = time-scale ratio ωₙ(B)/ωₙ(A)
+universality-readout-match = match
+universality-plot-normalised = Normalised responses y/y₀ against ωₙt
+universality-plot-realtime = Responses in real time
+universality-preset-1 = Mass–spring and RLC circuit, matched
+universality-preset-2 = U-tube manometer and mass–spring, matched
+universality-preset-3 = Building storey tuned like a servo
+universality-preset-4 = Thermometer (two capacities) and mass–spring, matched
+universality-preset-5 = A thermal system cannot match an oscillator
+universality-table-caption = One equation, many machines: what y, a, b and c are
+universality-table-column-1 = machine
+universality-table-column-2 = coordinate y
+universality-table-column-3 = a
+universality-table-column-4 = b
+universality-table-column-5 = c
+universality-table-column-6 = ωₙ
+universality-table-column-7 = ζ
+universality-table-mass-spring-1 = mass–spring–damper
+universality-table-mass-spring-2 = displacement x [m]
+universality-table-mass-spring-3 = mass m [kg]
+universality-table-mass-spring-4 = damping coefficient c [N·s/m]
+universality-table-mass-spring-5 = spring rate k [N/m]
+universality-table-mass-spring-6 = √(k/m)
+universality-table-mass-spring-7 = c/(2√(km))
+universality-table-rlc-1 = series RLC circuit
+universality-table-rlc-2 = charge q [C]
+universality-table-rlc-3 = inductance L [H]
+universality-table-rlc-4 = resistance R [Ω]
+universality-table-rlc-5 = 1/C [1/F]
+universality-table-rlc-6 = 1/√(LC)
+universality-table-rlc-7 = (R/2)·√(C/L)
+universality-table-u-tube-1 = U-tube manometer
+universality-table-u-tube-2 = level change h [m]
+universality-table-u-tube-3 = ρAL [kg]
+universality-table-u-tube-4 = 8πμL [N·s/m]
+universality-table-u-tube-5 = 2ρgA [N/m]
+universality-table-u-tube-6 = √(2g/L)
+universality-table-u-tube-7 = 16μ/(ρd²ωₙ)
+universality-table-servo-1 = DC-motor position servo (PD control)
+universality-table-servo-2 = angle error θ [rad]
+universality-table-servo-3 = J [kg·m²]
+universality-table-servo-4 = K_t(K_t + K_d)/R_a [N·m·s/rad]
+universality-table-servo-5 = K_t·K_p/R_a [N·m/rad]
+universality-table-servo-6 = √(K_t·K_p/(R_a·J))
+universality-table-servo-7 = ≥ K_t²/(2ωₙR_a·J), the back-EMF alone
+universality-table-storey-1 = building storey under ground motion
+universality-table-storey-2 = storey drift u [m]
+universality-table-storey-3 = floor mass m [kg]
+universality-table-storey-4 = damping coefficient c [N·s/m]
+universality-table-storey-5 = 12·4·EI/h³ [N/m]
+universality-table-storey-6 = √(48EI/(m·h³))
+universality-table-storey-7 = c/(2√(km))
+universality-table-thermal-1 = two-capacity thermal system
+universality-table-thermal-2 = temperature excess T₂ [K]
+universality-table-thermal-3 = R₁C₁R₂C₂ [s²]
+universality-table-thermal-4 = R₁C₁ + R₂C₂ + R₁C₂ [s]
+universality-table-thermal-5 = 1
+universality-table-thermal-6 = 1/√(τ₁τ₂)
+universality-table-thermal-7 = (τ₁ + τ₂ + R₁C₂)/(2√(τ₁τ₂)) > 1
+
+### resonance
+
+resonance-title = Forced resonance
+resonance-summary = A 1 kg mass on a spring (k = ωₙ²·m) and damper (c = 2ζωₙ·m), at rest, is driven from t = 0 by F(t) = F₀·cos(ωt). In the steady state it moves at the drive frequency with amplitude |H(r)|·F₀/k, lagging the force by the phase of H, where r = ω/ωₙ. Light damping gives a tall, narrow peak near r = 1 (height ≈ Q = 1/(2ζ)). Its half-power width, r₂ − r₁ between the two frequency ratios where |H| = |H|max/√2, is ≈ 2ζ for light damping; above ζ ≈ 0.383 the lower point reaches r = 0 and the width is undefined, and above ζ = 1/√2 there is no peak at all. Driven exactly at resonance, the amplitude builds up over a few time constants 1/(ζωₙ) without beating; driven near it, the free and forced motions beat against each other until the free part dies away.
+resonance-param-zeta = damping ratio
+resonance-param-r = forcing ratio ω/ωₙ
+resonance-param-wn = natural frequency
+resonance-param-F0 = force amplitude
+resonance-param-view = magnitude view
+resonance-param-view-linear = linear |H|
+resonance-param-view-db = decibels 20·log₁₀|H|
+resonance-readout-peak-gain = resonant peak |H|max
+resonance-readout-peak-ratio = peak at r = ω/ωₙ
+resonance-readout-Q = quality factor Q = 1/(2ζ)
+resonance-readout-peak-width = half-power width of the |H| peak r₂ − r₁ (ζ < 0.383)
+resonance-readout-gain-at-r = gain |H(r)| at the drive
+resonance-readout-phase-at-r = phase ∠H(r) at the drive
+resonance-readout-amplitude = steady amplitude X = |H|·F₀/k
+resonance-readout-beat-period = beat period 2π/|ω − ω_d| (while beats show)
+resonance-readout-beats = beats in x(t)
+resonance-plot-magnitude = Amplification |H(r)|
+resonance-plot-phase = Phase ∠H(r)
+resonance-plot-time = Response from rest x(t)
+resonance-preset-1 = At resonance, ζ = 0.05
+resonance-preset-2 = Beating near resonance, r = 0.9
+resonance-preset-3 = No peak, ζ ≈ 1/√2
+resonance-preset-4 = Quasi-static, r = 0.2
+resonance-preset-5 = Isolation, r = 3
+
+### integrators
+
+integrators-title = Numerical integrators and their error
+integrators-summary = The free oscillator integrated by forward Euler, symplectic Euler, Heun (RK2) and classical RK4 at a fixed step h, and by Dormand–Prince 5(4) with adaptive steps, each compared with the exact solution. A one-step method multiplies each mode by R(hλ) per step: when |R| > 1 the numbers grow no matter how well the method fits the equation, which is why forward Euler blows up a lightly damped oscillator unless h < 2ζ/ωₙ. When it is stable, halving h divides the error by 2^p, where p is the method's order: the convergence plot measures p. Switching a method off hides its curves; its readouts are still computed.
+integrators-param-zeta = damping ratio
+integrators-param-wn = natural frequency
+integrators-param-h = step size
+integrators-param-T = duration
+integrators-param-x0 = initial displacement
+integrators-param-tol = DP45 tolerance (relative; absolute tol·x₀)
+integrators-param-euler = forward Euler
+integrators-param-symplectic-euler = symplectic Euler
+integrators-param-heun = Heun (RK2)
+integrators-param-rk4 = RK4
+integrators-param-dp45 = Dormand–Prince 5(4), adaptive
+integrators-readout-h-used = step used: exactly h (a shorter last step ends the run at T)
+integrators-readout-h-last = last step, ending the run at T
+integrators-readout-max-err-euler = max error, forward Euler
+integrators-readout-max-err-symplectic-euler = max error, symplectic Euler
+integrators-readout-max-err-heun = max error, Heun
+integrators-readout-max-err-rk4 = max error, RK4
+integrators-readout-max-err-dp45 = max error, DP45
+integrators-readout-order-euler = fitted order, forward Euler
+integrators-readout-order-symplectic-euler = fitted order, symplectic Euler
+integrators-readout-order-heun = fitted order, Heun
+integrators-readout-order-rk4 = fitted order, RK4
+integrators-readout-order-dp45 = observed order, DP45 (error against f-evaluations, where the tolerance sets the steps)
+integrators-readout-stable-euler = stable at this h, forward Euler
+integrators-readout-stable-symplectic-euler = stable at this h, symplectic Euler
+integrators-readout-stable-heun = stable at this h, Heun
+integrators-readout-stable-rk4 = stable at this h, RK4
+integrators-readout-growth-euler = growth per step |R(hλ)|, forward Euler
+integrators-readout-growth-symplectic-euler = growth per step (spectral radius), symplectic Euler
+integrators-readout-growth-heun = growth per step |R(hλ)|, Heun
+integrators-readout-growth-rk4 = growth per step |R(hλ)|, RK4
+integrators-readout-steps-dp45 = DP45 accepted steps
+integrators-plot-response = Numerical solutions and the exact x(t)
+integrators-plot-error = Error over time
+integrators-plot-convergence = Convergence: max error against step h
+integrators-plot-work = Work–precision: max error against f-evaluations
+integrators-plot-stability = Stability regions and z = hλ
+integrators-preset-1 = Lightly damped, h = 0.3 s
+integrators-preset-2 = Euler just stable, h = 0.04 s
+integrators-preset-3 = RK4 beyond its limit, h = 1.6 s
+integrators-preset-4 = Undamped, h = 0.1 s
+integrators-preset-5 = Stiff overdamped ζ = 2, ωₙ = 20
+integrators-table-caption = The methods
+integrators-table-column-1 = method
+integrators-table-column-2 = order p
+integrators-table-column-3 = f-evaluations per step
+integrators-table-column-4 = amplification R(z)
+integrators-table-column-5 = on an undamped oscillator
+integrators-table-euler-1 = forward Euler
+integrators-table-euler-2 = 1
+integrators-table-euler-3 = 1
+integrators-table-euler-4 = 1 + z
+integrators-table-euler-5 = always grows: |R(iωh)| = √(1 + ω²h²) > 1
+integrators-table-symplectic-euler-1 = symplectic Euler
+integrators-table-symplectic-euler-2 = 1
+integrators-table-symplectic-euler-3 = 2
+integrators-table-symplectic-euler-4 = 2×2 matrix, not a scalar R
+integrators-table-symplectic-euler-5 = bounded energy error while ωh ≤ 2
+integrators-table-heun-1 = Heun (RK2)
+integrators-table-heun-2 = 2
+integrators-table-heun-3 = 2
+integrators-table-heun-4 = 1 + z + z²/2
+integrators-table-heun-5 = slowly grows: |R(iy)|² = 1 + y⁴/4
+integrators-table-rk4-1 = classical RK4
+integrators-table-rk4-2 = 4
+integrators-table-rk4-3 = 4
+integrators-table-rk4-4 = 1 + z + z²/2 + z³/6 + z⁴/24
+integrators-table-rk4-5 = slightly damps while ωh ≤ 2√2
+integrators-table-dp45-1 = Dormand–Prince 5(4)
+integrators-table-dp45-2 = 5
+integrators-table-dp45-3 = 6 (first same as last)
+integrators-table-dp45-4 = adaptive: h follows the error estimate
+integrators-table-dp45-5 = stable: rejected steps shrink h
+
+### flutter
+
+flutter-title = Flutter: the Tacoma Narrows bridge
+flutter-summary = A steady wind can feed a twisting bridge deck energy through its own motion. Scanlan wrote the wind's moment on a twisting deck with flutter derivatives measured in wind tunnels: A₂* multiplies the twist rate (a damping term) and A₃* the twist (a stiffness term), both functions of the reduced frequency K = Bω/U. The deck's damping ratio becomes ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I): for the bluff H-section of the 1940 Tacoma deck A₂* changes sign as the wind rises, and once it passes the threshold 4Iζ_s/(ρB⁴) any small twist grows at the deck's own torsional frequency (near 0.2 Hz) — flutter, not resonance: a steady wind has no frequency to match, the motion makes its own forcing. The frequency is found by iteration at each wind speed, since K depends on it. Linear theory lets the twist grow for ever; here the wind's damping term is assumed to halve at a twist θ_s, which bounds the motion in a large limit cycle, as on 7 November 1940, when in winds of about 42 mph the twist grew within the hour until the deck tore apart. Teaching approximations, stated as such: A₂* and A₃* are smooth curves shaped like the published H-section and airfoil-like results (Scanlan & Tomko 1971; Billah & Scanlan 1991), not values read from them; I, ζ_s and θ_s are assumed. A streamlined box, whose A₂* stays negative, never flutters in this range. The simplest picture ζ_eff = ζ_s − g·U is kept for comparison.
+flutter-param-U = wind speed
+flutter-param-model = model of the wind's moment
+flutter-param-model-scanlan = flutter derivatives (Scanlan)
+flutter-param-model-linear = simplest picture: ζ_eff = ζ_s − g·U
+flutter-param-section = deck cross-section
+flutter-param-section-h = 1940 H-section (plate girders)
+flutter-param-section-box = streamlined box girder
+flutter-param-B = deck width
+flutter-param-I = mass moment of inertia per length (assumed for 1940)
+flutter-param-f0 = torsional frequency in still air
+flutter-param-zeta-s = structural damping ratio (assumed for 1940)
+flutter-param-theta0 = initial twist
+flutter-param-theta-s = twist at which the wind's damping halves (teaching assumption)
+flutter-param-slope = simplest picture: damping lost per m/s
+flutter-readout-regime = regime of a small twist
+flutter-readout-U-crit = critical (flutter) speed U_crit, searched up to 100 m/s
+flutter-readout-zeta-eff = effective damping ratio ζ_eff of a small twist
+flutter-readout-growth-rate = growth rate σ of a small twist (< 0 decays)
+flutter-readout-doubling-time = a small twist doubles every
+flutter-readout-frequency = torsional frequency in the wind f
+flutter-readout-K = reduced frequency K = Bω/U
+flutter-readout-reduced-velocity = reduced velocity U/(f·B) = 2π/K
+flutter-readout-A2 = flutter derivative A₂*(K)
+flutter-readout-A3 = flutter derivative A₃*(K)
+flutter-readout-limit-deg = limit-cycle twist amplitude (with the assumed bound θ_s)
+flutter-readout-time-to-large = time from θ₀ to 90 % of the limit cycle
+flutter-readout-amplitude-end-deg = twist amplitude at the end of the plot
+flutter-plot-derivative = Flutter derivative A₂* and the flutter threshold
+flutter-plot-damping = Effective damping against wind speed
+flutter-plot-locus = Root locus as the wind rises
+flutter-plot-response = Deck twist θ(t) over minutes
+flutter-preset-1 = Tacoma 1940, 10 m/s (stable)
+flutter-preset-2 = Tacoma 1940, 19 m/s (failure day, ≈ 42 mph)
+flutter-preset-3 = Tacoma 1940, 30 m/s gale
+flutter-preset-4 = Streamlined box deck, 19 m/s
+flutter-preset-5 = Streamlined box deck, 40 m/s
+flutter-preset-6 = Simplest picture, 19 m/s (ζ_eff = ζ_s − g·U)
+flutter-table-caption = Flutter is not resonance
+flutter-table-column-1 = case
+flutter-table-column-2 = what drives it
+flutter-table-column-3 = frequency
+flutter-table-column-4 = damping
+flutter-table-column-5 = amplitude
+flutter-table-column-6 = cure
+flutter-table-resonance-1 = Forced resonance (for contrast)
+flutter-table-resonance-2 = an outside force oscillating near ωₙ (marching feet, an engine)
+flutter-table-resonance-3 = set by the force; must match ωₙ
+flutter-table-resonance-4 = positive: limits the peak to about 1/(2ζ) × static
+flutter-table-resonance-5 = bounded steady state
+flutter-table-resonance-6 = detune, or add damping
+flutter-table-underdamped-1 = Wind below U_crit
+flutter-table-underdamped-2 = steady wind; moment ∝ twist rate (A₂*) and twist (A₃*)
+flutter-table-underdamped-3 = the deck's own, shifted a little by A₃*
+flutter-table-underdamped-4 = ζ_eff > 0: A₂* below the threshold 4Iζ_s/(ρB⁴)
+flutter-table-underdamped-5 = a twist dies away
+flutter-table-underdamped-6 = —
+flutter-table-undamped-1 = At U_crit
+flutter-table-undamped-2 = steady wind; moment ∝ twist rate (A₂*) and twist (A₃*)
+flutter-table-undamped-3 = the deck's own
+flutter-table-undamped-4 = ζ_eff = 0: poles on the imaginary axis
+flutter-table-undamped-5 = a twist persists unchanged
+flutter-table-undamped-6 = —
+flutter-table-negatively-damped-1 = Flutter, wind above U_crit
+flutter-table-negatively-damped-2 = steady wind; the motion makes its own forcing
+flutter-table-negatively-damped-3 = the deck's own, no matching needed
+flutter-table-negatively-damped-4 = ζ_eff < 0: energy flows in every cycle
+flutter-table-negatively-damped-5 = grows until the amplitude bound (or the deck) gives
+flutter-table-negatively-damped-6 = a section whose A₂* stays negative: streamlined, open or stiffened deck
+
+### nonlinear
+
+nonlinear-title = Beyond the linear model
+nonlinear-summary = A real suspension is only linear for small motions. Here the quarter car gets a cubic spring (k₃ > 0 hardening, k₃ < 0 softening), a damper that is stiffer in rebound (x′ > 0) than in compression, Coulomb friction in the joints and rubber bump stops beyond ±gap. Friction sticks and slips: while the mass slides it drags with the force F_c; once it stops, static friction holds it up to F_static, a set multiple of F_c, and it moves again only if the spring pulls harder. The motion is integrated with RK4, every stop located within its step, and drawn against the linear model m·x″ + c̄·x′ + k·x = 0 (c̄ the mean damper rate) from the same start. Watch where the prediction fails: the period depends on the amplitude (hardening shortens it, softening lengthens it), friction makes the amplitude fall in a straight line and then holds the mass off-centre for good (stick–slip), a bump stop turns a smooth swing into an impact, and an asymmetric damper shifts the mean position. The defaults are a plausible car corner: 300 kg, 24 kN/m (1.4 Hz), a 1 500 N·s/m damper (ζ ≈ 0.28) and a mildly progressive spring. x is the suspension extension from static equilibrium (positive = body up).
+nonlinear-param-m = sprung mass
+nonlinear-param-k = linear spring rate
+nonlinear-param-k3 = cubic spring coefficient (+ hardening, − softening)
+nonlinear-param-c-comp = damper rate in compression
+nonlinear-param-c-reb = damper rate in rebound
+nonlinear-param-friction = Coulomb friction force while sliding
+nonlinear-param-stick-ratio = static-to-sliding friction ratio
+nonlinear-param-gap = bump-stop clearance
+nonlinear-param-k-stop = bump-stop rate (0 = no stops)
+nonlinear-param-x0 = initial extension
+nonlinear-param-v0 = initial velocity
+nonlinear-readout-effect = dominant nonlinearity
+nonlinear-readout-period-ratio = first-swing period ratio T_nonlinear / T_linear
+nonlinear-readout-max-deviation = largest |x_nonlinear − x_linear|
+nonlinear-readout-period-nonlinear = nonlinear period of the first full swing (three zero crossings)
+nonlinear-readout-period-linear = linear period of the first full swing (= 2π/ω_d)
+nonlinear-readout-max-travel = largest |x| (nonlinear)
+nonlinear-readout-stick-position = friction holds the mass at
+nonlinear-plot-response = Nonlinear and linear response x(t)
+nonlinear-plot-phase = Phase plane (x, v)
+nonlinear-plot-spring = Spring and bump-stop force
+nonlinear-plot-damper = Damper and friction force
+nonlinear-preset-1 = Linear (all off)
+nonlinear-preset-2 = Hardening spring
+nonlinear-preset-3 = Softening spring
+nonlinear-preset-4 = Friction stick–slip
+nonlinear-preset-5 = Bump-stop impact
+nonlinear-preset-6 = Asymmetric damper
+nonlinear-table-caption = Where the linear model fails
+nonlinear-table-column-1 = nonlinearity
+nonlinear-table-column-2 = force law
+nonlinear-table-column-3 = what the linear model misses
+nonlinear-table-column-4 = signature in the plots
+nonlinear-table-linear-1 = None (linear)
+nonlinear-table-linear-2 = k·x + c·x′
+nonlinear-table-linear-3 = nothing: the model is exact
+nonlinear-table-linear-4 = the two curves coincide
+nonlinear-table-hardening-spring-1 = Hardening spring
+nonlinear-table-hardening-spring-2 = k·x + k₃·x³, k₃ > 0
+nonlinear-table-hardening-spring-3 = frequency rises with amplitude
+nonlinear-table-hardening-spring-4 = shorter period while the swing is large; the curves drift apart
+nonlinear-table-softening-spring-1 = Softening spring
+nonlinear-table-softening-spring-2 = k·x + k₃·x³, k₃ < 0
+nonlinear-table-softening-spring-3 = frequency falls with amplitude; past √(−k/k₃) the spring gives way
+nonlinear-table-softening-spring-4 = longer period; a large start can escape
+nonlinear-table-stick-slip-1 = Coulomb friction
+nonlinear-table-stick-slip-2 = F_c·sgn(x′) sliding; up to F_static at rest
+nonlinear-table-stick-slip-3 = amplitude falls by about 4F_c/k per cycle, in a straight line, then the mass sticks for good where |k·x| ≤ F_static
+nonlinear-table-stick-slip-4 = straight-line envelope; a flat end off zero
+nonlinear-table-bump-stop-impact-1 = Bump stops
+nonlinear-table-bump-stop-impact-2 = k_stop·(|x| − gap) beyond ±gap
+nonlinear-table-bump-stop-impact-3 = a sudden stiff contact: large force, fast reversal
+nonlinear-table-bump-stop-impact-4 = clipped peaks at ±gap; kinks in the phase loop
+nonlinear-table-asymmetric-damper-1 = Asymmetric damper
+nonlinear-table-asymmetric-damper-2 = c_r·x′ in rebound, c_c·x′ in compression
+nonlinear-table-asymmetric-damper-3 = a mean shift (jacking) and unequal half-cycles
+nonlinear-table-asymmetric-damper-4 = lopsided decay; the phase spiral is off-centre
+nonlinear-table-several-at-once-1 = Several at once
+nonlinear-table-several-at-once-2 = sum of the above
+nonlinear-table-several-at-once-3 = their effects add and interact
+nonlinear-table-several-at-once-4 = see each row
+nonlinear-table-escaped-1 = Softening spring past its limit
+nonlinear-table-escaped-2 = k·x + k₃·x³ < 0 for |x| > √(−k/k₃)
+nonlinear-table-escaped-3 = the model stops describing a suspension
+nonlinear-table-escaped-4 = the run is cut where |x| exceeds 1 m
+
+### quarter-car-2dof
+
+quarter-car-2dof-title = Quarter car with body and wheel
+quarter-car-2dof-summary = Two masses, two modes. The body (sprung mass m_s) sits on the suspension spring k_s and damper c_s; the wheel (unsprung mass m_u) sits on the tyre spring k_t, which follows the road u(t). Body bounce, around 1–1.5 Hz, is the body moving on the soft suspension; wheel hop, around 10–15 Hz, is the light wheel bouncing between the stiff tyre and the suspension. The frequency responses show both: the body follows slow road waves, rides over fast ones, and shakes most near body bounce; the tyre deflection, which decides grip, peaks at wheel hop. The tyre can only push: when the wheel rises above its static deflection the tyre force is zero and the wheel leaves the road until it lands again. Comfort is judged by the RMS body acceleration, road holding by the RMS tyre deflection, both over the run from rest, 0 … T. The response is exact between road samples, which are close enough to follow every bump and wheel hop. Displacements are from static equilibrium, upward positive; the random road sums 64 sinusoids with the ISO 8608 spectrum over 0.5–20 Hz. On it the page also shows the stationary RMS body acceleration on the full ISO 8608 road, unweighted and weighted by ISO 2631-1's W_k (a_w, the comfort measure), from the Lyapunov equation of the car.
+quarter-car-2dof-param-ms = body (sprung) mass
+quarter-car-2dof-param-mu = wheel (unsprung) mass
+quarter-car-2dof-param-ks = suspension stiffness
+quarter-car-2dof-param-kt = tyre stiffness
+quarter-car-2dof-param-cs = suspension damping
+quarter-car-2dof-param-road = road input
+quarter-car-2dof-param-road-bump = single bump (1 − cos)
+quarter-car-2dof-param-road-step = step (kerb)
+quarter-car-2dof-param-road-sine = sinusoid
+quarter-car-2dof-param-road-random = random road (ISO 8608)
+quarter-car-2dof-param-h = bump or step height, sine amplitude
+quarter-car-2dof-param-L = bump length
+quarter-car-2dof-param-V = speed
+quarter-car-2dof-param-f-road = sine road frequency
+quarter-car-2dof-param-class = random road class
+quarter-car-2dof-param-class-A = A (very good)
+quarter-car-2dof-param-class-B = B (good)
+quarter-car-2dof-param-class-C = C (average)
+quarter-car-2dof-param-class-D = D (poor)
+quarter-car-2dof-param-class-E = E (very poor)
+quarter-car-2dof-param-class-F = F
+quarter-car-2dof-param-class-G = G
+quarter-car-2dof-param-class-H = H
+quarter-car-2dof-param-seed = random road seed
+quarter-car-2dof-readout-f-body = body bounce frequency [Hz]
+quarter-car-2dof-readout-f-wheel = wheel hop frequency [Hz]
+quarter-car-2dof-readout-window = RMS window: the run from rest, 0 … T
+quarter-car-2dof-readout-rms-body-accel = RMS body acceleration over 0 … T (comfort)
+quarter-car-2dof-readout-rms-tyre-deflection = RMS tyre deflection z_u − u over 0 … T (road holding)
+quarter-car-2dof-readout-max-travel = largest suspension travel |z_s − z_u|
+quarter-car-2dof-readout-static-tyre-deflection = static tyre deflection (the wheel lifts off beyond it)
+quarter-car-2dof-readout-lift-off = first lift-off: the tyre force reaches zero
+quarter-car-2dof-readout-airborne-time = time the wheel is off the road
+quarter-car-2dof-readout-rms-road = RMS road height (random road)
+quarter-car-2dof-readout-stationary-accel = stationary RMS body acceleration, full ISO 8608 road (random road)
+quarter-car-2dof-readout-stationary-weighted-accel = stationary a_w: RMS body acceleration weighted by ISO 2631-1 W_k (random road)
+quarter-car-2dof-readout-body-gain = body / road amplitude at the sine frequency
+quarter-car-2dof-readout-tyre-gain = tyre deflection / road amplitude at the sine frequency
+quarter-car-2dof-plot-motion = Body, wheel and road
+quarter-car-2dof-plot-accel = Body acceleration
+quarter-car-2dof-plot-frf = Frequency response per unit road height
+quarter-car-2dof-plot-tyre = Tyre deflection
+quarter-car-2dof-preset-1 = Speed bump 5 cm at 10 m/s
+quarter-car-2dof-preset-2 = Kerb step 5 cm
+quarter-car-2dof-preset-3 = Road wave at body bounce
+quarter-car-2dof-preset-4 = Road wave at wheel hop
+quarter-car-2dof-preset-5 = Random road, class C, 20 m/s
+quarter-car-2dof-preset-6 = Soft damper on a poor road
+
+### design
+
+design-title = Design space (k, c)
+design-summary = Every cell of the map is one quarter car (sprung mass m on spring k and damper c), coloured by the chosen metric: settling time and peak rebound of the free response released from rest at x₀ = 60 mm (not a step response: the band and the rebound are relative to x₀), RMS body acceleration on a random ISO 8608 road at 72 km/h (the tyre filters the input above 10 Hz), or peak transmissibility. Dashed lines join designs of equal damping ratio ζ = c/(2√(km)). The Pareto front holds the designs no other beats in both comfort and settling. Click the map (or a point of the front) to choose a design; move the mass to see the whole map shift.
+design-param-m = sprung mass
+design-param-metric = map metric
+design-param-metric-settling-time = settling time (free response)
+design-param-metric-peak-rebound = peak rebound (free response)
+design-param-metric-accel-rms = RMS body acceleration (comfort)
+design-param-metric-peak-transmissibility = peak transmissibility |X/U|
+design-param-band = settling band, ± % of x₀ (free response)
+design-param-road = road (ISO 8608)
+design-param-road-a = class A (very good)
+design-param-road-b = class B (good)
+design-param-road-c = class C (average)
+design-param-road-d = class D (poor)
+design-param-k-min = map: lowest spring rate
+design-param-k-max = map: highest spring rate
+design-param-c-min = map: lowest damper rate
+design-param-c-max = map: highest damper rate
+design-param-k = selected spring rate
+design-param-c = selected damper rate
+design-param-n = grid cells per axis
+design-readout-k = selected spring rate k
+design-readout-c = selected damper rate c
+design-readout-zeta = damping ratio ζ
+design-readout-settling-time = settling time into the ± band of x₀ (free response)
+design-readout-overshoot = peak rebound, % of x₀ (free response)
+design-readout-accel-rms = RMS body acceleration
+design-readout-grid-size = grid size (cells)
+design-readout-compute-time = sweep compute time
+design-plot-map = Metric over (k, c) with iso-ζ lines
+design-plot-pareto = Comfort vs settling: Pareto front
+design-plot-response = Selected design: free response x(t)
+design-preset-1 = Settling-time map, 300 kg, ζ ≈ 0.37
+design-preset-2 = Laden car 500 kg, same parts
+design-preset-3 = Comfort map on a class C road
+design-preset-4 = Peak-rebound map, ζ = 0.7 design
+design-preset-5 = Fine grid 160 × 160
+
+### uncertainty
+
+uncertainty-title = Tolerance analysis
+uncertainty-summary = Real parts are not their nominal values. Choose the system: the quarter car (sprung mass m, spring k and the damper set for ζ at nominal mass; the mass varies by ±dm as the car is loaded) or the series RLC loop (R, L and C each within ±dR, ±dL, ±dC). Only the chosen system's sliders are used; the other group is ignored. The exact ranges of ζ, ωₙ and Q come from the corners of the tolerance box. The Monte Carlo run draws N designs (seeded, so the same seed gives the same result): uniform within the tolerance, or normal with the tolerance as 3σ. The yield is the share of draws with ζ inside the spec window and a 5 % settling time (release from rest) no longer than the limit.
+uncertainty-param-system = system
+uncertainty-param-system-suspension = quarter-car suspension
+uncertainty-param-system-rlc = series RLC
+uncertainty-param-m = suspension: sprung mass
+uncertainty-param-k = suspension: spring rate
+uncertainty-param-zeta = suspension: design ζ at nominal mass
+uncertainty-param-dm = suspension: mass tolerance ±
+uncertainty-param-R = RLC: resistance
+uncertainty-param-L = RLC: inductance
+uncertainty-param-C = RLC: capacitance
+uncertainty-param-dR = RLC: resistor tolerance ±
+uncertainty-param-dL = RLC: inductor tolerance ±
+uncertainty-param-dC = RLC: capacitor tolerance ±
+uncertainty-param-dist = distribution of parts
+uncertainty-param-dist-uniform = uniform within ±tolerance
+uncertainty-param-dist-normal = normal, tolerance = 3σ
+uncertainty-param-N = Monte Carlo draws
+uncertainty-param-seed = random seed
+uncertainty-param-zeta-lo = spec: lowest ζ
+uncertainty-param-zeta-hi = spec: highest ζ
+uncertainty-param-ts-max = spec: longest settling time
+uncertainty-param-hist = second histogram
+uncertainty-param-hist-zeta = damping ratio ζ
+uncertainty-param-hist-f0 = natural frequency f0
+uncertainty-param-hist-q = quality factor Q
+uncertainty-param-hist-bandwidth = bandwidth
+uncertainty-param-hist-settling-time = settling time
+uncertainty-readout-zeta-min = ζ, lowest (exact)
+uncertainty-readout-zeta-max = ζ, highest (exact)
+uncertainty-readout-wn-min = ωₙ, lowest (exact)
+uncertainty-readout-wn-max = ωₙ, highest (exact)
+uncertainty-readout-Q-min = Q, lowest (exact)
+uncertainty-readout-Q-max = Q, highest (exact)
+uncertainty-readout-yield = yield (meets spec)
+uncertainty-readout-zeta-p5 = ζ, 5th percentile
+uncertainty-readout-zeta-p95 = ζ, 95th percentile
+uncertainty-readout-Q-p5 = Q, 5th percentile
+uncertainty-readout-Q-p95 = Q, 95th percentile
+uncertainty-readout-draws = draws
+uncertainty-readout-compute-time = Monte Carlo compute time
+uncertainty-plot-band = Band of free responses over the tolerance
+uncertainty-plot-zeta-hist = Monte Carlo: damping ratio ζ
+uncertainty-plot-hist = Monte Carlo: chosen quantity
+uncertainty-preset-1 = ζ = 1 design under ±10 % mass
+uncertainty-preset-2 = ζ = 0.7 design under ±10 % mass
+uncertainty-preset-3 = RLC 5 % parts
+uncertainty-preset-4 = RLC 20 % parts
+
+### paper
+
+paper-title = The paper, checked
+paper-summary = Zeta Lab was built from one paper on second-order differential equations in mechanical and electrical systems (Ihenacho, Samuel, Okechukwu et al., Science Publishing Group, 2026). Here is every figure and table of it, drawn live by the demo that reproduces it, and every number it states, checked: each claim shows the paper's value, the value the app computes, and a verdict. Follow a link to open the demo in exactly that state.
+paper-readout-claims = claims checked
+paper-readout-confirmed = claims confirmed
+paper-readout-differs = claims that differ
+paper-plot-fig1a = Figure 1(a)
+paper-plot-fig1b = Figure 1(b)
+paper-plot-fig2a = Figure 2(a)
+paper-plot-fig2b = Figure 2(b)
+paper-plot-fig3a = Figure 3(a)
+paper-plot-fig3b = Figure 3(b)
+paper-plot-fig4a = Figure 4(a)
+paper-plot-fig4b = Figure 4(b)
+paper-plot-fig5 = Figure 5
+paper-plot-table1 = Table 1
+paper-plot-table2 = Table 2
+paper-plot-table3 = Table 3

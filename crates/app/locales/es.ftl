@@ -1,0 +1,852 @@
+# Zeta Lab — español. Ids and variables as in en.ftl.
+
+## La página
+
+page-skip = Ir a la demostración
+page-demo = Demostración
+page-share = Compartir / Insertar
+page-loading = Cargando el resolvedor…
+page-footer = Zeta Lab — cada número de esta página se calcula en Rust (compilado a WebAssembly) con soluciones analíticas.
+page-parameters = Parámetros
+page-readouts = Resultados
+page-about = Acerca de esta demostración
+page-plot-in-view = Gráfica a la vista
+page-presets = Ajustes predefinidos
+page-reset = Restablecer valores
+page-exact-value = valor exacto
+page-export-group = Exportar { $plot }
+page-download = Descargar { $plot } como { $format }
+page-play = Reproducir
+page-pause = Pausa
+page-sound-on = Sonido sí
+page-sound-off = Sonido no
+page-sound-hint = Escuchar x(t): el tono sigue al desplazamiento
+page-anim-time = Tiempo de la animación
+page-time-words = tiempo { $t } segundos
+page-schematic = Esquema animado
+page-dismiss = Cerrar aviso
+page-failed = Algo salió mal y la demostración se reinició: { $text }
+page-no-demo = No hay ninguna demostración llamada «{ $id }»; se muestra { $fallback }.
+page-no-wasm = No se pudo cargar el resolvedor ({ $text }). Esta página necesita WebAssembly.
+page-copy = Copiar
+page-equation = Ecuación
+page-tour-head = El artículo, figura por figura
+page-tour-open = Abrir este estado en la demostración
+page-tour-paper = El artículo dice
+page-tour-app = La aplicación calcula
+page-tour-confirmed = Confirmado.
+page-tour-differs = Difiere.
+page-copied = Copiado
+page-copy-manual = Seleccione y copie (Ctrl+C)
+page-share-title = Compartir o insertar «{ $title }»
+page-embed-view = {" "}Vista insertada (sin cabecera)
+page-autoplay = {" "}Iniciar la animación
+page-theme = Tema{" "}
+page-width = {" "}Ancho{" "}
+page-height = {" "}Alto{" "}
+page-sliders-shown = Deslizadores visibles
+page-sliders-locked = Deslizadores bloqueados
+page-plots-shown = Gráficas visibles
+page-link = Enlace
+page-embed-code = Código para insertar
+page-preview = Vista previa de la demostración insertada
+page-close = Cerrar
+
+## Gráficas
+
+plot-clipped = recortado: algunos valores quedan fuera de los ejes
+
+## Palabras compartidas: ejes, regímenes
+
+axis-time = tiempo t
+axis-displacement = desplazamiento x
+axis-extension = extensión x
+axis-force = fuerza F
+axis-velocity = velocidad v
+axis-real-part = parte real Re s
+axis-imaginary-part = parte imaginaria Im s
+regime-undamped = no amortiguado
+regime-underdamped = subamortiguado
+regime-critically-damped = amortiguamiento crítico
+regime-overdamped = sobreamortiguado
+regime-negatively-damped = amortiguamiento negativo
+regime-neutral = neutro
+regime-divergent = divergente
+
+## Demostraciones
+
+### regimes
+
+regimes-envelope = envolvente ±A·e^(−ζωₙt)
+regimes-series-response = x(t), { $regime }
+regimes-describe-settles = { $regime }: { $swings ->
+        [0] no pasa por el equilibrio antes de establecerse
+        [one] pasa por el equilibrio una vez antes de establecerse
+       *[other] pasa por el equilibrio { $swings } veces antes de establecerse
+    }, queda dentro del 5 % del reposo tras { $time }, rebote máximo { $rebound }.
+regimes-describe-unsettled = { $regime }: { $swings ->
+        [0] no pasa por el equilibrio antes de establecerse
+        [one] pasa por el equilibrio una vez antes de establecerse
+       *[other] pasa por el equilibrio { $swings } veces antes de establecerse
+    }, no se establece, rebote máximo { $rebound }.
+regimes-describe-undamped = no amortiguado: oscila indefinidamente con amplitud { $amplitude } a { $frequency }.
+regimes-describe-growing = amortiguamiento negativo: la respuesta crece sin límite, un factor e cada { $time }.
+regimes-describe-at-rest = { $regime }: parte del reposo en el equilibrio.
+regimes-poles = Polos en { $re1 } { $sign1 } { $im1 }i y { $re2 } { $sign2 } { $im2 }i 1/s, en el semiplano { $side ->
+        [right] derecho (inestable)
+       *[left] izquierdo (estable)
+    }.
+regimes-schematic = Masa sobre resorte y amortiguador en t = { $time }: desplazada { $displacement } del reposo.
+
+## Declared strings (generated from the demo declarations)
+
+### regimes
+
+regimes-title = Regímenes de amortiguamiento
+regimes-summary = Respuesta libre desde x(0) = x₀, x′(0) = v₀. El coeficiente de amortiguamiento ζ decide el régimen: ζ = 0 no amortiguado, 0 < ζ < 1 subamortiguado, ζ = 1 amortiguamiento crítico, ζ > 1 sobreamortiguado, ζ < 0 amortiguamiento negativo (la respuesta crece). Los polos s = −ζωₙ ± ωₙ√(ζ² − 1) recorren un círculo de radio ωₙ, llegan al eje real en ζ = 1 y cruzan el eje imaginario en ζ = 0.
+regimes-param-wn = frecuencia natural
+regimes-param-zeta = coeficiente de amortiguamiento
+regimes-param-x0 = desplazamiento inicial
+regimes-param-v0 = velocidad inicial
+regimes-readout-regime = régimen
+regimes-readout-wn = frecuencia natural ωₙ
+regimes-readout-zeta = coeficiente de amortiguamiento ζ
+regimes-readout-wd = frecuencia amortiguada ω_d
+regimes-readout-pole-re = parte real del polo
+regimes-readout-pole-im = parte imaginaria del polo
+regimes-plot-response = Respuesta libre x(t)
+regimes-plot-poles = Polos en el plano s
+regimes-preset-1 = No amortiguado ζ = 0
+regimes-preset-2 = Subamortiguado ζ = 0,2
+regimes-preset-3 = Amortiguamiento crítico ζ = 1
+regimes-preset-4 = Sobreamortiguado ζ = 2
+regimes-preset-5 = Amortiguamiento negativo ζ = −0,1
+regimes-table-caption = Los regímenes de amortiguamiento
+regimes-table-column-1 = régimen
+regimes-table-column-2 = condición
+regimes-table-column-3 = raíces s₁, s₂
+regimes-table-column-4 = comportamiento
+regimes-table-column-5 = ejemplos de ingeniería
+regimes-table-undamped-1 = No amortiguado
+regimes-table-undamped-2 = ζ = 0
+regimes-table-undamped-3 = ±iωₙ, sobre el eje imaginario
+regimes-table-undamped-4 = oscila indefinidamente a ωₙ
+regimes-table-undamped-5 = péndulo ideal, circuito tanque LC
+regimes-table-underdamped-1 = Subamortiguado
+regimes-table-underdamped-2 = 0 < ζ < 1
+regimes-table-underdamped-3 = −ζωₙ ± iω_d, par complejo
+regimes-table-underdamped-4 = oscilación decreciente a ω_d
+regimes-table-underdamped-5 = suspensión de automóvil (ζ ≈ 0,2–0,7), cuerda de guitarra
+regimes-table-critically-damped-1 = Amortiguamiento crítico
+regimes-table-critically-damped-2 = ζ = 1
+regimes-table-critically-damped-3 = −ωₙ, raíz real doble
+regimes-table-critically-damped-4 = retorno más rápido sin oscilar
+regimes-table-critically-damped-5 = cierrapuertas, aguja de un instrumento analógico
+regimes-table-overdamped-1 = Sobreamortiguado
+regimes-table-overdamped-2 = ζ > 1
+regimes-table-overdamped-3 = dos raíces reales negativas
+regimes-table-overdamped-4 = retorno lento, sin oscilación
+regimes-table-overdamped-5 = amortiguador hidráulico pesado, termómetro
+regimes-table-negatively-damped-1 = Amortiguamiento negativo
+regimes-table-negatively-damped-2 = ζ < 0
+regimes-table-negatively-damped-3 = semiplano derecho
+regimes-table-negatively-damped-4 = oscilación creciente
+regimes-table-negatively-damped-5 = flameo (Tacoma Narrows), frenos que chirrían
+
+### quarter-car
+
+quarter-car-title = Suspensión de cuarto de vehículo
+quarter-car-summary = Una esquina de un vehículo: la carrocería (masa suspendida m) sobre un resorte k y un amortiguador c encima de una carretera fija, desplazada x₀ y soltada desde el reposo (x′(0) = 0). c y ζ son dos caras del mismo amortiguador, c = 2ζ√(km): al mover uno, el otro lo sigue; cambiar m o k conserva el amortiguador, así que ζ cambia. Las curvas finas muestran los ajustes de manual en este vehículo: confort (ζ ≈ 0,3–0,4) rebota, deportivo (ζ ≈ 0,65–0,7) es el que antes se establece, y los ajustes crítico (ζ = 1) y sobreamortiguado vuelven sin rebote, pero más despacio. El tiempo de establecimiento salta cuando ζ pasa por los valores en los que un rebote queda dentro de la banda: el ζ más rápido está justo después de uno de esos saltos, así que una carga mayor puede desajustar un vehículo bien ajustado (vea la gráfica de la masa). El establecimiento se mide sobre esta respuesta libre: el tiempo de establecimiento es el último instante en que |x| vale banda·|x₀|; a partir de él la carrocería queda dentro de ±banda·|x₀| alrededor del reposo (no de la banda alrededor del valor final de una respuesta al escalón).
+quarter-car-param-m = masa suspendida
+quarter-car-param-k = rigidez del resorte
+quarter-car-param-c = constante del amortiguador
+quarter-car-param-zeta = coeficiente de amortiguamiento
+quarter-car-param-x0 = desplazamiento inicial
+quarter-car-param-band = banda de establecimiento alrededor del reposo, relativa a x₀
+quarter-car-param-dm = variación de la masa suspendida
+quarter-car-readout-regime = régimen
+quarter-car-readout-wn = frecuencia natural ωₙ
+quarter-car-readout-fn = frecuencia natural fₙ
+quarter-car-readout-zeta = coeficiente de amortiguamiento ζ
+quarter-car-readout-c = constante del amortiguador c en uso
+quarter-car-readout-c-crit = amortiguamiento crítico 2√(km)
+quarter-car-readout-wd = frecuencia amortiguada ω_d
+quarter-car-readout-settling-time = tiempo de establecimiento t_s en ±banda·|x₀| (respuesta libre)
+quarter-car-readout-overshoot = rebote máximo (respecto de x₀)
+quarter-car-readout-peak-time = instante del rebote máximo
+quarter-car-readout-zeta-argmin = ζ de establecimiento más rápido (respuesta libre, misma banda)
+quarter-car-readout-settling-min = su tiempo de establecimiento
+quarter-car-readout-zeta-lo = ζ con masa +dm %
+quarter-car-readout-zeta-hi = ζ con masa −dm %
+quarter-car-plot-response = Desplazamiento de la carrocería x(t)
+quarter-car-plot-settling = Tiempo de establecimiento de la respuesta libre frente a ζ
+quarter-car-plot-sensitivity = ζ al variar la masa suspendida
+quarter-car-preset-1 = Confort ζ = 0,3
+quarter-car-preset-2 = Confort ζ = 0,4
+quarter-car-preset-3 = Deportivo ζ = 0,65
+quarter-car-preset-4 = Deportivo ζ = 0,7
+quarter-car-preset-5 = Crítico ζ = 1
+quarter-car-preset-6 = Sobreamortiguado ζ = 2
+
+### rlc
+
+rlc-title = Circuito RLC serie
+rlc-summary = Un condensador cargado a V₀ se conecta en t = 0 a un circuito con una bobina y una resistencia. La carga q obedece la misma ecuación que una masa sobre un resorte: L hace de masa, R de amortiguador y 1/C de resorte. Con R por debajo de la resistencia crítica 2√(L/C), la energía va y viene entre C y L y la corriente oscila a ω_d, decreciendo como e^(−αt), α = R/(2L); con R = 2√(L/C) el condensador se vacía lo más rápido posible sin invertirse; por encima, la descarga vuelve a ser más lenta. Q = 1/(2ζ) cuenta las oscilaciones, y R/L es el ancho de banda de media potencia de la resonancia de la corriente: con una tensión sinusoidal, |I|² supera la mitad de su máximo en una banda de exactamente R/L rad/s, para cualquier R. La corriente es negativa mientras el condensador se descarga (i = dq/dt).
+rlc-param-R = resistencia
+rlc-param-L = inductancia
+rlc-param-C = capacidad
+rlc-param-V0 = tensión inicial del condensador
+rlc-readout-regime = régimen
+rlc-readout-w0 = frecuencia de resonancia ω₀ = 1/√(LC)
+rlc-readout-f0 = frecuencia de resonancia f₀
+rlc-readout-alpha = tasa de decaimiento α = R/(2L)
+rlc-readout-zeta = coeficiente de amortiguamiento ζ
+rlc-readout-Q = factor de calidad Q = 1/(2ζ)
+rlc-readout-bandwidth = ancho de banda de media potencia de la resonancia de corriente Δω = R/L
+rlc-readout-R-crit = resistencia crítica 2√(L/C)
+rlc-readout-wd = frecuencia de oscilación ω_d
+rlc-readout-settling-time = v_C dentro del 5 % de V₀ tras
+rlc-plot-current = Corriente i(t)
+rlc-plot-voltage = Tensión del condensador v_C(t)
+rlc-preset-1 = LC sin pérdidas, R = 0
+rlc-preset-2 = Oscilante, R = 2 Ω
+rlc-preset-3 = Subamortiguado, R = 5 Ω
+rlc-preset-4 = Crítico, R = 10 Ω
+rlc-preset-5 = Sobreamortiguado, R = 20 Ω
+
+### analogy
+
+analogy-title = Una ecuación, dos máquinas
+analogy-summary = Una masa sobre un resorte y un amortiguador y un circuito serie bobina–resistencia–condensador obedecen la misma ecuación de segundo orden. En la analogía fuerza–tensión, masa m ↔ inductancia L, amortiguamiento c ↔ resistencia R, rigidez k ↔ 1/C, fuerza F ↔ tensión E y desplazamiento x ↔ carga q (así, velocidad ↔ corriente). Aquí el circuito recibe los mismos números que el mecanismo (L en H = m en kg, R en Ω = c en N·s/m, 1/C en 1/F = k en N/m, q₀ en C = x₀ en m), y ambos parten del reposo: al mover cualquier control cambian las dos máquinas a la vez, sus respuestas normalizadas siguen siendo una sola curva y la energía va y viene entre resorte y masa exactamente igual que entre condensador y bobina.
+analogy-param-m = masa (≙ inductancia L)
+analogy-param-c = amortiguamiento (≙ resistencia R)
+analogy-param-k = rigidez del resorte (≙ 1/C)
+analogy-param-x0 = desplazamiento inicial (≙ carga q₀)
+analogy-readout-m = masa m
+analogy-readout-L = inductancia L (≙ masa m)
+analogy-readout-c = amortiguamiento c
+analogy-readout-R = resistencia R (≙ amortiguamiento c)
+analogy-readout-k = rigidez del resorte k
+analogy-readout-elastance = elastancia 1/C (≙ k)
+analogy-readout-compliance = flexibilidad 1/k (≙ C)
+analogy-readout-C = capacidad C (≙ 1/k)
+analogy-readout-x0 = desplazamiento inicial x₀
+analogy-readout-q0 = carga inicial q₀ (≙ x₀)
+analogy-readout-wn = frecuencia natural ωₙ = √(k/m)
+analogy-readout-w0 = frecuencia de resonancia ω₀ = 1/√(LC) (≙ ωₙ)
+analogy-readout-zeta = coeficiente de amortiguamiento ζ (ambos)
+analogy-readout-regime = régimen (ambos)
+analogy-readout-Q = factor de calidad Q (ambos)
+analogy-readout-energy = energía almacenada ½kx₀² = ½q₀²/C
+analogy-plot-responses = Respuestas normalizadas de ambas máquinas
+analogy-plot-energy = Intercambio de energía
+analogy-preset-1 = Resorte sin rozamiento ↔ circuito tanque LC (c = R = 0)
+analogy-preset-2 = Amortiguamiento ligero ζ = 0,05
+analogy-preset-3 = Crítico ζ = 1 (c = 2√(mk), R = 2√(L/C))
+analogy-preset-4 = Sobreamortiguado ζ = 2
+analogy-preset-5 = Pesado y blando: m = 4 kg ↔ L = 4 H, k = 25 N/m ↔ C = 40 mF
+analogy-table-caption = La analogía fuerza–tensión: a·y″ + b·y′ + c·y = f(t) leída de dos maneras, con los valores actuales de ambas máquinas
+analogy-table-column-1 = papel en la ecuación
+analogy-table-column-2 = mecánico
+analogy-table-column-3 = valor actual
+analogy-table-column-4 = eléctrico
+analogy-table-column-5 = valor actual
+analogy-table-inertia-1 = inercia a
+analogy-table-inertia-2 = masa m [kg]
+analogy-table-inertia-4 = inductancia L [H]
+analogy-table-dissipation-1 = disipación b
+analogy-table-dissipation-2 = constante de amortiguamiento c [N·s/m]
+analogy-table-dissipation-4 = resistencia R [Ω]
+analogy-table-stiffness-1 = rigidez c
+analogy-table-stiffness-2 = rigidez del resorte k [N/m]
+analogy-table-stiffness-4 = elastancia 1/C [1/F]
+analogy-table-compliance-1 = flexibilidad 1/c
+analogy-table-compliance-2 = flexibilidad 1/k [m/N]
+analogy-table-compliance-4 = capacidad C [F]
+analogy-table-drive-1 = excitación f(t)
+analogy-table-drive-2 = fuerza F [N]
+analogy-table-drive-3 = 0: parte del reposo
+analogy-table-drive-4 = tensión E [V]
+analogy-table-drive-5 = 0: sin fuente en el circuito
+analogy-table-coordinate-1 = coordenada y, inicialmente y₀
+analogy-table-coordinate-2 = desplazamiento x, inicialmente x₀ [m]
+analogy-table-coordinate-4 = carga q, inicialmente q₀ [C]
+analogy-table-rate-1 = derivada y′
+analogy-table-rate-2 = velocidad v = ẋ [m/s]
+analogy-table-rate-3 = 0 al soltar
+analogy-table-rate-4 = corriente i = q̇ [A]
+analogy-table-rate-5 = 0 al soltar
+analogy-table-natural-frequency-1 = frecuencia natural √(c/a)
+analogy-table-natural-frequency-2 = ωₙ = √(k/m) [rad/s]
+analogy-table-natural-frequency-4 = ω₀ = 1/√(LC) [rad/s]
+analogy-table-damping-ratio-1 = coeficiente de amortiguamiento ζ = b/(2√(ac))
+analogy-table-damping-ratio-2 = ζ = c/(2√(mk))
+analogy-table-damping-ratio-4 = ζ = (R/2)·√(C/L)
+analogy-table-quality-factor-1 = factor de calidad Q = √(ac)/b
+analogy-table-quality-factor-2 = Q = √(mk)/c
+analogy-table-quality-factor-4 = Q = √(L/C)/R
+analogy-table-potential-energy-1 = almacenada por la rigidez
+analogy-table-potential-energy-2 = resorte ½kx², al soltar ½kx₀² [J]
+analogy-table-potential-energy-4 = condensador ½q²/C, al soltar ½q₀²/C [J]
+analogy-table-kinetic-energy-1 = almacenada por la inercia
+analogy-table-kinetic-energy-2 = masa ½mv² [J]
+analogy-table-kinetic-energy-3 = 0 al soltar
+analogy-table-kinetic-energy-4 = bobina ½Li² [J]
+analogy-table-kinetic-energy-5 = 0 al soltar
+analogy-table-power-lost-1 = potencia disipada
+analogy-table-power-lost-2 = amortiguador c·v² [W]
+analogy-table-power-lost-3 = 0 al soltar
+analogy-table-power-lost-4 = resistencia R·i² [W]
+analogy-table-power-lost-5 = 0 al soltar
+
+### universality
+
+universality-title = Una ecuación, muchas máquinas
+universality-summary = Seis máquinas, una ecuación a·y″ + b·y′ + c·y = f(t). Elija una máquina para A y otra para B y ajuste cada una con sus propios parámetros físicos: cada una da sus propios a, b y c, en sus propias unidades, y con ellos una frecuencia natural ωₙ = √(c/a) y un coeficiente de amortiguamiento ζ = b/(2√(ac)). Soltada desde y₀ en reposo, la respuesta normalizada y/y₀ de una máquina frente a ωₙt depende solo de ζ, así que máquinas con igual ζ trazan una misma curva. Marque “igualar” y los parámetros de ajuste de B se calculan para que su ωₙ y su ζ igualen los de A: entonces B se comporta exactamente como A, segundo a segundo. El sistema térmico de dos capacidades nunca oscila: b² − 4ac = (τ₁ − τ₂)² + R₁C₂(2τ₁ + 2τ₂ + R₁C₂) > 0, así que su ζ > 1 sean cuales sean sus capacidades y resistencias: el calor no tiene inercia que lo lleve más allá del equilibrio.
+universality-param-A = máquina A
+universality-param-A-mass-spring = masa–resorte–amortiguador
+universality-param-A-rlc = circuito RLC en serie
+universality-param-A-u-tube = manómetro de tubo en U
+universality-param-A-servo = servo de posición con motor de CC (control PD)
+universality-param-A-storey = planta de edificio con movimiento del suelo
+universality-param-A-thermal = sistema térmico de dos capacidades
+universality-param-A-m = masa
+universality-param-A-c = constante de amortiguamiento
+universality-param-A-k = rigidez del resorte
+universality-param-A-L = inductancia
+universality-param-A-R = resistencia
+universality-param-A-C = capacidad
+universality-param-A-len = longitud de la columna de líquido
+universality-param-A-bore = diámetro interior del tubo
+universality-param-A-rho = densidad del líquido
+universality-param-A-mu = viscosidad dinámica
+universality-param-A-J = inercia del motor y la carga
+universality-param-A-Kt = constante de par del motor
+universality-param-A-Ra = resistencia del inducido
+universality-param-A-Kp = ganancia proporcional
+universality-param-A-Kd = ganancia derivativa
+universality-param-A-mf = masa del forjado
+universality-param-A-h = altura de planta
+universality-param-A-EI = rigidez a flexión de cada uno de los 4 pilares
+universality-param-A-cf = constante de amortiguamiento de la planta
+universality-param-A-C1 = capacidad calorífica del cuerpo 1
+universality-param-A-R1 = resistencia térmica, cuerpo 1 al entorno
+universality-param-A-C2 = capacidad calorífica del cuerpo 2
+universality-param-A-R2 = resistencia térmica, cuerpo 2 al cuerpo 1
+universality-param-B = máquina B
+universality-param-B-mass-spring = masa–resorte–amortiguador
+universality-param-B-rlc = circuito RLC en serie
+universality-param-B-u-tube = manómetro de tubo en U
+universality-param-B-servo = servo de posición con motor de CC (control PD)
+universality-param-B-storey = planta de edificio con movimiento del suelo
+universality-param-B-thermal = sistema térmico de dos capacidades
+universality-param-B-m = masa
+universality-param-B-c = constante de amortiguamiento
+universality-param-B-k = rigidez del resorte
+universality-param-B-L = inductancia
+universality-param-B-R = resistencia
+universality-param-B-C = capacidad
+universality-param-B-len = longitud de la columna de líquido
+universality-param-B-bore = diámetro interior del tubo
+universality-param-B-rho = densidad del líquido
+universality-param-B-mu = viscosidad dinámica
+universality-param-B-J = inercia del motor y la carga
+universality-param-B-Kt = constante de par del motor
+universality-param-B-Ra = resistencia del inducido
+universality-param-B-Kp = ganancia proporcional
+universality-param-B-Kd = ganancia derivativa
+universality-param-B-mf = masa del forjado
+universality-param-B-h = altura de planta
+universality-param-B-EI = rigidez a flexión de cada uno de los 4 pilares
+universality-param-B-cf = constante de amortiguamiento de la planta
+universality-param-B-C1 = capacidad calorífica del cuerpo 1
+universality-param-B-R1 = resistencia térmica, cuerpo 1 al entorno
+universality-param-B-C2 = capacidad calorífica del cuerpo 2
+universality-param-B-R2 = resistencia térmica, cuerpo 2 al cuerpo 1
+universality-param-match = igualar: ajustar B para que se comporte como A (mismos ωₙ y ζ)
+universality-readout-a-A = coeficiente de inercia a de A
+universality-readout-b-A = coeficiente de amortiguamiento b de A
+universality-readout-c-A = coeficiente de rigidez c de A
+universality-readout-wn-A = frecuencia natural ωₙ de A
+universality-readout-zeta-A = coeficiente de amortiguamiento ζ de A
+universality-readout-regime-A = régimen de A
+universality-readout-a-B = coeficiente de inercia a de B
+universality-readout-b-B = coeficiente de amortiguamiento b de B
+universality-readout-c-B = coeficiente de rigidez c de B
+universality-readout-wn-B = frecuencia natural ωₙ de B
+universality-readout-zeta-B = coeficiente de amortiguamiento ζ de B
+universality-readout-regime-B = régimen de B
+universality-readout-wn-ratio = razón de escalas de tiempo ωₙ(B)/ωₙ(A)
+universality-readout-match = igualar
+universality-plot-normalised = Respuestas normalizadas y/y₀ frente a ωₙt
+universality-plot-realtime = Respuestas en tiempo real
+universality-preset-1 = Masa–resorte y circuito RLC, igualados
+universality-preset-2 = Manómetro de tubo en U y masa–resorte, igualados
+universality-preset-3 = Planta de edificio ajustada como un servo
+universality-preset-4 = Termómetro (dos capacidades) y masa–resorte, igualados
+universality-preset-5 = Un sistema térmico no puede igualar a un oscilador
+universality-table-caption = Una ecuación, muchas máquinas: qué son y, a, b y c
+universality-table-column-1 = máquina
+universality-table-column-2 = coordenada y
+universality-table-column-3 = a
+universality-table-column-4 = b
+universality-table-column-5 = c
+universality-table-column-6 = ωₙ
+universality-table-column-7 = ζ
+universality-table-mass-spring-1 = masa–resorte–amortiguador
+universality-table-mass-spring-2 = desplazamiento x [m]
+universality-table-mass-spring-3 = masa m [kg]
+universality-table-mass-spring-4 = constante de amortiguamiento c [N·s/m]
+universality-table-mass-spring-5 = rigidez del resorte k [N/m]
+universality-table-mass-spring-6 = √(k/m)
+universality-table-mass-spring-7 = c/(2√(km))
+universality-table-rlc-1 = circuito RLC en serie
+universality-table-rlc-2 = carga q [C]
+universality-table-rlc-3 = inductancia L [H]
+universality-table-rlc-4 = resistencia R [Ω]
+universality-table-rlc-5 = 1/C [1/F]
+universality-table-rlc-6 = 1/√(LC)
+universality-table-rlc-7 = (R/2)·√(C/L)
+universality-table-u-tube-1 = manómetro de tubo en U
+universality-table-u-tube-2 = cambio de nivel h [m]
+universality-table-u-tube-3 = ρAL [kg]
+universality-table-u-tube-4 = 8πμL [N·s/m]
+universality-table-u-tube-5 = 2ρgA [N/m]
+universality-table-u-tube-6 = √(2g/L)
+universality-table-u-tube-7 = 16μ/(ρd²ωₙ)
+universality-table-servo-1 = servo de posición con motor de CC (control PD)
+universality-table-servo-2 = error de ángulo θ [rad]
+universality-table-servo-3 = J [kg·m²]
+universality-table-servo-4 = K_t(K_t + K_d)/R_a [N·m·s/rad]
+universality-table-servo-5 = K_t·K_p/R_a [N·m/rad]
+universality-table-servo-6 = √(K_t·K_p/(R_a·J))
+universality-table-servo-7 = ≥ K_t²/(2ωₙR_a·J), solo por la fuerza contraelectromotriz
+universality-table-storey-1 = planta de edificio con movimiento del suelo
+universality-table-storey-2 = deriva de planta u [m]
+universality-table-storey-3 = masa del forjado m [kg]
+universality-table-storey-4 = constante de amortiguamiento c [N·s/m]
+universality-table-storey-5 = 12·4·EI/h³ [N/m]
+universality-table-storey-6 = √(48EI/(m·h³))
+universality-table-storey-7 = c/(2√(km))
+universality-table-thermal-1 = sistema térmico de dos capacidades
+universality-table-thermal-2 = exceso de temperatura T₂ [K]
+universality-table-thermal-3 = R₁C₁R₂C₂ [s²]
+universality-table-thermal-4 = R₁C₁ + R₂C₂ + R₁C₂ [s]
+universality-table-thermal-5 = 1
+universality-table-thermal-6 = 1/√(τ₁τ₂)
+universality-table-thermal-7 = (τ₁ + τ₂ + R₁C₂)/(2√(τ₁τ₂)) > 1
+
+### resonance
+
+resonance-title = Resonancia forzada
+resonance-summary = Una masa de 1 kg sobre un resorte (k = ωₙ²·m) y un amortiguador (c = 2ζωₙ·m), en reposo, se excita desde t = 0 con F(t) = F₀·cos(ωt). En régimen permanente se mueve a la frecuencia de excitación con amplitud |H(r)|·F₀/k, retrasada respecto de la fuerza en la fase de H, donde r = ω/ωₙ. Un amortiguamiento ligero da un pico alto y estrecho cerca de r = 1 (altura ≈ Q = 1/(2ζ)). Su anchura de media potencia, r₂ − r₁ entre las dos razones de frecuencias en las que |H| = |H|max/√2, es ≈ 2ζ con amortiguamiento ligero; por encima de ζ ≈ 0,383 el punto inferior llega a r = 0 y la anchura no está definida, y por encima de ζ = 1/√2 no hay ningún pico. Excitada exactamente en resonancia, la amplitud crece a lo largo de unas pocas constantes de tiempo 1/(ζωₙ) sin batir; excitada cerca de ella, los movimientos libre y forzado baten entre sí hasta que la parte libre se extingue.
+resonance-param-zeta = coeficiente de amortiguamiento
+resonance-param-r = razón de frecuencias ω/ωₙ
+resonance-param-wn = frecuencia natural
+resonance-param-F0 = amplitud de la fuerza
+resonance-param-view = escala de la magnitud
+resonance-param-view-linear = |H| lineal
+resonance-param-view-db = decibelios 20·log₁₀|H|
+resonance-readout-peak-gain = pico de resonancia |H|max
+resonance-readout-peak-ratio = pico en r = ω/ωₙ
+resonance-readout-Q = factor de calidad Q = 1/(2ζ)
+resonance-readout-peak-width = anchura de media potencia del pico de |H| r₂ − r₁ (ζ < 0,383)
+resonance-readout-gain-at-r = ganancia |H(r)| a la frecuencia de excitación
+resonance-readout-phase-at-r = fase ∠H(r) a la frecuencia de excitación
+resonance-readout-amplitude = amplitud permanente X = |H|·F₀/k
+resonance-readout-beat-period = periodo de batido 2π/|ω − ω_d| (mientras se ven batidos)
+resonance-readout-beats = batidos en x(t)
+resonance-plot-magnitude = Amplificación |H(r)|
+resonance-plot-phase = Fase ∠H(r)
+resonance-plot-time = Respuesta desde el reposo x(t)
+resonance-preset-1 = En resonancia, ζ = 0,05
+resonance-preset-2 = Batido cerca de la resonancia, r = 0,9
+resonance-preset-3 = Sin pico, ζ ≈ 1/√2
+resonance-preset-4 = Cuasiestático, r = 0,2
+resonance-preset-5 = Aislamiento, r = 3
+
+### integrators
+
+integrators-title = Integradores numéricos y su error
+integrators-summary = El oscilador libre integrado con el método de Euler explícito, Euler simpléctico, Heun (RK2) y RK4 clásico con un paso fijo h, y con Dormand–Prince 5(4) con paso adaptativo, cada uno comparado con la solución exacta. Un método de un paso multiplica cada modo por R(hλ) en cada paso: cuando |R| > 1, los números crecen por bien que el método se ajuste a la ecuación, y por eso el método de Euler explícito hace estallar un oscilador poco amortiguado salvo que h < 2ζ/ωₙ. Cuando es estable, reducir h a la mitad divide el error entre 2^p, donde p es el orden de convergencia del método: la gráfica de convergencia mide p. Desactivar un método oculta sus curvas; sus lecturas se siguen calculando.
+integrators-param-zeta = coeficiente de amortiguamiento
+integrators-param-wn = frecuencia natural
+integrators-param-h = tamaño de paso
+integrators-param-T = duración
+integrators-param-x0 = desplazamiento inicial
+integrators-param-tol = tolerancia de DP45 (relativa; absoluta tol·x₀)
+integrators-param-euler = Euler explícito
+integrators-param-symplectic-euler = Euler simpléctico
+integrators-param-heun = Heun (RK2)
+integrators-param-rk4 = RK4
+integrators-param-dp45 = Dormand–Prince 5(4), adaptativo
+integrators-readout-h-used = paso usado: exactamente h (un último paso más corto termina la integración en T)
+integrators-readout-h-last = último paso, que termina la integración en T
+integrators-readout-max-err-euler = error máximo, Euler explícito
+integrators-readout-max-err-symplectic-euler = error máximo, Euler simpléctico
+integrators-readout-max-err-heun = error máximo, Heun
+integrators-readout-max-err-rk4 = error máximo, RK4
+integrators-readout-max-err-dp45 = error máximo, DP45
+integrators-readout-order-euler = orden de convergencia ajustado, Euler explícito
+integrators-readout-order-symplectic-euler = orden de convergencia ajustado, Euler simpléctico
+integrators-readout-order-heun = orden de convergencia ajustado, Heun
+integrators-readout-order-rk4 = orden de convergencia ajustado, RK4
+integrators-readout-order-dp45 = orden observado, DP45 (error frente a evaluaciones de f, donde la tolerancia fija los pasos)
+integrators-readout-stable-euler = estable con este h, Euler explícito
+integrators-readout-stable-symplectic-euler = estable con este h, Euler simpléctico
+integrators-readout-stable-heun = estable con este h, Heun
+integrators-readout-stable-rk4 = estable con este h, RK4
+integrators-readout-growth-euler = crecimiento por paso |R(hλ)|, Euler explícito
+integrators-readout-growth-symplectic-euler = crecimiento por paso (radio espectral), Euler simpléctico
+integrators-readout-growth-heun = crecimiento por paso |R(hλ)|, Heun
+integrators-readout-growth-rk4 = crecimiento por paso |R(hλ)|, RK4
+integrators-readout-steps-dp45 = pasos aceptados por DP45
+integrators-plot-response = Soluciones numéricas y la x(t) exacta
+integrators-plot-error = Error a lo largo del tiempo
+integrators-plot-convergence = Convergencia: error máximo frente al paso h
+integrators-plot-work = Trabajo–precisión: error máximo frente a evaluaciones de f
+integrators-plot-stability = Regiones de estabilidad y z = hλ
+integrators-preset-1 = Poco amortiguado, h = 0,3 s
+integrators-preset-2 = Euler explícito apenas estable, h = 0,04 s
+integrators-preset-3 = RK4 más allá de su límite, h = 1,6 s
+integrators-preset-4 = No amortiguado, h = 0,1 s
+integrators-preset-5 = Rígido y sobreamortiguado, ζ = 2, ωₙ = 20
+integrators-table-caption = Los métodos
+integrators-table-column-1 = método
+integrators-table-column-2 = orden p
+integrators-table-column-3 = evaluaciones de f por paso
+integrators-table-column-4 = factor de amplificación R(z)
+integrators-table-column-5 = en un oscilador no amortiguado
+integrators-table-euler-1 = Euler explícito
+integrators-table-euler-2 = 1
+integrators-table-euler-3 = 1
+integrators-table-euler-4 = 1 + z
+integrators-table-euler-5 = siempre crece: |R(iωh)| = √(1 + ω²h²) > 1
+integrators-table-symplectic-euler-1 = Euler simpléctico
+integrators-table-symplectic-euler-2 = 1
+integrators-table-symplectic-euler-3 = 2
+integrators-table-symplectic-euler-4 = matriz 2×2, no un R escalar
+integrators-table-symplectic-euler-5 = error de energía acotado mientras ωh ≤ 2
+integrators-table-heun-1 = Heun (RK2)
+integrators-table-heun-2 = 2
+integrators-table-heun-3 = 2
+integrators-table-heun-4 = 1 + z + z²/2
+integrators-table-heun-5 = crece lentamente: |R(iy)|² = 1 + y⁴/4
+integrators-table-rk4-1 = RK4 clásico
+integrators-table-rk4-2 = 4
+integrators-table-rk4-3 = 4
+integrators-table-rk4-4 = 1 + z + z²/2 + z³/6 + z⁴/24
+integrators-table-rk4-5 = amortigua ligeramente mientras ωh ≤ 2√2
+integrators-table-dp45-1 = Dormand–Prince 5(4)
+integrators-table-dp45-2 = 5
+integrators-table-dp45-3 = 6 (la primera coincide con la última)
+integrators-table-dp45-4 = adaptativo: h sigue la estimación del error
+integrators-table-dp45-5 = estable: los pasos rechazados reducen h
+
+### flutter
+
+flutter-title = Flameo: el puente de Tacoma Narrows
+flutter-summary = Un viento constante puede aportar energía a un tablero de puente que gira a través de su propio movimiento. Scanlan escribió el momento del viento sobre un tablero que gira con derivadas de flameo medidas en túneles de viento: A₂* multiplica la velocidad de giro (un término de amortiguamiento) y A₃* el giro (un término de rigidez), ambas funciones de la frecuencia reducida K = Bω/U. El coeficiente de amortiguamiento del tablero pasa a ser ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I): en la sección en H, poco aerodinámica, del tablero de Tacoma de 1940 A₂* cambia de signo al aumentar el viento, y en cuanto supera el umbral 4Iζ_s/(ρB⁴) cualquier pequeño giro crece a la frecuencia de torsión propia del tablero (cerca de 0,2 Hz): flameo, no resonancia; un viento constante no tiene ninguna frecuencia con la que coincidir, el movimiento crea su propia excitación. La frecuencia se obtiene por iteración a cada velocidad del viento, ya que K depende de ella. La teoría lineal deja crecer el giro sin fin; aquí se supone que el término de amortiguamiento del viento se reduce a la mitad con un giro θ_s, lo que acota el movimiento en un gran ciclo límite, como el 7 de noviembre de 1940, cuando con vientos de unas 42 mph el giro creció en menos de una hora hasta que el tablero se rompió. Aproximaciones didácticas, declaradas como tales: A₂* y A₃* son curvas suaves con la forma de los resultados publicados para la sección en H y para perfiles aerodinámicos (Scanlan y Tomko 1971; Billah y Scanlan 1991), no valores leídos de ellos; I, ζ_s y θ_s son supuestos. Un cajón aerodinámico, cuyo A₂* sigue siendo negativo, nunca entra en flameo en este intervalo. La imagen más simple ζ_eff = ζ_s − g·U se mantiene para comparar.
+flutter-param-U = velocidad del viento
+flutter-param-model = modelo del momento del viento
+flutter-param-model-scanlan = derivadas de flameo (Scanlan)
+flutter-param-model-linear = imagen más simple: ζ_eff = ζ_s − g·U
+flutter-param-section = sección del tablero
+flutter-param-section-h = sección en H de 1940 (vigas de alma llena)
+flutter-param-section-box = viga cajón aerodinámica
+flutter-param-B = ancho del tablero
+flutter-param-I = momento de inercia másico por unidad de longitud (supuesto para 1940)
+flutter-param-f0 = frecuencia de torsión con aire en calma
+flutter-param-zeta-s = coeficiente de amortiguamiento estructural (supuesto para 1940)
+flutter-param-theta0 = giro inicial
+flutter-param-theta-s = giro con el que el amortiguamiento del viento se reduce a la mitad (supuesto didáctico)
+flutter-param-slope = imagen más simple: amortiguamiento perdido por m/s
+flutter-readout-regime = régimen de un giro pequeño
+flutter-readout-U-crit = velocidad crítica (de flameo) U_crit, buscada hasta 100 m/s
+flutter-readout-zeta-eff = coeficiente de amortiguamiento efectivo ζ_eff de un giro pequeño
+flutter-readout-growth-rate = tasa de crecimiento σ de un giro pequeño (< 0: decae)
+flutter-readout-doubling-time = un giro pequeño se duplica cada
+flutter-readout-frequency = frecuencia de torsión con viento f
+flutter-readout-K = frecuencia reducida K = Bω/U
+flutter-readout-reduced-velocity = velocidad reducida U/(f·B) = 2π/K
+flutter-readout-A2 = derivada de flameo A₂*(K)
+flutter-readout-A3 = derivada de flameo A₃*(K)
+flutter-readout-limit-deg = amplitud del giro en el ciclo límite (con la cota supuesta θ_s)
+flutter-readout-time-to-large = tiempo desde θ₀ hasta el 90 % del ciclo límite
+flutter-readout-amplitude-end-deg = amplitud del giro al final de la gráfica
+flutter-plot-derivative = Derivada de flameo A₂* y umbral de flameo
+flutter-plot-damping = Amortiguamiento efectivo frente a la velocidad del viento
+flutter-plot-locus = Lugar de las raíces al aumentar el viento
+flutter-plot-response = Giro del tablero θ(t) a lo largo de minutos
+flutter-preset-1 = Tacoma 1940, 10 m/s (estable)
+flutter-preset-2 = Tacoma 1940, 19 m/s (día del colapso, ≈ 42 mph)
+flutter-preset-3 = Tacoma 1940, vendaval de 30 m/s
+flutter-preset-4 = Tablero de cajón aerodinámico, 19 m/s
+flutter-preset-5 = Tablero de cajón aerodinámico, 40 m/s
+flutter-preset-6 = Imagen más simple, 19 m/s (ζ_eff = ζ_s − g·U)
+flutter-table-caption = El flameo no es resonancia
+flutter-table-column-1 = caso
+flutter-table-column-2 = qué lo impulsa
+flutter-table-column-3 = frecuencia
+flutter-table-column-4 = amortiguamiento
+flutter-table-column-5 = amplitud
+flutter-table-column-6 = remedio
+flutter-table-resonance-1 = Resonancia forzada (para comparar)
+flutter-table-resonance-2 = una fuerza exterior que oscila cerca de ωₙ (pasos al marchar, un motor)
+flutter-table-resonance-3 = la impone la fuerza; debe coincidir con ωₙ
+flutter-table-resonance-4 = positivo: limita el pico a unas 1/(2ζ) veces el valor estático
+flutter-table-resonance-5 = régimen permanente acotado
+flutter-table-resonance-6 = desintonizar o añadir amortiguamiento
+flutter-table-underdamped-1 = Viento por debajo de U_crit
+flutter-table-underdamped-2 = viento constante; momento ∝ velocidad de giro (A₂*) y giro (A₃*)
+flutter-table-underdamped-3 = la propia del tablero, algo desplazada por A₃*
+flutter-table-underdamped-4 = ζ_eff > 0: A₂* por debajo del umbral 4Iζ_s/(ρB⁴)
+flutter-table-underdamped-5 = un giro se extingue
+flutter-table-underdamped-6 = —
+flutter-table-undamped-1 = En U_crit
+flutter-table-undamped-2 = viento constante; momento ∝ velocidad de giro (A₂*) y giro (A₃*)
+flutter-table-undamped-3 = la propia del tablero
+flutter-table-undamped-4 = ζ_eff = 0: polos sobre el eje imaginario
+flutter-table-undamped-5 = un giro persiste sin cambios
+flutter-table-undamped-6 = —
+flutter-table-negatively-damped-1 = Flameo, viento por encima de U_crit
+flutter-table-negatively-damped-2 = viento constante; el movimiento crea su propia excitación
+flutter-table-negatively-damped-3 = la propia del tablero, sin necesidad de coincidir
+flutter-table-negatively-damped-4 = ζ_eff < 0: entra energía en cada ciclo
+flutter-table-negatively-damped-5 = crece hasta la cota de amplitud (o hasta que cede el tablero)
+flutter-table-negatively-damped-6 = una sección cuyo A₂* siga siendo negativo: tablero aerodinámico, abierto o rigidizado
+
+### nonlinear
+
+nonlinear-title = Más allá del modelo lineal
+nonlinear-summary = Una suspensión real solo es lineal para movimientos pequeños. Aquí el cuarto de vehículo tiene un resorte cúbico (k₃ > 0 rigidizante, k₃ < 0 ablandante), un amortiguador más duro en rebote (x′ > 0) que en compresión, fricción de Coulomb en las articulaciones y topes de goma más allá de ±gap. La fricción se pega y desliza: mientras la masa desliza, frena con la fuerza F_c; cuando se detiene, la fricción estática la sujeta hasta F_static, un múltiplo fijo de F_c, y solo vuelve a moverse si el resorte tira con más fuerza. El movimiento se integra con RK4, localizando cada parada dentro de su paso, y se dibuja frente al modelo lineal m·x″ + c̄·x′ + k·x = 0 (c̄ la constante media del amortiguador) desde el mismo inicio. Observe dónde falla la predicción: el periodo depende de la amplitud (el resorte rigidizante lo acorta, el ablandante lo alarga), la fricción hace caer la amplitud en línea recta y luego retiene la masa descentrada para siempre (adherencia-deslizamiento), un tope convierte una oscilación suave en un impacto, y un amortiguador asimétrico desplaza la posición media. Los valores por defecto son una esquina de coche verosímil: 300 kg, 24 kN/m (1,4 Hz), un amortiguador de 1 500 N·s/m (ζ ≈ 0,28) y un resorte algo progresivo. x es la extensión de la suspensión desde el equilibrio estático (positiva = carrocería hacia arriba).
+nonlinear-param-m = masa suspendida
+nonlinear-param-k = rigidez lineal del resorte
+nonlinear-param-k3 = coeficiente cúbico del resorte (+ rigidizante, − ablandante)
+nonlinear-param-c-comp = constante del amortiguador en compresión
+nonlinear-param-c-reb = constante del amortiguador en rebote
+nonlinear-param-friction = fuerza de fricción de Coulomb al deslizar
+nonlinear-param-stick-ratio = razón entre fricción estática y de deslizamiento
+nonlinear-param-gap = holgura hasta el tope
+nonlinear-param-k-stop = rigidez del tope (0 = sin topes)
+nonlinear-param-x0 = extensión inicial
+nonlinear-param-v0 = velocidad inicial
+nonlinear-readout-effect = no linealidad dominante
+nonlinear-readout-period-ratio = razón de periodos de la primera oscilación T_nonlinear / T_linear
+nonlinear-readout-max-deviation = máximo de |x_nonlinear − x_linear|
+nonlinear-readout-period-nonlinear = periodo no lineal de la primera oscilación completa (tres pasos por cero)
+nonlinear-readout-period-linear = periodo lineal de la primera oscilación completa (= 2π/ω_d)
+nonlinear-readout-max-travel = máximo de |x| (no lineal)
+nonlinear-readout-stick-position = la fricción retiene la masa en
+nonlinear-plot-response = Respuesta no lineal y lineal x(t)
+nonlinear-plot-phase = Plano de fase (x, v)
+nonlinear-plot-spring = Fuerza del resorte y de los topes
+nonlinear-plot-damper = Fuerza del amortiguador y de la fricción
+nonlinear-preset-1 = Lineal (todo desactivado)
+nonlinear-preset-2 = Resorte rigidizante
+nonlinear-preset-3 = Resorte ablandante
+nonlinear-preset-4 = Fricción con adherencia–deslizamiento
+nonlinear-preset-5 = Impacto contra el tope
+nonlinear-preset-6 = Amortiguador asimétrico
+nonlinear-table-caption = Dónde falla el modelo lineal
+nonlinear-table-column-1 = no linealidad
+nonlinear-table-column-2 = ley de fuerza
+nonlinear-table-column-3 = qué no capta el modelo lineal
+nonlinear-table-column-4 = huella en las gráficas
+nonlinear-table-linear-1 = Ninguna (lineal)
+nonlinear-table-linear-2 = k·x + c·x′
+nonlinear-table-linear-3 = nada: el modelo es exacto
+nonlinear-table-linear-4 = las dos curvas coinciden
+nonlinear-table-hardening-spring-1 = Resorte rigidizante
+nonlinear-table-hardening-spring-2 = k·x + k₃·x³, k₃ > 0
+nonlinear-table-hardening-spring-3 = la frecuencia aumenta con la amplitud
+nonlinear-table-hardening-spring-4 = periodo más corto mientras la oscilación es grande; las curvas se separan
+nonlinear-table-softening-spring-1 = Resorte ablandante
+nonlinear-table-softening-spring-2 = k·x + k₃·x³, k₃ < 0
+nonlinear-table-softening-spring-3 = la frecuencia disminuye con la amplitud; más allá de √(−k/k₃) el resorte cede
+nonlinear-table-softening-spring-4 = periodo más largo; un inicio grande puede escaparse
+nonlinear-table-stick-slip-1 = Fricción de Coulomb
+nonlinear-table-stick-slip-2 = F_c·sgn(x′) al deslizar; hasta F_static en reposo
+nonlinear-table-stick-slip-3 = la amplitud cae unos 4F_c/k por ciclo, en línea recta, y luego la masa se queda pegada para siempre donde |k·x| ≤ F_static
+nonlinear-table-stick-slip-4 = envolvente recta; un final plano fuera de cero
+nonlinear-table-bump-stop-impact-1 = Topes de suspensión
+nonlinear-table-bump-stop-impact-2 = k_stop·(|x| − gap) más allá de ±gap
+nonlinear-table-bump-stop-impact-3 = un contacto rígido y súbito: fuerza grande, inversión rápida
+nonlinear-table-bump-stop-impact-4 = picos recortados en ±gap; quiebros en el lazo de fase
+nonlinear-table-asymmetric-damper-1 = Amortiguador asimétrico
+nonlinear-table-asymmetric-damper-2 = c_r·x′ en rebote, c_c·x′ en compresión
+nonlinear-table-asymmetric-damper-3 = un desplazamiento de la posición media (efecto «jacking») y semiciclos desiguales
+nonlinear-table-asymmetric-damper-4 = decaimiento asimétrico; la espiral de fase está descentrada
+nonlinear-table-several-at-once-1 = Varias a la vez
+nonlinear-table-several-at-once-2 = suma de las anteriores
+nonlinear-table-several-at-once-3 = sus efectos se suman e interactúan
+nonlinear-table-several-at-once-4 = ver cada fila
+nonlinear-table-escaped-1 = Resorte ablandante más allá de su límite
+nonlinear-table-escaped-2 = k·x + k₃·x³ < 0 para |x| > √(−k/k₃)
+nonlinear-table-escaped-3 = el modelo deja de describir una suspensión
+nonlinear-table-escaped-4 = la simulación se corta donde |x| supera 1 m
+
+### quarter-car-2dof
+
+quarter-car-2dof-title = Cuarto de vehículo con carrocería y rueda
+quarter-car-2dof-summary = Dos masas, dos modos. La carrocería (masa suspendida m_s) descansa sobre el resorte de suspensión k_s y el amortiguador c_s; la rueda (masa no suspendida m_u) descansa sobre el resorte del neumático k_t, que sigue a la carretera u(t). El rebote de la carrocería, en torno a 1–1,5 Hz, es la carrocería moviéndose sobre la suspensión blanda; el salto de la rueda, en torno a 10–15 Hz, es la rueda ligera rebotando entre el neumático rígido y la suspensión. Las respuestas en frecuencia muestran ambos: la carrocería sigue las ondulaciones lentas de la carretera, pasa por encima de las rápidas y vibra más cerca del rebote de la carrocería; la deflexión del neumático, que determina el agarre, tiene su pico en el salto de la rueda. El neumático solo puede empujar: cuando la rueda sube por encima de su deflexión estática, la fuerza del neumático es cero y la rueda despega de la carretera hasta que vuelve a apoyarse. El confort se juzga por la aceleración RMS de la carrocería y el agarre por la deflexión RMS del neumático, ambas durante la marcha desde el reposo, 0 … T. La respuesta es exacta entre las muestras de la carretera, tan próximas que siguen cada bache y cada salto de la rueda. Los desplazamientos se miden desde el equilibrio estático, positivos hacia arriba; la carretera aleatoria suma 64 sinusoides con el espectro ISO 8608 entre 0,5 y 20 Hz. Sobre ella la página muestra también la aceleración RMS estacionaria de la carrocería en la carretera ISO 8608 completa, sin ponderar y ponderada con W_k de ISO 2631-1 (a_w, la medida de confort), a partir de la ecuación de Lyapunov del vehículo.
+quarter-car-2dof-param-ms = masa de la carrocería (suspendida)
+quarter-car-2dof-param-mu = masa de la rueda (no suspendida)
+quarter-car-2dof-param-ks = rigidez de la suspensión
+quarter-car-2dof-param-kt = rigidez del neumático
+quarter-car-2dof-param-cs = amortiguamiento de la suspensión
+quarter-car-2dof-param-road = excitación de la carretera
+quarter-car-2dof-param-road-bump = resalto único (1 − cos)
+quarter-car-2dof-param-road-step = escalón (bordillo)
+quarter-car-2dof-param-road-sine = sinusoide
+quarter-car-2dof-param-road-random = carretera aleatoria (ISO 8608)
+quarter-car-2dof-param-h = altura del resalto o del escalón, amplitud del seno
+quarter-car-2dof-param-L = longitud del resalto
+quarter-car-2dof-param-V = velocidad
+quarter-car-2dof-param-f-road = frecuencia de la carretera sinusoidal
+quarter-car-2dof-param-class = clase de carretera aleatoria
+quarter-car-2dof-param-class-A = A (muy buena)
+quarter-car-2dof-param-class-B = B (buena)
+quarter-car-2dof-param-class-C = C (media)
+quarter-car-2dof-param-class-D = D (mala)
+quarter-car-2dof-param-class-E = E (muy mala)
+quarter-car-2dof-param-class-F = F
+quarter-car-2dof-param-class-G = G
+quarter-car-2dof-param-class-H = H
+quarter-car-2dof-param-seed = semilla de la carretera aleatoria
+quarter-car-2dof-readout-f-body = frecuencia de rebote de la carrocería [Hz]
+quarter-car-2dof-readout-f-wheel = frecuencia de salto de la rueda [Hz]
+quarter-car-2dof-readout-window = ventana del RMS: la marcha desde el reposo, 0 … T
+quarter-car-2dof-readout-rms-body-accel = aceleración RMS de la carrocería en 0 … T (confort)
+quarter-car-2dof-readout-rms-tyre-deflection = deflexión RMS del neumático z_u − u en 0 … T (agarre)
+quarter-car-2dof-readout-max-travel = recorrido máximo de la suspensión |z_s − z_u|
+quarter-car-2dof-readout-static-tyre-deflection = deflexión estática del neumático (más allá, la rueda despega)
+quarter-car-2dof-readout-lift-off = primer despegue: la fuerza del neumático llega a cero
+quarter-car-2dof-readout-airborne-time = tiempo con la rueda en el aire
+quarter-car-2dof-readout-rms-road = altura RMS de la carretera (carretera aleatoria)
+quarter-car-2dof-readout-stationary-accel = aceleración RMS estacionaria de la carrocería, carretera ISO 8608 completa (carretera aleatoria)
+quarter-car-2dof-readout-stationary-weighted-accel = a_w estacionaria: aceleración RMS de la carrocería ponderada con W_k de ISO 2631-1 (carretera aleatoria)
+quarter-car-2dof-readout-body-gain = amplitud carrocería / carretera a la frecuencia del seno
+quarter-car-2dof-readout-tyre-gain = deflexión del neumático / amplitud de la carretera a la frecuencia del seno
+quarter-car-2dof-plot-motion = Carrocería, rueda y carretera
+quarter-car-2dof-plot-accel = Aceleración de la carrocería
+quarter-car-2dof-plot-frf = Respuesta en frecuencia por unidad de altura de la carretera
+quarter-car-2dof-plot-tyre = Deflexión del neumático
+quarter-car-2dof-preset-1 = Resalto de 5 cm a 10 m/s
+quarter-car-2dof-preset-2 = Bordillo de 5 cm
+quarter-car-2dof-preset-3 = Ondulación a la frecuencia de rebote de la carrocería
+quarter-car-2dof-preset-4 = Ondulación a la frecuencia de salto de la rueda
+quarter-car-2dof-preset-5 = Carretera aleatoria, clase C, 20 m/s
+quarter-car-2dof-preset-6 = Amortiguador blando en una carretera mala
+
+### design
+
+design-title = Espacio de diseño (k, c)
+design-summary = Cada celda del mapa es un cuarto de vehículo (masa suspendida m sobre un resorte k y un amortiguador c), coloreada según la métrica elegida: tiempo de establecimiento y rebote máximo de la respuesta libre al soltarlo desde el reposo en x₀ = 60 mm (no de la respuesta a un escalón: la banda y el rebote son relativos a x₀), aceleración RMS de la carrocería sobre una carretera aleatoria ISO 8608 a 72 km/h (el neumático filtra la excitación por encima de 10 Hz) o transmisibilidad máxima. Las líneas a trazos unen diseños con el mismo coeficiente de amortiguamiento ζ = c/(2√(km)). El frente de Pareto reúne los diseños que ningún otro supera a la vez en confort y en establecimiento. Haga clic en el mapa (o en un punto del frente) para elegir un diseño; mueva la masa para ver cómo se desplaza todo el mapa.
+design-param-m = masa suspendida
+design-param-metric = métrica del mapa
+design-param-metric-settling-time = tiempo de establecimiento (respuesta libre)
+design-param-metric-peak-rebound = rebote máximo (respuesta libre)
+design-param-metric-accel-rms = aceleración RMS de la carrocería (confort)
+design-param-metric-peak-transmissibility = transmisibilidad máxima |X/U|
+design-param-band = banda de establecimiento, ± % de x₀ (respuesta libre)
+design-param-road = carretera (ISO 8608)
+design-param-road-a = clase A (muy buena)
+design-param-road-b = clase B (buena)
+design-param-road-c = clase C (media)
+design-param-road-d = clase D (mala)
+design-param-k-min = mapa: rigidez del resorte mínima
+design-param-k-max = mapa: rigidez del resorte máxima
+design-param-c-min = mapa: constante del amortiguador mínima
+design-param-c-max = mapa: constante del amortiguador máxima
+design-param-k = rigidez del resorte seleccionada
+design-param-c = constante del amortiguador seleccionada
+design-param-n = celdas de la malla por eje
+design-readout-k = rigidez del resorte seleccionada k
+design-readout-c = constante del amortiguador seleccionada c
+design-readout-zeta = coeficiente de amortiguamiento ζ
+design-readout-settling-time = tiempo de establecimiento dentro de la banda ± de x₀ (respuesta libre)
+design-readout-overshoot = rebote máximo, % de x₀ (respuesta libre)
+design-readout-accel-rms = aceleración RMS de la carrocería
+design-readout-grid-size = tamaño de la malla (celdas)
+design-readout-compute-time = tiempo de cálculo del barrido
+design-plot-map = Métrica sobre (k, c) con líneas de ζ constante
+design-plot-pareto = Confort frente a establecimiento: frente de Pareto
+design-plot-response = Diseño seleccionado: respuesta libre x(t)
+design-preset-1 = Mapa del tiempo de establecimiento, 300 kg, ζ ≈ 0,37
+design-preset-2 = Vehículo cargado, 500 kg, mismos componentes
+design-preset-3 = Mapa de confort en una carretera de clase C
+design-preset-4 = Mapa del rebote máximo, diseño con ζ = 0,7
+design-preset-5 = Malla fina de 160 × 160
+
+### uncertainty
+
+uncertainty-title = Análisis de tolerancias
+uncertainty-summary = Los componentes reales no tienen exactamente su valor nominal. Elija el sistema: el cuarto de vehículo (masa suspendida m, resorte k y el amortiguador ajustado para ζ con la masa nominal; la masa varía ±dm según la carga del vehículo) o el circuito RLC serie (R, L y C, cada uno dentro de ±dR, ±dL, ±dC). Solo se usan los controles del sistema elegido; los del otro grupo se ignoran. Los intervalos exactos de ζ, ωₙ y Q salen de las esquinas de la caja de tolerancias. La simulación de Monte Carlo hace N sorteos de diseños (con semilla: la misma semilla da el mismo resultado), uniformes dentro de la tolerancia o normales con la tolerancia como 3σ. La proporción dentro de especificación es la fracción de sorteos con ζ dentro de la ventana de especificación y un tiempo de establecimiento al 5 % (soltando desde el reposo) no mayor que el límite.
+uncertainty-param-system = sistema
+uncertainty-param-system-suspension = suspensión de cuarto de vehículo
+uncertainty-param-system-rlc = RLC serie
+uncertainty-param-m = suspensión: masa suspendida
+uncertainty-param-k = suspensión: rigidez del resorte
+uncertainty-param-zeta = suspensión: ζ de diseño con la masa nominal
+uncertainty-param-dm = suspensión: tolerancia de la masa ±
+uncertainty-param-R = RLC: resistencia
+uncertainty-param-L = RLC: inductancia
+uncertainty-param-C = RLC: capacidad
+uncertainty-param-dR = RLC: tolerancia de la resistencia ±
+uncertainty-param-dL = RLC: tolerancia de la bobina ±
+uncertainty-param-dC = RLC: tolerancia del condensador ±
+uncertainty-param-dist = distribución de los componentes
+uncertainty-param-dist-uniform = uniforme dentro de ±tolerancia
+uncertainty-param-dist-normal = normal, tolerancia = 3σ
+uncertainty-param-N = sorteos de Monte Carlo
+uncertainty-param-seed = semilla aleatoria
+uncertainty-param-zeta-lo = especificación: ζ mínimo
+uncertainty-param-zeta-hi = especificación: ζ máximo
+uncertainty-param-ts-max = especificación: tiempo de establecimiento máximo
+uncertainty-param-hist = segundo histograma
+uncertainty-param-hist-zeta = coeficiente de amortiguamiento ζ
+uncertainty-param-hist-f0 = frecuencia natural f0
+uncertainty-param-hist-q = factor de calidad Q
+uncertainty-param-hist-bandwidth = ancho de banda
+uncertainty-param-hist-settling-time = tiempo de establecimiento
+uncertainty-readout-zeta-min = ζ, mínimo (exacto)
+uncertainty-readout-zeta-max = ζ, máximo (exacto)
+uncertainty-readout-wn-min = ωₙ, mínima (exacta)
+uncertainty-readout-wn-max = ωₙ, máxima (exacta)
+uncertainty-readout-Q-min = Q, mínimo (exacto)
+uncertainty-readout-Q-max = Q, máximo (exacto)
+uncertainty-readout-yield = proporción dentro de especificación
+uncertainty-readout-zeta-p5 = ζ, percentil 5
+uncertainty-readout-zeta-p95 = ζ, percentil 95
+uncertainty-readout-Q-p5 = Q, percentil 5
+uncertainty-readout-Q-p95 = Q, percentil 95
+uncertainty-readout-draws = sorteos
+uncertainty-readout-compute-time = tiempo de cálculo de Monte Carlo
+uncertainty-plot-band = Banda de respuestas libres dentro de la tolerancia
+uncertainty-plot-zeta-hist = Monte Carlo: coeficiente de amortiguamiento ζ
+uncertainty-plot-hist = Monte Carlo: magnitud elegida
+uncertainty-preset-1 = Diseño con ζ = 1 y masa ±10 %
+uncertainty-preset-2 = Diseño con ζ = 0,7 y masa ±10 %
+uncertainty-preset-3 = RLC con componentes al 5 %
+uncertainty-preset-4 = RLC con componentes al 20 %
+
+### paper
+
+paper-title = El artículo, comprobado
+paper-summary = Zeta Lab se construyó a partir de un artículo sobre ecuaciones diferenciales de segundo orden en sistemas mecánicos y eléctricos (Ihenacho, Samuel, Okechukwu et al., Science Publishing Group, 2026). Aquí están todas sus figuras y tablas, dibujadas en vivo por la demostración que las reproduce, y todas las cifras que afirma, comprobadas: cada afirmación muestra el valor del artículo, el valor que calcula la aplicación y un veredicto. Siga un enlace para abrir la demostración exactamente en ese estado.
+paper-readout-claims = afirmaciones comprobadas
+paper-readout-confirmed = afirmaciones confirmadas
+paper-readout-differs = afirmaciones que difieren
+paper-plot-fig1a = Figura 1(a)
+paper-plot-fig1b = Figura 1(b)
+paper-plot-fig2a = Figura 2(a)
+paper-plot-fig2b = Figura 2(b)
+paper-plot-fig3a = Figura 3(a)
+paper-plot-fig3b = Figura 3(b)
+paper-plot-fig4a = Figura 4(a)
+paper-plot-fig4b = Figura 4(b)
+paper-plot-fig5 = Figura 5
+paper-plot-table1 = Tabla 1
+paper-plot-table2 = Tabla 2
+paper-plot-table3 = Tabla 3

@@ -1,0 +1,182 @@
+//! The loaded catalogues and the active language. The module is single-threaded in the
+//! browser; natively each test thread has its own state, English unless it chooses.
+
+use super::locale::{self, Locale, Source};
+use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
+use std::cell::RefCell;
+
+/// The English catalogue, the source of every message id and the fallback.
+pub const ENGLISH_FTL: &str = include_str!("../../locales/en.ftl");
+
+type Bundle = FluentBundle<FluentResource>;
+
+struct State {
+    active: &'static Locale,
+    /// `(tag, bundle)` of every language loaded so far; English is built on first use.
+    bundles: Vec<(&'static str, Bundle)>,
+    /// Ids the active catalogue lacked since the last [`take_missing`] (shown in English).
+    missing: std::collections::BTreeSet<String>,
+}
+
+thread_local! {
+    static STATE: RefCell<State> = RefCell::new(State {
+        active: locale::english(),
+        bundles: Vec::new(),
+        missing: std::collections::BTreeSet::new(),
+    });
+}
+
+/// Formats Fluent number arguments (counts) with the active language's digits.
+fn format_value(v: &FluentValue, _: &intl_memoizer::IntlLangMemoizer) -> Option<String> {
+    match v {
+        FluentValue::Number(n) => {
+            let decimals = n
+                .options
+                .minimum_fraction_digits
+                .or(n.options.maximum_fraction_digits)
+                .unwrap_or(if n.value.fract() == 0.0 { 0 } else { 2 });
+            Some(super::number::fixed(n.value, decimals))
+        }
+        _ => None,
+    }
+}
+
+fn new_bundle(l: &'static Locale, ftl: &str) -> Result<Bundle, Vec<String>> {
+    let mut bundle = Bundle::new(vec![l.rules_id()]);
+    bundle.set_use_isolating(l.dir == locale::Dir::Rtl);
+    bundle.set_formatter(Some(format_value));
+    if let Source::Pseudo(transform) = l.source {
+        bundle.set_transform(Some(transform));
+    }
+    let mut errors = Vec::new();
+    let resource = match FluentResource::try_new(ftl.to_string()) {
+        Ok(r) => r,
+        Err((r, errs)) => {
+            errors.extend(errs.iter().map(|e| format!("{}: {e:?}", l.tag)));
+            r
+        }
+    };
+    if let Err(errs) = bundle.add_resource(resource) {
+        errors.extend(errs.iter().map(|e| format!("{}: {e}", l.tag)));
+    }
+    if errors.is_empty() {
+        Ok(bundle)
+    } else {
+        Err(errors)
+    }
+}
+
+/// Loads the catalogue of language `tag` from its `.ftl` text (fetched by the page).
+/// A catalogue with syntax errors keeps its good messages; the errors are returned so
+/// the page can log them.
+pub fn load(tag: &str, ftl: &str) -> Result<(), Vec<String>> {
+    let Some(l) = locale::by_tag(tag).filter(|l| matches!(l.source, Source::File)) else {
+        return Err(vec![format!("{tag}: not a language with a catalogue file")]);
+    };
+    let (bundle, errors) = match new_bundle(l, ftl) {
+        Ok(b) => (b, Vec::new()),
+        Err(errors) => {
+            // Keep what parsed: rebuild leniently.
+            let mut b = Bundle::new(vec![l.rules_id()]);
+            b.set_use_isolating(l.dir == locale::Dir::Rtl);
+            b.set_formatter(Some(format_value));
+            let r = FluentResource::try_new(ftl.to_string()).unwrap_or_else(|(r, _)| r);
+            b.add_resource_overriding(r);
+            (b, errors)
+        }
+    };
+    STATE.with(|s| {
+        let mut s = s.borrow_mut();
+        s.bundles.retain(|(t, _)| *t != l.tag);
+        s.bundles.push((l.tag, bundle));
+    });
+    if errors.is_empty() {
+        Ok(())
+    } else {
+        Err(errors)
+    }
+}
+
+/// Whether the messages of `l` are available (built in, pseudo, or loaded).
+pub fn is_loaded(l: &Locale) -> bool {
+    !matches!(l.source, Source::File)
+        || STATE.with(|s| s.borrow().bundles.iter().any(|(t, _)| *t == l.tag))
+}
+
+/// Makes `l` the active language. A file language whose catalogue is not loaded yet
+/// shows English until [`load`] brings it.
+pub fn set_active(l: &'static Locale) {
+    STATE.with(|s| s.borrow_mut().active = l);
+}
+
+/// The active language.
+pub fn active() -> &'static Locale {
+    STATE.with(|s| s.borrow().active)
+}
+
+fn ensure_builtin(s: &mut State, l: &'static Locale) {
+    if matches!(l.source, Source::File) || s.bundles.iter().any(|(t, _)| *t == l.tag) {
+        return;
+    }
+    // The English catalogue is compiled in and tested, so it always parses.
+    if let Ok(b) = new_bundle(l, ENGLISH_FTL) {
+        s.bundles.push((l.tag, b));
+    }
+}
+
+/// Formats message `id` in `l`'s bundle; `None` if that bundle lacks it.
+fn format_in(s: &State, tag: &str, id: &str, args: Option<&FluentArgs>) -> Option<String> {
+    let (_, bundle) = s.bundles.iter().find(|(t, _)| *t == tag)?;
+    let pattern = bundle.get_message(id)?.value()?;
+    let mut errors = Vec::new();
+    Some(
+        bundle
+            .format_pattern(pattern, args, &mut errors)
+            .into_owned(),
+    )
+}
+
+/// Message `id` in the active language, falling back to English; the id itself (which
+/// the catalogue tests catch) if no catalogue has it.
+pub fn format(id: &str, args: Option<&FluentArgs>) -> String {
+    STATE.with(|cell| {
+        let mut s = cell.borrow_mut();
+        let active = s.active;
+        ensure_builtin(&mut s, active);
+        ensure_builtin(&mut s, locale::english());
+        if let Some(text) = format_in(&s, active.tag, id, args) {
+            return text;
+        }
+        if matches!(active.source, Source::File) {
+            s.missing.insert(id.to_string());
+        }
+        format_in(&s, "en", id, args).unwrap_or_else(|| id.to_string())
+    })
+}
+
+/// Message `id` of the active language if its catalogue has one; else `english`
+/// (transformed, for a pseudo-locale). For the strings the demo declarations carry.
+pub fn declared(id: &str, english: &str) -> String {
+    STATE.with(|cell| {
+        let mut s = cell.borrow_mut();
+        let active = s.active;
+        match active.source {
+            Source::Builtin => english.to_string(),
+            Source::Pseudo(transform) => transform(english).into_owned(),
+            Source::File => format_in(&s, active.tag, id, None).unwrap_or_else(|| {
+                s.missing.insert(id.to_string());
+                english.to_string()
+            }),
+        }
+    })
+}
+
+/// The ids shown in English because the active catalogue lacked them, since the last
+/// call (the end-to-end tests read this to find untranslated messages by id).
+pub fn take_missing() -> Vec<String> {
+    STATE.with(|s| {
+        std::mem::take(&mut s.borrow_mut().missing)
+            .into_iter()
+            .collect()
+    })
+}
