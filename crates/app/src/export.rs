@@ -19,7 +19,12 @@ fn csv_field(s: &str) -> String {
 /// its unit, then a header row and the data. Series sharing one x grid become columns of
 /// one table; otherwise the table is long (`series, x, y`).
 pub fn csv(demo: &str, params: &[(&str, f64, &str)], fig: &Figure) -> String {
-    let mut out = format!("# Zeta Lab, demo {demo}: {}\n", fig.title);
+    let heading = crate::t!(
+        "export-csv-heading",
+        demo = demo,
+        title = fig.title.as_str()
+    );
+    let mut out = format!("# {heading}\n");
     for (key, value, unit) in params {
         let unit = if unit.is_empty() {
             String::new()
@@ -37,7 +42,7 @@ pub fn csv(demo: &str, params: &[(&str, f64, &str)], fig: &Figure) -> String {
     };
     let label = |i: usize, l: &str| {
         let l = if l.is_empty() {
-            format!("series {}", i + 1)
+            crate::t!("export-series", n = i + 1)
         } else {
             l.to_string()
         };

@@ -17,6 +17,17 @@ pub fn regime(r: zeta_solver::Regime) -> String {
     }
 }
 
+/// `v` with the digits of its shortest round-trip form (`0.2`, `1500`, `1e-7`), in the
+/// interface language's separators: for values a user typed or a declaration set.
+pub fn shortest(v: f64) -> String {
+    let s = format!("{v}");
+    if s.contains(['e', 'N', 'i']) {
+        return s;
+    }
+    let decimals = s.split_once('.').map_or(0, |(_, f)| f.len());
+    crate::i18n::number::fixed(v, decimals)
+}
+
 /// Formats `v` with `sig` significant digits and an SI prefix for `unit`
 /// (`0.0012 s` → `1.20 ms`). Dimensionless values and percentages get no prefix.
 pub fn si(v: f64, unit: &str, sig: usize) -> String {

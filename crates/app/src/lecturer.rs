@@ -6,8 +6,10 @@
 //! Every value from outside still passes through [`crate::params`]: overrides are parsed
 //! with [`parse_number`] and may only narrow the declared range, never widen it.
 
+use crate::format::shortest;
 use crate::params::{parse_number, parse_query, Notice};
 use crate::spec::{DemoSpec, Kind, Scale};
+use crate::t;
 use serde::Serialize;
 
 /// Version of the [`Schema`] layout; `docs/zeta-schema.json` pins the same number.
@@ -165,18 +167,24 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
                 } else {
                     notices.push(notice(
                         key,
-                        format!(
-                            "{} ({key}): range \u{201c}{shown}\u{201d} is empty inside {} … {}; keeping the full range.",
-                            p.label, p.min, p.max
+                        t!(
+                            "notice-range-empty",
+                            label = p.display_label(),
+                            key = key,
+                            value = shown,
+                            min = shortest(p.min),
+                            max = shortest(p.max)
                         ),
                     ));
                 }
             }
             None => notices.push(notice(
                 key,
-                format!(
-                    "{} ({key}): range \u{201c}{shown}\u{201d} is not two numbers \u{201c}low,high\u{201d}; keeping the full range.",
-                    p.label
+                t!(
+                    "notice-range-not-two-numbers",
+                    label = p.display_label(),
+                    key = key,
+                    value = shown
                 ),
             )),
         }
@@ -196,11 +204,13 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
                 let shown: String = v.chars().take(40).filter(|c| !c.is_control()).collect();
                 notices.push(notice(
                     key,
-                    format!(
-                        "{} ({key}): step \u{201c}{shown}\u{201d} is not a number between 0 and {}; keeping {}.",
-                        p.label,
-                        p.max - p.min,
-                        p.step
+                    t!(
+                        "notice-step-invalid",
+                        label = p.display_label(),
+                        key = key,
+                        value = shown,
+                        span = shortest(p.max - p.min),
+                        step = shortest(p.step)
                     ),
                 ));
             }

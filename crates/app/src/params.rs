@@ -4,7 +4,9 @@
 //! and clamps them into the declared range. Anything else is replaced by the default, and a
 //! [`Notice`] says what happened, so the page can tell the user without blocking.
 
+use crate::format::shortest;
 use crate::spec::{DemoSpec, Kind, ParamSpec};
+use crate::t;
 use serde::Serialize;
 
 /// A non-blocking message about an input that was corrected.
@@ -74,7 +76,18 @@ pub fn resolve_value(p: &ParamSpec, raw: &str) -> (f64, Option<Notice>) {
             return match raw.trim().to_ascii_lowercase().as_str() {
                 "1" | "true" | "on" | "yes" => (1.0, None),
                 "0" | "false" | "off" | "no" => (0.0, None),
-                _ => (p.default, Some(invalid(p, &shown, "is not on or off"))),
+                _ => (
+                    p.default,
+                    Some(notice(
+                        p,
+                        t!(
+                            "notice-not-a-toggle",
+                            label = p.display_label(),
+                            key = p.key,
+                            value = shown
+                        ),
+                    )),
+                ),
             };
         }
         Kind::Choice => {
@@ -86,8 +99,14 @@ pub fn resolve_value(p: &ParamSpec, raw: &str) -> (f64, Option<Notice>) {
                 Ok(i) if i < p.options.len() => (i as f64, None),
                 _ => {
                     let keys: Vec<&str> = p.options.iter().map(|o| o.key).collect();
-                    let why = format!("is not one of {}", keys.join(", "));
-                    (p.default, Some(invalid(p, &shown, &why)))
+                    let message = t!(
+                        "notice-not-an-option",
+                        label = p.display_label(),
+                        key = p.key,
+                        value = shown,
+                        options = keys.join(", ")
+                    );
+                    (p.default, Some(notice(p, message)))
                 }
             };
         }
@@ -96,44 +115,44 @@ pub fn resolve_value(p: &ParamSpec, raw: &str) -> (f64, Option<Notice>) {
     match parse_number(raw) {
         None => (
             p.default,
-            Some(Notice {
-                key: p.key.to_string(),
-                message: format!(
-                    "{} ({}): \u{201c}{}\u{201d} is not a number; using the default {}.",
-                    p.label, p.key, shown, p.default
+            Some(notice(
+                p,
+                t!(
+                    "notice-not-a-number",
+                    label = p.display_label(),
+                    key = p.key,
+                    value = shown,
+                    default = shortest(p.default)
                 ),
-            }),
+            )),
         ),
         Some(v) if v < p.min || v > p.max => {
             let c = v.clamp(p.min, p.max);
             (
                 c,
-                Some(Notice {
-                    key: p.key.to_string(),
-                    message: format!(
-                        "{} ({}) = {} is outside {} … {}{}; using {}.",
-                        p.label,
-                        p.key,
-                        shown,
-                        p.min,
-                        p.max,
-                        unit_suffix(p.unit),
-                        c
+                Some(notice(
+                    p,
+                    t!(
+                        "notice-out-of-range",
+                        label = p.display_label(),
+                        key = p.key,
+                        value = shown,
+                        min = shortest(p.min),
+                        max = shortest(p.max),
+                        unit = unit_suffix(p.unit),
+                        used = shortest(c)
                     ),
-                }),
+                )),
             )
         }
         Some(v) => (v, None),
     }
 }
 
-fn invalid(p: &ParamSpec, shown: &str, why: &str) -> Notice {
+fn notice(p: &ParamSpec, message: String) -> Notice {
     Notice {
         key: p.key.to_string(),
-        message: format!(
-            "{} ({}): \u{201c}{}\u{201d} {}; using the default.",
-            p.label, p.key, shown, why
-        ),
+        message,
     }
 }
 

@@ -68,9 +68,22 @@ pub struct ParamSpec {
     /// otherwise (`web/conditional.js`); its value still counts, and a URL may set it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub visible_when: Option<(&'static str, usize)>,
+    /// The id of the demo that declares it (set by the declaration; it names the label's
+    /// message, see [`ParamSpec::display_label`]).
+    #[serde(skip)]
+    pub demo: &'static str,
 }
 
 impl ParamSpec {
+    /// The label in the interface language (message `<demo>-param-<key>`).
+    pub fn display_label(&self) -> String {
+        use crate::i18n::declared;
+        declared::tr(
+            &format!("{}-param-{}", self.demo, declared::slug(self.key)),
+            self.label,
+        )
+    }
+
     /// A linear slider.
     pub fn linear(
         key: &'static str,
@@ -93,6 +106,7 @@ impl ParamSpec {
             kind: Kind::Slider,
             options: Vec::new(),
             visible_when: None,
+            demo: "",
         }
     }
 

@@ -27,7 +27,7 @@ pub use readout::{Readout, ReadoutDef};
 
 use crate::demos::Frame;
 use crate::params::Params;
-use crate::spec::{DemoSpec, PlotSpec, Preset, Table};
+use crate::spec::{DemoSpec, ParamSpec, PlotSpec, Preset, Table};
 
 /// Everything a demo declares: the typed parameters `P` it reads, the readouts it shows
 /// from its results `R`, its plots, presets and text.
@@ -83,7 +83,14 @@ impl<P, R> Declaration<P, R> {
             title: self.title,
             summary: self.summary,
             equation_mathml: self.equation_mathml,
-            params: self.params.iter().map(|p| p.spec().clone()).collect(),
+            params: self
+                .params
+                .iter()
+                .map(|p| ParamSpec {
+                    demo: self.id,
+                    ..p.spec().clone()
+                })
+                .collect(),
             readouts: self.readouts.iter().map(ReadoutDef::spec).collect(),
             plots: self.plots.clone(),
             primary_plot: if self.primary_plot.is_empty() {

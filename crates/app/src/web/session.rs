@@ -1,7 +1,7 @@
 //! [`Session`]: one open demo, its parameters, canvases and last figures.
 
 use super::result::{Description, SetResult, UpdateResult};
-use super::translate::{translate_figure, translate_notice, translate_spec};
+use super::translate::{translate_figure, translate_spec};
 use super::{js_err, lang, theme, to_js};
 use crate::canvas::{Canvas, Measured};
 use crate::demos::{self, Demo, Frame};
@@ -71,9 +71,6 @@ impl Session {
         let (params, more) = resolve_query(&self.spec, query);
         notices.extend(more);
         self.params = params;
-        for n in &mut notices {
-            translate_notice(&self.spec, n);
-        }
         to_js(&notices)
     }
 
@@ -81,12 +78,7 @@ impl Session {
     /// `{value, notice}`, or `undefined` for an unknown key.
     pub fn set(&mut self, key: &str, raw: &str) -> Result<JsValue, JsError> {
         match self.params.set_raw(&self.spec, key, raw) {
-            Some((value, mut notice)) => {
-                if let Some(n) = &mut notice {
-                    translate_notice(&self.spec, n);
-                }
-                to_js(&SetResult { value, notice })
-            }
+            Some((value, notice)) => to_js(&SetResult { value, notice }),
             None => Ok(JsValue::UNDEFINED),
         }
     }

@@ -1,9 +1,7 @@
 //! The spec, figures and notices in the page's language (keys, symbols and units unchanged).
 
-use super::lang;
 use crate::i18n::declared::{self, slug};
 use crate::i18n::{tr, Lang};
-use crate::params::Notice;
 use crate::spec::DemoSpec;
 use serde::Serialize;
 
@@ -227,17 +225,4 @@ fn presets_as_objects<S: serde::Serializer>(
         values: &'a [(&'static str, f64)],
     }
     s.collect_seq(v.iter().map(|(label, values)| P { label, values }))
-}
-
-/// A notice in the page's language: its message, with the parameter's label too.
-pub(super) fn translate_notice(spec: &DemoSpec, n: &mut Notice) {
-    let l = lang();
-    if l == Lang::En {
-        return;
-    }
-    let mut msg = n.message.clone();
-    if let Some(p) = spec.param(&n.key) {
-        msg = msg.replace(p.label, &tr(l, p.label));
-    }
-    n.message = tr(l, &msg).into_owned();
 }
