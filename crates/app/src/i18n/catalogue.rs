@@ -11,7 +11,6 @@ pub const ENGLISH_FTL: &str = include_str!("../../locales/en.ftl");
 type Bundle = FluentBundle<FluentResource>;
 
 struct State {
-    active: &'static Locale,
     /// `(tag, bundle)` of every language loaded so far; English is built on first use.
     bundles: Vec<(&'static str, Bundle)>,
     /// Ids the active catalogue lacked since the last [`take_missing`] (shown in English).
@@ -19,11 +18,15 @@ struct State {
 }
 
 thread_local! {
-    static STATE: RefCell<State> = RefCell::new(State {
-        active: locale::english(),
-        bundles: Vec::new(),
-        missing: std::collections::BTreeSet::new(),
-    });
+    /// The active language, apart from [`STATE`] so that the number formatter, which
+    /// Fluent calls while a bundle is borrowed, can read it.
+    static ACTIVE: std::cell::Cell<&'static Locale> = std::cell::Cell::new(locale::english());
+    static STATE: RefCell<State> = const {
+        RefCell::new(State {
+            bundles: Vec::new(),
+            missing: std::collections::BTreeSet::new(),
+        })
+    };
 }
 
 /// Formats Fluent number arguments (counts) with the active language's digits.
@@ -106,12 +109,12 @@ pub fn is_loaded(l: &Locale) -> bool {
 /// Makes `l` the active language. A file language whose catalogue is not loaded yet
 /// shows English until [`load`] brings it.
 pub fn set_active(l: &'static Locale) {
-    STATE.with(|s| s.borrow_mut().active = l);
+    ACTIVE.with(|a| a.set(l));
 }
 
 /// The active language.
 pub fn active() -> &'static Locale {
-    STATE.with(|s| s.borrow().active)
+    ACTIVE.with(|a| a.get())
 }
 
 fn ensure_builtin(s: &mut State, l: &'static Locale) {
@@ -141,7 +144,7 @@ fn format_in(s: &State, tag: &str, id: &str, args: Option<&FluentArgs>) -> Optio
 pub fn format(id: &str, args: Option<&FluentArgs>) -> String {
     STATE.with(|cell| {
         let mut s = cell.borrow_mut();
-        let active = s.active;
+        let active = active();
         ensure_builtin(&mut s, active);
         ensure_builtin(&mut s, locale::english());
         if let Some(text) = format_in(&s, active.tag, id, args) {
@@ -159,7 +162,7 @@ pub fn format(id: &str, args: Option<&FluentArgs>) -> String {
 pub fn declared(id: &str, english: &str) -> String {
     STATE.with(|cell| {
         let mut s = cell.borrow_mut();
-        let active = s.active;
+        let active = active();
         match active.source {
             Source::Builtin => english.to_string(),
             Source::Pseudo(transform) => transform(english).into_owned(),
