@@ -121,6 +121,11 @@ regimes-poles = Poles at { $re1 } { $sign1 } { $im1 }i and { $re2 } { $sign2 } {
     } half-plane.
 regimes-schematic = Mass on a spring and damper at t = { $time }: displaced { $displacement } from rest.
 
+## Schematics
+
+schematic-title = Schematic
+schematic-circuit = Circuit
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

@@ -113,6 +113,11 @@ regimes-poles = Polos en { $re1 } { $sign1 } { $im1 }i y { $re2 } { $sign2 } { $
     }.
 regimes-schematic = Masa sobre resorte y amortiguador en t = { $time }: desplazada { $displacement } del reposo.
 
+## Esquemas
+
+schematic-title = Esquema
+schematic-circuit = Circuito
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

@@ -1,0 +1,5 @@
+## Schémas
+
+schematic-title = Schéma
+schematic-circuit = Circuit
+

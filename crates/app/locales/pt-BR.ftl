@@ -1,0 +1,5 @@
+## Esquemas
+
+schematic-title = Esquema
+schematic-circuit = Circuito
+

@@ -166,7 +166,12 @@ pub fn mass_spring_damper(x: f64, u: f64, labels: &MassLabels<'_>, description: 
     let mass_c = 2.4 + x * amp;
     let mass_h = 0.8;
     let bottom = mass_c - mass_h / 2.0;
-    let mut fig = frame("Schematic", description, (-1.6, 1.6), (-0.6, 3.6));
+    let mut fig = frame(
+        &crate::t!("schematic-title"),
+        description,
+        (-1.6, 1.6),
+        (-0.6, 3.6),
+    );
     // Ground and base: a hatched line that moves with the road input.
     fig.series
         .push(line(vec![(-1.3, base_y), (1.3, base_y)], INK, 2.5));
@@ -216,7 +221,12 @@ pub fn rlc_loop(current: f64, charge: f64, description: String) -> Figure {
         }
     };
     let (i, q) = (clamp(current), clamp(charge));
-    let mut fig = frame("Circuit", description, (-2.0, 2.0), (-1.6, 1.8));
+    let mut fig = frame(
+        &crate::t!("schematic-circuit"),
+        description,
+        (-2.0, 2.0),
+        (-1.6, 1.8),
+    );
     // Top: inductor coils between (−1, 1) and (1, 1).
     let mut top = vec![(-1.4, 1.0), (-0.8, 1.0)];
     for k in 0..=48 {

@@ -5,8 +5,26 @@ use super::locale::{self, Locale, Source};
 use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
 use std::cell::RefCell;
 
-/// The English catalogue, the source of every message id and the fallback.
-pub const ENGLISH_FTL: &str = include_str!("../../locales/en.ftl");
+/// The hand-written English messages, the fallback of every language (`locales/en.ftl`
+/// without its generated block of declared strings, which [`declared_english`] reads
+/// from the declarations themselves; see `build.rs`).
+pub const ENGLISH_FTL: &str = include_str!(concat!(env!("OUT_DIR"), "/en-messages.ftl"));
+
+/// The English text of a declared string's id (`regimes-plot-response`), from the demo
+/// declarations; built on first use.
+fn declared_english(id: &str) -> Option<&'static str> {
+    use std::collections::HashMap;
+    use std::sync::OnceLock;
+    static MAP: OnceLock<HashMap<String, &'static str>> = OnceLock::new();
+    MAP.get_or_init(|| {
+        crate::demos::ids()
+            .filter_map(crate::demos::create)
+            .flat_map(|d| super::declared::strings(&d.spec()))
+            .collect()
+    })
+    .get(id)
+    .copied()
+}
 
 type Bundle = FluentBundle<FluentResource>;
 
@@ -153,7 +171,14 @@ pub fn format(id: &str, args: Option<&FluentArgs>) -> String {
         if matches!(active.source, Source::File) {
             s.missing.insert(id.to_string());
         }
-        format_in(&s, "en", id, args).unwrap_or_else(|| id.to_string())
+        if let Some(text) = format_in(&s, "en", id, args) {
+            return text;
+        }
+        match (declared_english(id), active.source) {
+            (Some(english), Source::Pseudo(transform)) => transform(english).into_owned(),
+            (Some(english), _) => english.to_string(),
+            (None, _) => id.to_string(),
+        }
     })
 }
 
@@ -182,4 +207,32 @@ pub fn take_missing() -> Vec<String> {
             .into_iter()
             .collect()
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn declared_ids_fall_back_to_the_declarations_and_pseudo_transforms_them() {
+        assert!(!ENGLISH_FTL.contains("regimes-plot-response ="));
+        assert_eq!(format("regimes-plot-response", None), "Free response x(t)");
+        set_active(locale::by_tag("en-XA").unwrap_or(locale::english()));
+        let pseudo = format("regimes-plot-response", None);
+        set_active(locale::english());
+        assert!(pseudo.starts_with('[') && pseudo.contains("ŕéšþöñšé"), "{pseudo}");
+        assert_eq!(format("no-such-message", None), "no-such-message");
+    }
+
+    #[test]
+    fn a_loaded_catalogue_wins_and_missing_ids_are_recorded() {
+        let fr = locale::by_tag("fr").unwrap_or(locale::english());
+        assert!(load("fr", "plot-clipped = rogné\nbroken = {").is_err());
+        set_active(fr);
+        assert_eq!(format("plot-clipped", None), "rogné");
+        assert_eq!(format("axis-time", None), "time t");
+        assert_eq!(take_missing(), vec!["axis-time".to_string()]);
+        set_active(locale::english());
+        assert!(load("xx", "a = b").is_err());
+    }
 }

@@ -11,6 +11,7 @@ mod text;
 use super::Model;
 use crate::declare::{Declaration, Param, ReadoutDef};
 use crate::figure::Figure;
+use crate::format;
 use crate::spec::{PlotSpec, Preset};
 use zeta_solver::metrics::{free::FreeMetrics, SettlingBand};
 use zeta_solver::{Complex, FreeResponse, Regime, SecondOrder};
@@ -106,7 +107,7 @@ impl Model for Regimes {
                 ),
             ],
             readouts: vec![
-                ReadoutDef::text("regime", "regime", |r| r.regime.key().to_string()),
+                ReadoutDef::text("regime", "regime", |r| format::regime(r.regime)),
                 ReadoutDef::number("wn", "natural frequency ωₙ", "rad/s", 4, |r| {
                     r.sys.natural_frequency()
                 }),
