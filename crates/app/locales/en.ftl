@@ -138,6 +138,40 @@ rlc-describe-voltage-overdamped = R = { $resistance } above the critical { $crit
        *[no] never settles
     }.
 
+### analogy
+
+analogy-axis-response = normalised response
+analogy-axis-energy = energy
+analogy-series-x = x/x₀ mass
+analogy-series-q = q/q₀ circuit
+analogy-series-v = v/(x₀ωₙ) mass
+analogy-series-i = i/(q₀ω₀) circuit
+analogy-series-spring = ½kx² spring
+analogy-series-capacitor = ½q²/C capacitor
+analogy-series-mass = ½mv² mass
+analogy-series-inductor = ½Li² inductor
+analogy-series-total-mass = total, mass
+analogy-series-total-circuit = total, circuit
+analogy-caption-mechanical = mechanical
+analogy-caption-electrical = electrical
+analogy-schematic-title = Mechanical and electrical twins
+analogy-describe-responses = { $regime } (ζ = { $zeta }): the mechanical x/x₀ and electrical q/q₀ coincide, as do the velocity v/(x₀ωₙ) and current i/(q₀ω₀) ({ $same ->
+        [exact] identical to the last digit
+       *[close] largest difference { $difference }
+    }); { $motion ->
+        [decaying] both oscillate at ω_d = { $frequency } and decay with time constant 1/(ζωₙ) = { $time }
+        [lasting] both oscillate for ever at ω₀ = ωₙ = { $frequency }
+       *[creeping] both creep back to rest without oscillating
+    }.
+analogy-describe-energy = At t = 0 all { $energy } is stored in the spring, and equally in the capacitor. { $exchange ->
+        [swings] It swings to the mass (inductor), at most { $peak } at once, and back, twice per cycle
+       *[passes] Without oscillating, at most { $peak } passes through the mass (inductor)
+    }; { $loss ->
+        [none] with no damper (resistor) it is all still there after { $time }
+       *[heat] the damper c (resistor R) turns it into heat, leaving { $left } ({ $percent }) after { $time }
+    }. The mechanical and electrical curves coincide.
+analogy-schematic = At t = { $time }: the mass is displaced { $displacement } and moves at { $velocity }; the capacitor holds { $charge } and the current is { $current }. The same numbers in different units.
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

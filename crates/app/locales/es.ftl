@@ -130,6 +130,40 @@ rlc-describe-voltage-overdamped = R = { $resistance }, por encima de la R críti
        *[no] nunca se establece
     }.
 
+### analogy
+
+analogy-axis-response = respuesta normalizada
+analogy-axis-energy = energía
+analogy-series-x = x/x₀ masa
+analogy-series-q = q/q₀ circuito
+analogy-series-v = v/(x₀ωₙ) masa
+analogy-series-i = i/(q₀ω₀) circuito
+analogy-series-spring = ½kx² resorte
+analogy-series-capacitor = ½q²/C condensador
+analogy-series-mass = ½mv² masa
+analogy-series-inductor = ½Li² bobina
+analogy-series-total-mass = total, masa
+analogy-series-total-circuit = total, circuito
+analogy-caption-mechanical = mecánico
+analogy-caption-electrical = eléctrico
+analogy-schematic-title = Gemelos mecánico y eléctrico
+analogy-describe-responses = { $regime } (ζ = { $zeta }): coinciden la x/x₀ mecánica y la q/q₀ eléctrica, así como la velocidad v/(x₀ωₙ) y la corriente i/(q₀ω₀) ({ $same ->
+        [exact] idénticas hasta la última cifra
+       *[close] diferencia máxima { $difference }
+    }); { $motion ->
+        [decaying] ambas oscilan a ω_d = { $frequency } y decaen con constante de tiempo 1/(ζωₙ) = { $time }
+        [lasting] ambas oscilan indefinidamente a ω₀ = ωₙ = { $frequency }
+       *[creeping] ambas vuelven lentamente al reposo sin oscilar
+    }.
+analogy-describe-energy = En t = 0, toda la energía, { $energy }, está almacenada en el resorte, e igualmente en el condensador. { $exchange ->
+        [swings] Pasa a la masa (bobina), como mucho { $peak } a la vez, y vuelve, dos veces por ciclo
+       *[passes] Sin oscilar, como mucho { $peak } pasa por la masa (bobina)
+    }; { $loss ->
+        [none] sin amortiguador (resistencia) sigue toda ahí tras { $time }
+       *[heat] el amortiguador c (resistencia R) la convierte en calor y quedan { $left } ({ $percent }) tras { $time }
+    }. Las curvas mecánica y eléctrica coinciden.
+analogy-schematic = En t = { $time }: la masa está desplazada { $displacement } y se mueve a { $velocity }; el condensador tiene { $charge } y la corriente es { $current }. Los mismos números en otras unidades.
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

@@ -53,3 +53,119 @@ rlc-preset-3 = 欠阻尼，R = 5 Ω
 rlc-preset-4 = 临界阻尼，R = 10 Ω
 rlc-preset-5 = 过阻尼，R = 20 Ω
 
+### analogy
+
+analogy-axis-response = 归一化响应
+analogy-axis-energy = 能量
+analogy-series-x = x/x₀ 质量
+analogy-series-q = q/q₀ 电路
+analogy-series-v = v/(x₀ωₙ) 质量
+analogy-series-i = i/(q₀ω₀) 电路
+analogy-series-spring = ½kx² 弹簧
+analogy-series-capacitor = ½q²/C 电容
+analogy-series-mass = ½mv² 质量
+analogy-series-inductor = ½Li² 电感
+analogy-series-total-mass = 总能量（机械）
+analogy-series-total-circuit = 总能量（电路）
+analogy-caption-mechanical = 机械
+analogy-caption-electrical = 电气
+analogy-schematic-title = 机械与电气的孪生系统
+analogy-describe-responses = { $regime }（ζ = { $zeta }）：机械的 x/x₀ 与电气的 q/q₀ 重合，速度 v/(x₀ωₙ) 与电流 i/(q₀ω₀) 也重合（{ $same ->
+        [exact] 直到最后一位都相同
+       *[close] 最大差值 { $difference }
+    }）；{ $motion ->
+        [decaying] 两者都以 ω_d = { $frequency } 振荡，并以时间常数 1/(ζωₙ) = { $time } 衰减
+        [lasting] 两者都以 ω₀ = ωₙ = { $frequency } 持续振荡
+       *[creeping] 两者都缓慢回到静止，不发生振荡
+    }。
+analogy-describe-energy = t = 0 时，全部能量 { $energy } 储存在弹簧中，同样也储存在电容中。{ $exchange ->
+        [swings] 能量转入质量（电感），同一时刻最多 { $peak }，然后返回，每个周期两次
+       *[passes] 不发生振荡，最多有 { $peak } 经过质量（电感）
+    }；{ $loss ->
+        [none] 没有阻尼器（电阻），{ $time } 后能量仍全部保留
+       *[heat] 阻尼器 c（电阻 R）将其转化为热，{ $time } 后剩余 { $left }（{ $percent }）
+    }。机械曲线与电气曲线重合。
+analogy-schematic = t = { $time } 时：质量位移 { $displacement }，速度 { $velocity }；电容电荷 { $charge }，电流 { $current }。数值相同，只是单位不同。
+analogy-title = 一个方程，两个系统
+analogy-summary = 由弹簧和阻尼器支承的质量，与电感–电阻–电容串联回路，满足同一个二阶方程。在力–电压类比中，质量 m ↔ 电感 L，阻尼 c ↔ 电阻 R，刚度 k ↔ 1/C，力 F ↔ 电压 E，位移 x ↔ 电荷 q（因此速度 ↔ 电流）。这里电路取与机械系统相同的数值（L 以 H 计 = m 以 kg 计，R 以 Ω 计 = c 以 N·s/m 计，1/C 以 1/F 计 = k 以 N/m 计，q₀ 以 C 计 = x₀ 以 m 计），两者都从静止释放：移动任一滑块，两个系统随之一起变化，它们的归一化响应始终是同一条曲线，能量在弹簧与质量之间的往返与在电容与电感之间完全相同。
+analogy-param-m = 质量（≙ 电感 L）
+analogy-param-c = 阻尼（≙ 电阻 R）
+analogy-param-k = 弹簧刚度（≙ 1/C）
+analogy-param-x0 = 初始位移（≙ 电荷 q₀）
+analogy-readout-m = 质量 m
+analogy-readout-L = 电感 L（≙ 质量 m）
+analogy-readout-c = 阻尼 c
+analogy-readout-R = 电阻 R（≙ 阻尼 c）
+analogy-readout-k = 弹簧刚度 k
+analogy-readout-elastance = 倒电容 1/C（≙ k）
+analogy-readout-compliance = 柔度 1/k（≙ C）
+analogy-readout-C = 电容 C（≙ 1/k）
+analogy-readout-x0 = 初始位移 x₀
+analogy-readout-q0 = 初始电荷 q₀（≙ x₀）
+analogy-readout-wn = 固有频率 ωₙ = √(k/m)
+analogy-readout-w0 = 谐振角频率 ω₀ = 1/√(LC)（≙ ωₙ）
+analogy-readout-zeta = 阻尼比 ζ（两者）
+analogy-readout-regime = 阻尼状态（两者）
+analogy-readout-Q = 品质因数 Q（两者）
+analogy-readout-energy = 储存能量 ½kx₀² = ½q₀²/C
+analogy-plot-responses = 两个系统的归一化响应
+analogy-plot-energy = 能量交换
+analogy-preset-1 = 无摩擦弹簧 ↔ LC 振荡回路（c = R = 0）
+analogy-preset-2 = 轻阻尼 ζ = 0.05
+analogy-preset-3 = 临界阻尼 ζ = 1（c = 2√(mk)，R = 2√(L/C)）
+analogy-preset-4 = 过阻尼 ζ = 2
+analogy-preset-5 = 重而软：m = 4 kg ↔ L = 4 H，k = 25 N/m ↔ C = 40 mF
+analogy-table-caption = 力–电压类比：对 a·y″ + b·y′ + c·y = f(t) 的两种解读，附两个系统的当前数值
+analogy-table-column-1 = 在方程中的角色
+analogy-table-column-2 = 机械
+analogy-table-column-3 = 当前值
+analogy-table-column-4 = 电气
+analogy-table-column-5 = 当前值
+analogy-table-inertia-1 = 惯性 a
+analogy-table-inertia-2 = 质量 m [kg]
+analogy-table-inertia-4 = 电感 L [H]
+analogy-table-dissipation-1 = 耗散 b
+analogy-table-dissipation-2 = 阻尼系数 c [N·s/m]
+analogy-table-dissipation-4 = 电阻 R [Ω]
+analogy-table-stiffness-1 = 刚度 c
+analogy-table-stiffness-2 = 弹簧刚度 k [N/m]
+analogy-table-stiffness-4 = 倒电容 1/C [1/F]
+analogy-table-compliance-1 = 柔度 1/c
+analogy-table-compliance-2 = 柔度 1/k [m/N]
+analogy-table-compliance-4 = 电容 C [F]
+analogy-table-drive-1 = 激励 f(t)
+analogy-table-drive-2 = 力 F [N]
+analogy-table-drive-3 = 0：从静止释放
+analogy-table-drive-4 = 电压 E [V]
+analogy-table-drive-5 = 0：回路中无电源
+analogy-table-coordinate-1 = 坐标 y，初值 y₀
+analogy-table-coordinate-2 = 位移 x，初值 x₀ [m]
+analogy-table-coordinate-4 = 电荷 q，初值 q₀ [C]
+analogy-table-rate-1 = 变化率 y′
+analogy-table-rate-2 = 速度 v = ẋ [m/s]
+analogy-table-rate-3 = 释放时为 0
+analogy-table-rate-4 = 电流 i = q̇ [A]
+analogy-table-rate-5 = 释放时为 0
+analogy-table-natural-frequency-1 = 固有频率 √(c/a)
+analogy-table-natural-frequency-2 = ωₙ = √(k/m) [rad/s]
+analogy-table-natural-frequency-4 = ω₀ = 1/√(LC) [rad/s]
+analogy-table-damping-ratio-1 = 阻尼比 ζ = b/(2√(ac))
+analogy-table-damping-ratio-2 = ζ = c/(2√(mk))
+analogy-table-damping-ratio-4 = ζ = (R/2)·√(C/L)
+analogy-table-quality-factor-1 = 品质因数 Q = √(ac)/b
+analogy-table-quality-factor-2 = Q = √(mk)/c
+analogy-table-quality-factor-4 = Q = √(L/C)/R
+analogy-table-potential-energy-1 = 由刚度储存
+analogy-table-potential-energy-2 = 弹簧 ½kx²，释放时 ½kx₀² [J]
+analogy-table-potential-energy-4 = 电容 ½q²/C，释放时 ½q₀²/C [J]
+analogy-table-kinetic-energy-1 = 由惯性储存
+analogy-table-kinetic-energy-2 = 质量 ½mv² [J]
+analogy-table-kinetic-energy-3 = 释放时为 0
+analogy-table-kinetic-energy-4 = 电感 ½Li² [J]
+analogy-table-kinetic-energy-5 = 释放时为 0
+analogy-table-power-lost-1 = 耗散功率
+analogy-table-power-lost-2 = 阻尼器 c·v² [W]
+analogy-table-power-lost-3 = 释放时为 0
+analogy-table-power-lost-4 = 电阻 R·i² [W]
+analogy-table-power-lost-5 = 释放时为 0
+
