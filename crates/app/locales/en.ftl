@@ -172,6 +172,41 @@ analogy-describe-energy = At t = 0 all { $energy } is stored in the spring, and 
     }. The mechanical and electrical curves coincide.
 analogy-schematic = At t = { $time }: the mass is displaced { $displacement } and moves at { $velocity }; the capacitor holds { $charge } and the current is { $current }. The same numbers in different units.
 
+### universality
+
+universality-axis-response = normalised response y/y₀
+universality-axis-time = normalised time ωₙt
+universality-series-critical = ζ = 1 (critical), for reference
+universality-schematic-title = Machines A and B
+universality-match-off = off
+universality-match-on = on: B has the ωₙ and ζ of A
+universality-match-too-light = not reachable: with its other parameters kept, B cannot go below ζ = { $zeta_min }; A has ζ = { $zeta }
+universality-match-out-of-range = not reachable within the sliders: B would need { $symbol } = { $value }, outside { $low } … { $high }
+universality-match-impossible = not reachable: A has no natural frequency
+universality-describe-normalised = Released from rest: A ({ $machine_a }, ζ = { $zeta_a }) { $behaviour_a ->
+        [forever] oscillates for ever
+        [dies-away] oscillates and dies away
+        [fastest] returns as fast as it can without overshoot
+       *[creeps] creeps back without overshoot
+    }; B ({ $machine_b }, ζ = { $zeta_b }) { $behaviour_b ->
+        [forever] oscillates for ever
+        [dies-away] oscillates and dies away
+        [fastest] returns as fast as it can without overshoot
+       *[creeps] creeps back without overshoot
+    }. { $relation ->
+        [coincide] The two curves coincide (largest difference { $gap }).
+       *[differ] The curves differ by up to { $gap } of y₀.
+    }{ $thermal ->
+        [yes] { " " }A two-capacity thermal system cannot oscillate: its ζ is above 1 for any capacities and resistances.
+       *[no] { "" }
+    }
+universality-describe-realtime = Real time over { $window }: time scale 1/ωₙ of A { $scale_a }, of B { $scale_b }; { $pace ->
+        [faster] B runs { $factor } times faster than A
+        [slower] B runs { $factor } times slower than A
+       *[same] B keeps pace with A exactly
+    }.
+universality-schematic = At t = { $time }: A, { $machine_a }: { $coordinate_a } = { $value_a }; B, { $machine_b }: { $coordinate_b } = { $value_b }.
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

@@ -164,6 +164,41 @@ analogy-describe-energy = En t = 0, toda la energía, { $energy }, está almacen
     }. Las curvas mecánica y eléctrica coinciden.
 analogy-schematic = En t = { $time }: la masa está desplazada { $displacement } y se mueve a { $velocity }; el condensador tiene { $charge } y la corriente es { $current }. Los mismos números en otras unidades.
 
+### universality
+
+universality-axis-response = respuesta normalizada y/y₀
+universality-axis-time = tiempo normalizado ωₙt
+universality-series-critical = ζ = 1 (crítico), como referencia
+universality-schematic-title = Máquinas A y B
+universality-match-off = desactivado
+universality-match-on = activado: B tiene la ωₙ y la ζ de A
+universality-match-too-light = no alcanzable: con sus demás parámetros fijos, B no puede bajar de ζ = { $zeta_min }; A tiene ζ = { $zeta }
+universality-match-out-of-range = no alcanzable dentro de los controles: B necesitaría { $symbol } = { $value }, fuera de { $low } … { $high }
+universality-match-impossible = no alcanzable: A no tiene frecuencia natural
+universality-describe-normalised = Soltadas desde el reposo: A ({ $machine_a }, ζ = { $zeta_a }) { $behaviour_a ->
+        [forever] oscila indefinidamente
+        [dies-away] oscila y se extingue
+        [fastest] vuelve lo más rápido posible sin sobrepasar el equilibrio
+       *[creeps] vuelve lentamente sin sobrepasar el equilibrio
+    }; B ({ $machine_b }, ζ = { $zeta_b }) { $behaviour_b ->
+        [forever] oscila indefinidamente
+        [dies-away] oscila y se extingue
+        [fastest] vuelve lo más rápido posible sin sobrepasar el equilibrio
+       *[creeps] vuelve lentamente sin sobrepasar el equilibrio
+    }. { $relation ->
+        [coincide] Las dos curvas coinciden (diferencia máxima { $gap }).
+       *[differ] Las curvas difieren hasta en { $gap } de y₀.
+    }{ $thermal ->
+        [yes] { " " }Un sistema térmico de dos capacidades no puede oscilar: su ζ supera 1 con cualesquiera capacidades y resistencias.
+       *[no] { "" }
+    }
+universality-describe-realtime = Tiempo real durante { $window }: escala de tiempo 1/ωₙ de A { $scale_a }, de B { $scale_b }; { $pace ->
+        [faster] B va { $factor } veces más rápido que A
+        [slower] B va { $factor } veces más lento que A
+       *[same] B sigue el paso de A exactamente
+    }.
+universality-schematic = En t = { $time }: A, { $machine_a }: { $coordinate_a } = { $value_a }; B, { $machine_b }: { $coordinate_b } = { $value_b }.
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes
@@ -443,7 +478,7 @@ universality-readout-wn-B = frecuencia natural ωₙ de B
 universality-readout-zeta-B = coeficiente de amortiguamiento ζ de B
 universality-readout-regime-B = régimen de B
 universality-readout-wn-ratio = razón de escalas de tiempo ωₙ(B)/ωₙ(A)
-universality-readout-match = igualar
+universality-readout-match = igualación
 universality-plot-normalised = Respuestas normalizadas y/y₀ frente a ωₙt
 universality-plot-realtime = Respuestas en tiempo real
 universality-preset-1 = Masa–resorte y circuito RLC, igualados

@@ -169,3 +169,172 @@ analogy-table-power-lost-3 = 0 au lâcher
 analogy-table-power-lost-4 = résistance R·i² [W]
 analogy-table-power-lost-5 = 0 au lâcher
 
+### universality
+
+universality-axis-response = réponse normalisée y/y₀
+universality-axis-time = temps normalisé ωₙt
+universality-series-critical = ζ = 1 (critique), pour référence
+universality-schematic-title = Machines A et B
+universality-match-off = désactivé
+universality-match-on = activé : B a les mêmes ωₙ et ζ que A
+universality-match-too-light = inaccessible : ses autres paramètres étant conservés, B ne peut pas descendre sous ζ = { $zeta_min } ; A a ζ = { $zeta }
+universality-match-out-of-range = inaccessible avec les curseurs : B nécessiterait { $symbol } = { $value }, hors de { $low } … { $high }
+universality-match-impossible = inaccessible : A n'a pas de pulsation propre
+universality-describe-normalised = Lâchées depuis le repos : A ({ $machine_a }, ζ = { $zeta_a }) { $behaviour_a ->
+        [forever] oscille indéfiniment
+        [dies-away] oscille en s'amortissant
+        [fastest] revient aussi vite que possible sans dépassement
+       *[creeps] revient lentement sans dépassement
+    } ; B ({ $machine_b }, ζ = { $zeta_b }) { $behaviour_b ->
+        [forever] oscille indéfiniment
+        [dies-away] oscille en s'amortissant
+        [fastest] revient aussi vite que possible sans dépassement
+       *[creeps] revient lentement sans dépassement
+    }. { $relation ->
+        [coincide] Les deux courbes coïncident (écart maximal { $gap }).
+       *[differ] Les courbes diffèrent d'au plus { $gap } de y₀.
+    }{ $thermal ->
+        [yes] { " " }Un système thermique à deux capacités ne peut pas osciller : son ζ dépasse 1 quelles que soient ses capacités et ses résistances.
+       *[no] { "" }
+    }
+universality-describe-realtime = Temps réel sur { $window } : échelle de temps 1/ωₙ de A { $scale_a }, de B { $scale_b } ; { $pace ->
+        [faster] B va { $factor } fois plus vite que A
+        [slower] B va { $factor } fois plus lentement que A
+       *[same] B suit exactement le rythme de A
+    }.
+universality-schematic = À t = { $time } : A, { $machine_a } : { $coordinate_a } = { $value_a } ; B, { $machine_b } : { $coordinate_b } = { $value_b }.
+universality-title = Une équation, de nombreuses machines
+universality-summary = Six machines, une équation a·y″ + b·y′ + c·y = f(t). Choisissez une machine pour A et une pour B, et réglez chacune par ses propres paramètres physiques : chacune donne ses propres a, b et c, dans ses propres unités, et donc une pulsation propre ωₙ = √(c/a) et un taux d'amortissement ζ = b/(2√(ac)). Lâchée depuis y₀ au repos, la réponse normalisée y/y₀ d'une machine en fonction de ωₙt ne dépend que de ζ : des machines de même ζ tracent une seule et même courbe. Cochez « accorder » et les paramètres de réglage de B sont calculés pour que ses ωₙ et ζ égalent ceux de A : B se comporte alors exactement comme A, seconde par seconde. Le système thermique à deux capacités n'oscille jamais : b² − 4ac = (τ₁ − τ₂)² + R₁C₂(2τ₁ + 2τ₂ + R₁C₂) > 0, donc son ζ > 1 quelles que soient ses capacités et ses résistances — la chaleur n'a pas d'inertie qui l'emporterait au-delà de l'équilibre.
+universality-param-A = machine A
+universality-param-A-mass-spring = masse–ressort–amortisseur
+universality-param-A-rlc = circuit RLC série
+universality-param-A-u-tube = manomètre à tube en U
+universality-param-A-servo = asservissement de position par moteur à courant continu (commande PD)
+universality-param-A-storey = étage de bâtiment soumis à un mouvement du sol
+universality-param-A-thermal = système thermique à deux capacités
+universality-param-A-m = masse
+universality-param-A-c = coefficient d'amortissement
+universality-param-A-k = raideur du ressort
+universality-param-A-L = inductance
+universality-param-A-R = résistance
+universality-param-A-C = capacité
+universality-param-A-len = longueur de la colonne de liquide
+universality-param-A-bore = diamètre intérieur du tube
+universality-param-A-rho = masse volumique du liquide
+universality-param-A-mu = viscosité dynamique
+universality-param-A-J = inertie du moteur et de la charge
+universality-param-A-Kt = constante de couple du moteur
+universality-param-A-Ra = résistance d'induit
+universality-param-A-Kp = gain proportionnel
+universality-param-A-Kd = gain dérivé
+universality-param-A-mf = masse du plancher
+universality-param-A-h = hauteur d'étage
+universality-param-A-EI = rigidité en flexion de chacun des 4 poteaux
+universality-param-A-cf = coefficient d'amortissement de l'étage
+universality-param-A-C1 = capacité thermique du corps 1
+universality-param-A-R1 = résistance thermique, du corps 1 vers l'ambiance
+universality-param-A-C2 = capacité thermique du corps 2
+universality-param-A-R2 = résistance thermique, du corps 2 vers le corps 1
+universality-param-B = machine B
+universality-param-B-mass-spring = masse–ressort–amortisseur
+universality-param-B-rlc = circuit RLC série
+universality-param-B-u-tube = manomètre à tube en U
+universality-param-B-servo = asservissement de position par moteur à courant continu (commande PD)
+universality-param-B-storey = étage de bâtiment soumis à un mouvement du sol
+universality-param-B-thermal = système thermique à deux capacités
+universality-param-B-m = masse
+universality-param-B-c = coefficient d'amortissement
+universality-param-B-k = raideur du ressort
+universality-param-B-L = inductance
+universality-param-B-R = résistance
+universality-param-B-C = capacité
+universality-param-B-len = longueur de la colonne de liquide
+universality-param-B-bore = diamètre intérieur du tube
+universality-param-B-rho = masse volumique du liquide
+universality-param-B-mu = viscosité dynamique
+universality-param-B-J = inertie du moteur et de la charge
+universality-param-B-Kt = constante de couple du moteur
+universality-param-B-Ra = résistance d'induit
+universality-param-B-Kp = gain proportionnel
+universality-param-B-Kd = gain dérivé
+universality-param-B-mf = masse du plancher
+universality-param-B-h = hauteur d'étage
+universality-param-B-EI = rigidité en flexion de chacun des 4 poteaux
+universality-param-B-cf = coefficient d'amortissement de l'étage
+universality-param-B-C1 = capacité thermique du corps 1
+universality-param-B-R1 = résistance thermique, du corps 1 vers l'ambiance
+universality-param-B-C2 = capacité thermique du corps 2
+universality-param-B-R2 = résistance thermique, du corps 2 vers le corps 1
+universality-param-match = accorder : régler B pour qu'il se comporte comme A (mêmes ωₙ et ζ)
+universality-readout-a-A = coefficient d'inertie a de A
+universality-readout-b-A = coefficient d'amortissement b de A
+universality-readout-c-A = coefficient de raideur c de A
+universality-readout-wn-A = pulsation propre ωₙ de A
+universality-readout-zeta-A = taux d'amortissement ζ de A
+universality-readout-regime-A = régime de A
+universality-readout-a-B = coefficient d'inertie a de B
+universality-readout-b-B = coefficient d'amortissement b de B
+universality-readout-c-B = coefficient de raideur c de B
+universality-readout-wn-B = pulsation propre ωₙ de B
+universality-readout-zeta-B = taux d'amortissement ζ de B
+universality-readout-regime-B = régime de B
+universality-readout-wn-ratio = rapport des échelles de temps ωₙ(B)/ωₙ(A)
+universality-readout-match = accord
+universality-plot-normalised = Réponses normalisées y/y₀ en fonction de ωₙt
+universality-plot-realtime = Réponses en temps réel
+universality-preset-1 = Masse–ressort et circuit RLC, accordés
+universality-preset-2 = Manomètre à tube en U et masse–ressort, accordés
+universality-preset-3 = Étage de bâtiment réglé comme un asservissement
+universality-preset-4 = Thermomètre (deux capacités) et masse–ressort, accordés
+universality-preset-5 = Un système thermique ne peut pas imiter un oscillateur
+universality-table-caption = Une équation, de nombreuses machines : ce que sont y, a, b et c
+universality-table-column-1 = machine
+universality-table-column-2 = coordonnée y
+universality-table-column-3 = a
+universality-table-column-4 = b
+universality-table-column-5 = c
+universality-table-column-6 = ωₙ
+universality-table-column-7 = ζ
+universality-table-mass-spring-1 = masse–ressort–amortisseur
+universality-table-mass-spring-2 = déplacement x [m]
+universality-table-mass-spring-3 = masse m [kg]
+universality-table-mass-spring-4 = coefficient d'amortissement c [N·s/m]
+universality-table-mass-spring-5 = raideur du ressort k [N/m]
+universality-table-mass-spring-6 = √(k/m)
+universality-table-mass-spring-7 = c/(2√(km))
+universality-table-rlc-1 = circuit RLC série
+universality-table-rlc-2 = charge q [C]
+universality-table-rlc-3 = inductance L [H]
+universality-table-rlc-4 = résistance R [Ω]
+universality-table-rlc-5 = 1/C [1/F]
+universality-table-rlc-6 = 1/√(LC)
+universality-table-rlc-7 = (R/2)·√(C/L)
+universality-table-u-tube-1 = manomètre à tube en U
+universality-table-u-tube-2 = variation de niveau h [m]
+universality-table-u-tube-3 = ρAL [kg]
+universality-table-u-tube-4 = 8πμL [N·s/m]
+universality-table-u-tube-5 = 2ρgA [N/m]
+universality-table-u-tube-6 = √(2g/L)
+universality-table-u-tube-7 = 16μ/(ρd²ωₙ)
+universality-table-servo-1 = asservissement de position par moteur à courant continu (commande PD)
+universality-table-servo-2 = erreur angulaire θ [rad]
+universality-table-servo-3 = J [kg·m²]
+universality-table-servo-4 = K_t(K_t + K_d)/R_a [N·m·s/rad]
+universality-table-servo-5 = K_t·K_p/R_a [N·m/rad]
+universality-table-servo-6 = √(K_t·K_p/(R_a·J))
+universality-table-servo-7 = ≥ K_t²/(2ωₙR_a·J), due à la seule force contre-électromotrice
+universality-table-storey-1 = étage de bâtiment soumis à un mouvement du sol
+universality-table-storey-2 = déplacement relatif de l'étage u [m]
+universality-table-storey-3 = masse du plancher m [kg]
+universality-table-storey-4 = coefficient d'amortissement c [N·s/m]
+universality-table-storey-5 = 12·4·EI/h³ [N/m]
+universality-table-storey-6 = √(48EI/(m·h³))
+universality-table-storey-7 = c/(2√(km))
+universality-table-thermal-1 = système thermique à deux capacités
+universality-table-thermal-2 = excès de température T₂ [K]
+universality-table-thermal-3 = R₁C₁R₂C₂ [s²]
+universality-table-thermal-4 = R₁C₁ + R₂C₂ + R₁C₂ [s]
+universality-table-thermal-5 = 1
+universality-table-thermal-6 = 1/√(τ₁τ₂)
+universality-table-thermal-7 = (τ₁ + τ₂ + R₁C₂)/(2√(τ₁τ₂)) > 1
+

@@ -169,3 +169,172 @@ analogy-table-power-lost-3 = 0 ao soltar
 analogy-table-power-lost-4 = resistor R·i² [W]
 analogy-table-power-lost-5 = 0 ao soltar
 
+### universality
+
+universality-axis-response = resposta normalizada y/y₀
+universality-axis-time = tempo normalizado ωₙt
+universality-series-critical = ζ = 1 (crítico), como referência
+universality-schematic-title = Máquinas A e B
+universality-match-off = desligado
+universality-match-on = ligado: B tem os mesmos ωₙ e ζ de A
+universality-match-too-light = inalcançável: mantidos os seus outros parâmetros, B não consegue ficar abaixo de ζ = { $zeta_min }; A tem ζ = { $zeta }
+universality-match-out-of-range = inalcançável dentro dos controles: B precisaria de { $symbol } = { $value }, fora de { $low } … { $high }
+universality-match-impossible = inalcançável: A não tem frequência natural
+universality-describe-normalised = Liberadas a partir do repouso: A ({ $machine_a }, ζ = { $zeta_a }) { $behaviour_a ->
+        [forever] oscila indefinidamente
+        [dies-away] oscila e se extingue
+        [fastest] volta o mais rápido possível sem sobressinal
+       *[creeps] volta lentamente sem sobressinal
+    }; B ({ $machine_b }, ζ = { $zeta_b }) { $behaviour_b ->
+        [forever] oscila indefinidamente
+        [dies-away] oscila e se extingue
+        [fastest] volta o mais rápido possível sem sobressinal
+       *[creeps] volta lentamente sem sobressinal
+    }. { $relation ->
+        [coincide] As duas curvas coincidem (diferença máxima de { $gap }).
+       *[differ] As curvas diferem em até { $gap } de y₀.
+    }{ $thermal ->
+        [yes] { " " }Um sistema térmico de duas capacidades não pode oscilar: seu ζ fica acima de 1 para quaisquer capacidades e resistências.
+       *[no] { "" }
+    }
+universality-describe-realtime = Tempo real ao longo de { $window }: escala de tempo 1/ωₙ de A { $scale_a }, de B { $scale_b }; { $pace ->
+        [faster] B é { $factor } vezes mais rápida que A
+        [slower] B é { $factor } vezes mais lenta que A
+       *[same] B acompanha A exatamente
+    }.
+universality-schematic = Em t = { $time }: A, { $machine_a }: { $coordinate_a } = { $value_a }; B, { $machine_b }: { $coordinate_b } = { $value_b }.
+universality-title = Uma equação, muitas máquinas
+universality-summary = Seis máquinas, uma equação a·y″ + b·y′ + c·y = f(t). Escolha uma máquina para A e outra para B e ajuste cada uma pelos seus próprios parâmetros físicos: cada uma fornece seus próprios a, b e c, em suas próprias unidades, e daí uma frequência natural ωₙ = √(c/a) e uma razão de amortecimento ζ = b/(2√(ac)). Liberada a partir de y₀ em repouso, a resposta normalizada y/y₀ de uma máquina em função de ωₙt depende apenas de ζ, de modo que máquinas com o mesmo ζ traçam uma única curva. Marque “igualar” e os parâmetros de ajuste de B são calculados para que seus ωₙ e ζ sejam iguais aos de A: então B se comporta exatamente como A, segundo a segundo. O sistema térmico de duas capacidades nunca oscila: b² − 4ac = (τ₁ − τ₂)² + R₁C₂(2τ₁ + 2τ₂ + R₁C₂) > 0, logo seu ζ > 1 quaisquer que sejam suas capacidades e resistências — o calor não tem inércia que o leve além do equilíbrio.
+universality-param-A = máquina A
+universality-param-A-mass-spring = massa–mola–amortecedor
+universality-param-A-rlc = circuito RLC série
+universality-param-A-u-tube = manômetro de tubo em U
+universality-param-A-servo = servo de posição com motor CC (controle PD)
+universality-param-A-storey = andar de edifício sob movimento do solo
+universality-param-A-thermal = sistema térmico de duas capacidades
+universality-param-A-m = massa
+universality-param-A-c = coeficiente de amortecimento
+universality-param-A-k = rigidez da mola
+universality-param-A-L = indutância
+universality-param-A-R = resistência
+universality-param-A-C = capacitância
+universality-param-A-len = comprimento da coluna de líquido
+universality-param-A-bore = diâmetro interno do tubo
+universality-param-A-rho = massa específica do líquido
+universality-param-A-mu = viscosidade dinâmica
+universality-param-A-J = inércia do motor e da carga
+universality-param-A-Kt = constante de torque do motor
+universality-param-A-Ra = resistência de armadura
+universality-param-A-Kp = ganho proporcional
+universality-param-A-Kd = ganho derivativo
+universality-param-A-mf = massa do piso
+universality-param-A-h = altura do andar
+universality-param-A-EI = rigidez à flexão de cada um dos 4 pilares
+universality-param-A-cf = coeficiente de amortecimento do andar
+universality-param-A-C1 = capacidade térmica do corpo 1
+universality-param-A-R1 = resistência térmica, do corpo 1 ao ambiente
+universality-param-A-C2 = capacidade térmica do corpo 2
+universality-param-A-R2 = resistência térmica, do corpo 2 ao corpo 1
+universality-param-B = máquina B
+universality-param-B-mass-spring = massa–mola–amortecedor
+universality-param-B-rlc = circuito RLC série
+universality-param-B-u-tube = manômetro de tubo em U
+universality-param-B-servo = servo de posição com motor CC (controle PD)
+universality-param-B-storey = andar de edifício sob movimento do solo
+universality-param-B-thermal = sistema térmico de duas capacidades
+universality-param-B-m = massa
+universality-param-B-c = coeficiente de amortecimento
+universality-param-B-k = rigidez da mola
+universality-param-B-L = indutância
+universality-param-B-R = resistência
+universality-param-B-C = capacitância
+universality-param-B-len = comprimento da coluna de líquido
+universality-param-B-bore = diâmetro interno do tubo
+universality-param-B-rho = massa específica do líquido
+universality-param-B-mu = viscosidade dinâmica
+universality-param-B-J = inércia do motor e da carga
+universality-param-B-Kt = constante de torque do motor
+universality-param-B-Ra = resistência de armadura
+universality-param-B-Kp = ganho proporcional
+universality-param-B-Kd = ganho derivativo
+universality-param-B-mf = massa do piso
+universality-param-B-h = altura do andar
+universality-param-B-EI = rigidez à flexão de cada um dos 4 pilares
+universality-param-B-cf = coeficiente de amortecimento do andar
+universality-param-B-C1 = capacidade térmica do corpo 1
+universality-param-B-R1 = resistência térmica, do corpo 1 ao ambiente
+universality-param-B-C2 = capacidade térmica do corpo 2
+universality-param-B-R2 = resistência térmica, do corpo 2 ao corpo 1
+universality-param-match = igualar: ajustar B para se comportar como A (mesmos ωₙ e ζ)
+universality-readout-a-A = coeficiente de inércia a de A
+universality-readout-b-A = coeficiente de amortecimento b de A
+universality-readout-c-A = coeficiente de rigidez c de A
+universality-readout-wn-A = frequência natural ωₙ de A
+universality-readout-zeta-A = razão de amortecimento ζ de A
+universality-readout-regime-A = regime de A
+universality-readout-a-B = coeficiente de inércia a de B
+universality-readout-b-B = coeficiente de amortecimento b de B
+universality-readout-c-B = coeficiente de rigidez c de B
+universality-readout-wn-B = frequência natural ωₙ de B
+universality-readout-zeta-B = razão de amortecimento ζ de B
+universality-readout-regime-B = regime de B
+universality-readout-wn-ratio = razão das escalas de tempo ωₙ(B)/ωₙ(A)
+universality-readout-match = igualação
+universality-plot-normalised = Respostas normalizadas y/y₀ em função de ωₙt
+universality-plot-realtime = Respostas em tempo real
+universality-preset-1 = Massa–mola e circuito RLC, igualados
+universality-preset-2 = Manômetro de tubo em U e massa–mola, igualados
+universality-preset-3 = Andar de edifício ajustado como um servo
+universality-preset-4 = Termômetro (duas capacidades) e massa–mola, igualados
+universality-preset-5 = Um sistema térmico não consegue igualar um oscilador
+universality-table-caption = Uma equação, muitas máquinas: o que são y, a, b e c
+universality-table-column-1 = máquina
+universality-table-column-2 = coordenada y
+universality-table-column-3 = a
+universality-table-column-4 = b
+universality-table-column-5 = c
+universality-table-column-6 = ωₙ
+universality-table-column-7 = ζ
+universality-table-mass-spring-1 = massa–mola–amortecedor
+universality-table-mass-spring-2 = deslocamento x [m]
+universality-table-mass-spring-3 = massa m [kg]
+universality-table-mass-spring-4 = coeficiente de amortecimento c [N·s/m]
+universality-table-mass-spring-5 = rigidez da mola k [N/m]
+universality-table-mass-spring-6 = √(k/m)
+universality-table-mass-spring-7 = c/(2√(km))
+universality-table-rlc-1 = circuito RLC série
+universality-table-rlc-2 = carga q [C]
+universality-table-rlc-3 = indutância L [H]
+universality-table-rlc-4 = resistência R [Ω]
+universality-table-rlc-5 = 1/C [1/F]
+universality-table-rlc-6 = 1/√(LC)
+universality-table-rlc-7 = (R/2)·√(C/L)
+universality-table-u-tube-1 = manômetro de tubo em U
+universality-table-u-tube-2 = variação de nível h [m]
+universality-table-u-tube-3 = ρAL [kg]
+universality-table-u-tube-4 = 8πμL [N·s/m]
+universality-table-u-tube-5 = 2ρgA [N/m]
+universality-table-u-tube-6 = √(2g/L)
+universality-table-u-tube-7 = 16μ/(ρd²ωₙ)
+universality-table-servo-1 = servo de posição com motor CC (controle PD)
+universality-table-servo-2 = erro de ângulo θ [rad]
+universality-table-servo-3 = J [kg·m²]
+universality-table-servo-4 = K_t(K_t + K_d)/R_a [N·m·s/rad]
+universality-table-servo-5 = K_t·K_p/R_a [N·m/rad]
+universality-table-servo-6 = √(K_t·K_p/(R_a·J))
+universality-table-servo-7 = ≥ K_t²/(2ωₙR_a·J), só pela força contraeletromotriz
+universality-table-storey-1 = andar de edifício sob movimento do solo
+universality-table-storey-2 = deslocamento relativo do andar u [m]
+universality-table-storey-3 = massa do piso m [kg]
+universality-table-storey-4 = coeficiente de amortecimento c [N·s/m]
+universality-table-storey-5 = 12·4·EI/h³ [N/m]
+universality-table-storey-6 = √(48EI/(m·h³))
+universality-table-storey-7 = c/(2√(km))
+universality-table-thermal-1 = sistema térmico de duas capacidades
+universality-table-thermal-2 = excesso de temperatura T₂ [K]
+universality-table-thermal-3 = R₁C₁R₂C₂ [s²]
+universality-table-thermal-4 = R₁C₁ + R₂C₂ + R₁C₂ [s]
+universality-table-thermal-5 = 1
+universality-table-thermal-6 = 1/√(τ₁τ₂)
+universality-table-thermal-7 = (τ₁ + τ₂ + R₁C₂)/(2√(τ₁τ₂)) > 1
+

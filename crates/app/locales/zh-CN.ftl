@@ -169,3 +169,172 @@ analogy-table-power-lost-3 = 释放时为 0
 analogy-table-power-lost-4 = 电阻 R·i² [W]
 analogy-table-power-lost-5 = 释放时为 0
 
+### universality
+
+universality-axis-response = 归一化响应 y/y₀
+universality-axis-time = 归一化时间 ωₙt
+universality-series-critical = ζ = 1（临界阻尼），作为参照
+universality-schematic-title = 系统 A 与系统 B
+universality-match-off = 关闭
+universality-match-on = 开启：B 与 A 的 ωₙ 和 ζ 相同
+universality-match-too-light = 无法实现：保持其他参数不变时，B 的 ζ 不能低于 { $zeta_min }；A 的 ζ = { $zeta }
+universality-match-out-of-range = 在滑块范围内无法实现：B 需要 { $symbol } = { $value }，超出 { $low } … { $high }
+universality-match-impossible = 无法实现：A 没有固有频率
+universality-describe-normalised = 从静止释放：A（{ $machine_a }，ζ = { $zeta_a }）{ $behaviour_a ->
+        [forever] 持续振荡
+        [dies-away] 振荡并逐渐衰减
+        [fastest] 以最快速度返回且无超调
+       *[creeps] 缓慢返回且无超调
+    }；B（{ $machine_b }，ζ = { $zeta_b }）{ $behaviour_b ->
+        [forever] 持续振荡
+        [dies-away] 振荡并逐渐衰减
+        [fastest] 以最快速度返回且无超调
+       *[creeps] 缓慢返回且无超调
+    }。{ $relation ->
+        [coincide] 两条曲线重合（最大差值 { $gap }）。
+       *[differ] 两条曲线最多相差 y₀ 的 { $gap }。
+    }{ $thermal ->
+        [yes] 双容热系统不会振荡：无论热容和热阻取何值，其 ζ 都大于 1。
+       *[no] { "" }
+    }
+universality-describe-realtime = 实际时间，时长 { $window }：A 的时间尺度 1/ωₙ 为 { $scale_a }，B 的为 { $scale_b }；{ $pace ->
+        [faster] B 的速度是 A 的 { $factor } 倍
+        [slower] B 比 A 慢，速度仅为 A 的 1/{ $factor }
+       *[same] B 与 A 完全同步
+    }。
+universality-schematic = t = { $time } 时：A（{ $machine_a }）：{ $coordinate_a } = { $value_a }；B（{ $machine_b }）：{ $coordinate_b } = { $value_b }。
+universality-title = 一个方程，多种系统
+universality-summary = 六种系统，一个方程 a·y″ + b·y′ + c·y = f(t)。为 A 和 B 各选一种系统，并用其自身的物理参数进行设置：每种系统给出各自的 a、b 和 c（单位各不相同），从而得到固有频率 ωₙ = √(c/a) 和阻尼比 ζ = b/(2√(ac))。从 y₀ 处静止释放时，系统的归一化响应 y/y₀ 随 ωₙt 的变化只取决于 ζ，因此 ζ 相同的系统画出同一条曲线。勾选“匹配”后，程序会求解 B 的调节参数，使其 ωₙ 和 ζ 与 A 相同：此时 B 的行为与 A 完全一致，每一秒都相同。双容热系统从不振荡：b² − 4ac = (τ₁ − τ₂)² + R₁C₂(2τ₁ + 2τ₂ + R₁C₂) > 0，所以无论热容和热阻取何值，其 ζ > 1——热量没有惯性，不会越过平衡点。
+universality-param-A = 系统 A
+universality-param-A-mass-spring = 质量–弹簧–阻尼器
+universality-param-A-rlc = RLC 串联电路
+universality-param-A-u-tube = U 形管压力计
+universality-param-A-servo = 直流电机位置伺服（PD 控制）
+universality-param-A-storey = 受地面运动作用的建筑楼层
+universality-param-A-thermal = 双容热系统
+universality-param-A-m = 质量
+universality-param-A-c = 阻尼系数
+universality-param-A-k = 弹簧刚度
+universality-param-A-L = 电感
+universality-param-A-R = 电阻
+universality-param-A-C = 电容
+universality-param-A-len = 液柱长度
+universality-param-A-bore = 管内径
+universality-param-A-rho = 液体密度
+universality-param-A-mu = 动力黏度
+universality-param-A-J = 电机与负载的转动惯量
+universality-param-A-Kt = 电机转矩常数
+universality-param-A-Ra = 电枢电阻
+universality-param-A-Kp = 比例增益
+universality-param-A-Kd = 微分增益
+universality-param-A-mf = 楼板质量
+universality-param-A-h = 层高
+universality-param-A-EI = 4 根柱中每根的抗弯刚度
+universality-param-A-cf = 楼层阻尼系数
+universality-param-A-C1 = 物体 1 的热容
+universality-param-A-R1 = 热阻（物体 1 至环境）
+universality-param-A-C2 = 物体 2 的热容
+universality-param-A-R2 = 热阻（物体 2 至物体 1）
+universality-param-B = 系统 B
+universality-param-B-mass-spring = 质量–弹簧–阻尼器
+universality-param-B-rlc = RLC 串联电路
+universality-param-B-u-tube = U 形管压力计
+universality-param-B-servo = 直流电机位置伺服（PD 控制）
+universality-param-B-storey = 受地面运动作用的建筑楼层
+universality-param-B-thermal = 双容热系统
+universality-param-B-m = 质量
+universality-param-B-c = 阻尼系数
+universality-param-B-k = 弹簧刚度
+universality-param-B-L = 电感
+universality-param-B-R = 电阻
+universality-param-B-C = 电容
+universality-param-B-len = 液柱长度
+universality-param-B-bore = 管内径
+universality-param-B-rho = 液体密度
+universality-param-B-mu = 动力黏度
+universality-param-B-J = 电机与负载的转动惯量
+universality-param-B-Kt = 电机转矩常数
+universality-param-B-Ra = 电枢电阻
+universality-param-B-Kp = 比例增益
+universality-param-B-Kd = 微分增益
+universality-param-B-mf = 楼板质量
+universality-param-B-h = 层高
+universality-param-B-EI = 4 根柱中每根的抗弯刚度
+universality-param-B-cf = 楼层阻尼系数
+universality-param-B-C1 = 物体 1 的热容
+universality-param-B-R1 = 热阻（物体 1 至环境）
+universality-param-B-C2 = 物体 2 的热容
+universality-param-B-R2 = 热阻（物体 2 至物体 1）
+universality-param-match = 匹配：调节 B，使其表现与 A 相同（ωₙ 和 ζ 相同）
+universality-readout-a-A = A 的惯性系数 a
+universality-readout-b-A = A 的阻尼系数 b
+universality-readout-c-A = A 的刚度系数 c
+universality-readout-wn-A = A 的固有频率 ωₙ
+universality-readout-zeta-A = A 的阻尼比 ζ
+universality-readout-regime-A = A 的阻尼状态
+universality-readout-a-B = B 的惯性系数 a
+universality-readout-b-B = B 的阻尼系数 b
+universality-readout-c-B = B 的刚度系数 c
+universality-readout-wn-B = B 的固有频率 ωₙ
+universality-readout-zeta-B = B 的阻尼比 ζ
+universality-readout-regime-B = B 的阻尼状态
+universality-readout-wn-ratio = 时间尺度比 ωₙ(B)/ωₙ(A)
+universality-readout-match = 匹配
+universality-plot-normalised = 归一化响应 y/y₀ 随 ωₙt 的变化
+universality-plot-realtime = 实际时间下的响应
+universality-preset-1 = 质量–弹簧与 RLC 电路，已匹配
+universality-preset-2 = U 形管压力计与质量–弹簧，已匹配
+universality-preset-3 = 按伺服系统调节的建筑楼层
+universality-preset-4 = 温度计（双容）与质量–弹簧，已匹配
+universality-preset-5 = 热系统无法匹配振荡器
+universality-table-caption = 一个方程，多种系统：y、a、b 和 c 分别是什么
+universality-table-column-1 = 系统
+universality-table-column-2 = 坐标 y
+universality-table-column-3 = a
+universality-table-column-4 = b
+universality-table-column-5 = c
+universality-table-column-6 = ωₙ
+universality-table-column-7 = ζ
+universality-table-mass-spring-1 = 质量–弹簧–阻尼器
+universality-table-mass-spring-2 = 位移 x [m]
+universality-table-mass-spring-3 = 质量 m [kg]
+universality-table-mass-spring-4 = 阻尼系数 c [N·s/m]
+universality-table-mass-spring-5 = 弹簧刚度 k [N/m]
+universality-table-mass-spring-6 = √(k/m)
+universality-table-mass-spring-7 = c/(2√(km))
+universality-table-rlc-1 = RLC 串联电路
+universality-table-rlc-2 = 电荷 q [C]
+universality-table-rlc-3 = 电感 L [H]
+universality-table-rlc-4 = 电阻 R [Ω]
+universality-table-rlc-5 = 1/C [1/F]
+universality-table-rlc-6 = 1/√(LC)
+universality-table-rlc-7 = (R/2)·√(C/L)
+universality-table-u-tube-1 = U 形管压力计
+universality-table-u-tube-2 = 液面变化 h [m]
+universality-table-u-tube-3 = ρAL [kg]
+universality-table-u-tube-4 = 8πμL [N·s/m]
+universality-table-u-tube-5 = 2ρgA [N/m]
+universality-table-u-tube-6 = √(2g/L)
+universality-table-u-tube-7 = 16μ/(ρd²ωₙ)
+universality-table-servo-1 = 直流电机位置伺服（PD 控制）
+universality-table-servo-2 = 角度误差 θ [rad]
+universality-table-servo-3 = J [kg·m²]
+universality-table-servo-4 = K_t(K_t + K_d)/R_a [N·m·s/rad]
+universality-table-servo-5 = K_t·K_p/R_a [N·m/rad]
+universality-table-servo-6 = √(K_t·K_p/(R_a·J))
+universality-table-servo-7 = ≥ K_t²/(2ωₙR_a·J)，仅由反电动势产生
+universality-table-storey-1 = 受地面运动作用的建筑楼层
+universality-table-storey-2 = 层间位移 u [m]
+universality-table-storey-3 = 楼板质量 m [kg]
+universality-table-storey-4 = 阻尼系数 c [N·s/m]
+universality-table-storey-5 = 12·4·EI/h³ [N/m]
+universality-table-storey-6 = √(48EI/(m·h³))
+universality-table-storey-7 = c/(2√(km))
+universality-table-thermal-1 = 双容热系统
+universality-table-thermal-2 = 温度超出量 T₂ [K]
+universality-table-thermal-3 = R₁C₁R₂C₂ [s²]
+universality-table-thermal-4 = R₁C₁ + R₂C₂ + R₁C₂ [s]
+universality-table-thermal-5 = 1
+universality-table-thermal-6 = 1/√(τ₁τ₂)
+universality-table-thermal-7 = (τ₁ + τ₂ + R₁C₂)/(2√(τ₁τ₂)) > 1
+
