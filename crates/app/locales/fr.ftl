@@ -338,3 +338,76 @@ universality-table-thermal-5 = 1
 universality-table-thermal-6 = 1/√(τ₁τ₂)
 universality-table-thermal-7 = (τ₁ + τ₂ + R₁C₂)/(2√(τ₁τ₂)) > 1
 
+### regimes
+
+regimes-envelope = enveloppe ±A·e^(−ζωₙt)
+regimes-series-response = x(t), { $regime }
+regimes-describe-settles = { $regime } : { $swings ->
+        [0] ne franchit pas l'équilibre avant de s'établir
+        [one] franchit l'équilibre une fois avant de s'établir
+       *[other] franchit l'équilibre { $swings } fois avant de s'établir
+    }, reste à moins de 5 % du repos après { $time }, rebond maximal { $rebound }.
+regimes-describe-unsettled = { $regime } : { $swings ->
+        [0] ne franchit pas l'équilibre avant de s'établir
+        [one] franchit l'équilibre une fois avant de s'établir
+       *[other] franchit l'équilibre { $swings } fois avant de s'établir
+    }, ne s'établit pas, rebond maximal { $rebound }.
+regimes-describe-undamped = non amorti : oscille indéfiniment avec une amplitude de { $amplitude } à { $frequency }.
+regimes-describe-growing = amortissement négatif : la réponse croît sans limite, d'un facteur e toutes les { $time }.
+regimes-describe-at-rest = { $regime } : part du repos à l'équilibre.
+regimes-poles = Pôles en { $re1 } { $sign1 } { $im1 }i et { $re2 } { $sign2 } { $im2 }i 1/s, dans le demi-plan { $side ->
+        [right] droit (instable)
+       *[left] gauche (stable)
+    }.
+regimes-schematic = Masse sur ressort et amortisseur à t = { $time } : déplacée de { $displacement } par rapport au repos.
+regimes-title = Régimes d'amortissement
+regimes-summary = Réponse libre depuis x(0) = x₀, x′(0) = v₀. Le taux d'amortissement ζ détermine le régime : ζ = 0 non amorti, 0 < ζ < 1 sous-amorti, ζ = 1 amortissement critique, ζ > 1 suramorti, ζ < 0 amortissement négatif (la réponse croît). Les pôles s = −ζωₙ ± ωₙ√(ζ² − 1) se déplacent sur un cercle de rayon ωₙ, rejoignent l'axe réel en ζ = 1 et traversent l'axe imaginaire en ζ = 0.
+regimes-param-wn = pulsation propre
+regimes-param-zeta = taux d'amortissement
+regimes-param-x0 = déplacement initial
+regimes-param-v0 = vitesse initiale
+regimes-readout-regime = régime
+regimes-readout-wn = pulsation propre ωₙ
+regimes-readout-zeta = taux d'amortissement ζ
+regimes-readout-wd = pulsation amortie ω_d
+regimes-readout-pole-re = partie réelle du pôle
+regimes-readout-pole-im = partie imaginaire du pôle
+regimes-plot-response = Réponse libre x(t)
+regimes-plot-poles = Pôles dans le plan s
+regimes-preset-1 = Non amorti ζ = 0
+regimes-preset-2 = Sous-amorti ζ = 0,2
+regimes-preset-3 = Amortissement critique ζ = 1
+regimes-preset-4 = Suramorti ζ = 2
+regimes-preset-5 = Amortissement négatif ζ = −0,1
+regimes-table-caption = Les régimes d'amortissement
+regimes-table-column-1 = régime
+regimes-table-column-2 = condition
+regimes-table-column-3 = racines s₁, s₂
+regimes-table-column-4 = comportement
+regimes-table-column-5 = exemples en ingénierie
+regimes-table-undamped-1 = Non amorti
+regimes-table-undamped-2 = ζ = 0
+regimes-table-undamped-3 = ±iωₙ, sur l'axe imaginaire
+regimes-table-undamped-4 = oscille indéfiniment à ωₙ
+regimes-table-undamped-5 = pendule idéal, circuit oscillant LC
+regimes-table-underdamped-1 = Sous-amorti
+regimes-table-underdamped-2 = 0 < ζ < 1
+regimes-table-underdamped-3 = −ζωₙ ± iω_d, paire complexe
+regimes-table-underdamped-4 = oscillation décroissante à ω_d
+regimes-table-underdamped-5 = suspension automobile (ζ ≈ 0,2–0,7), corde de guitare
+regimes-table-critically-damped-1 = Amortissement critique
+regimes-table-critically-damped-2 = ζ = 1
+regimes-table-critically-damped-3 = −ωₙ, racine réelle double
+regimes-table-critically-damped-4 = retour le plus rapide sans oscillation
+regimes-table-critically-damped-5 = ferme-porte, aiguille de galvanomètre analogique
+regimes-table-overdamped-1 = Suramorti
+regimes-table-overdamped-2 = ζ > 1
+regimes-table-overdamped-3 = deux racines réelles négatives
+regimes-table-overdamped-4 = retour lent, sans oscillation
+regimes-table-overdamped-5 = amortisseur hydraulique lourd, thermomètre
+regimes-table-negatively-damped-1 = Amortissement négatif
+regimes-table-negatively-damped-2 = ζ < 0
+regimes-table-negatively-damped-3 = demi-plan droit
+regimes-table-negatively-damped-4 = oscillation croissante
+regimes-table-negatively-damped-5 = flottement (pont de Tacoma Narrows), freins qui crissent
+

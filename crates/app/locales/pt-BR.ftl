@@ -338,3 +338,76 @@ universality-table-thermal-5 = 1
 universality-table-thermal-6 = 1/√(τ₁τ₂)
 universality-table-thermal-7 = (τ₁ + τ₂ + R₁C₂)/(2√(τ₁τ₂)) > 1
 
+### regimes
+
+regimes-envelope = envoltória ±A·e^(−ζωₙt)
+regimes-series-response = x(t), { $regime }
+regimes-describe-settles = { $regime }: { $swings ->
+        [0] não cruza o equilíbrio antes de se acomodar
+        [one] cruza o equilíbrio uma vez antes de se acomodar
+       *[other] cruza o equilíbrio { $swings } vezes antes de se acomodar
+    }, fica dentro de 5 % do repouso após { $time }, ressalto máximo { $rebound }.
+regimes-describe-unsettled = { $regime }: { $swings ->
+        [0] não cruza o equilíbrio antes de se acomodar
+        [one] cruza o equilíbrio uma vez antes de se acomodar
+       *[other] cruza o equilíbrio { $swings } vezes antes de se acomodar
+    }, não se acomoda, ressalto máximo { $rebound }.
+regimes-describe-undamped = não amortecido: oscila indefinidamente com amplitude { $amplitude } em { $frequency }.
+regimes-describe-growing = amortecimento negativo: a resposta cresce sem limite, por um fator e a cada { $time }.
+regimes-describe-at-rest = { $regime }: parte do repouso no equilíbrio.
+regimes-poles = Polos em { $re1 } { $sign1 } { $im1 }i e { $re2 } { $sign2 } { $im2 }i 1/s, no semiplano { $side ->
+        [right] direito (instável)
+       *[left] esquerdo (estável)
+    }.
+regimes-schematic = Massa sobre mola e amortecedor em t = { $time }: deslocada { $displacement } do repouso.
+regimes-title = Regimes de amortecimento
+regimes-summary = Resposta livre a partir de x(0) = x₀, x′(0) = v₀. A razão de amortecimento ζ define o regime: ζ = 0 não amortecido, 0 < ζ < 1 subamortecido, ζ = 1 criticamente amortecido, ζ > 1 superamortecido, ζ < 0 amortecimento negativo (a resposta cresce). Os polos s = −ζωₙ ± ωₙ√(ζ² − 1) percorrem um círculo de raio ωₙ, chegam ao eixo real em ζ = 1 e cruzam o eixo imaginário em ζ = 0.
+regimes-param-wn = frequência natural
+regimes-param-zeta = razão de amortecimento
+regimes-param-x0 = deslocamento inicial
+regimes-param-v0 = velocidade inicial
+regimes-readout-regime = regime
+regimes-readout-wn = frequência natural ωₙ
+regimes-readout-zeta = razão de amortecimento ζ
+regimes-readout-wd = frequência amortecida ω_d
+regimes-readout-pole-re = parte real do polo
+regimes-readout-pole-im = parte imaginária do polo
+regimes-plot-response = Resposta livre x(t)
+regimes-plot-poles = Polos no plano s
+regimes-preset-1 = Não amortecido ζ = 0
+regimes-preset-2 = Subamortecido ζ = 0,2
+regimes-preset-3 = Criticamente amortecido ζ = 1
+regimes-preset-4 = Superamortecido ζ = 2
+regimes-preset-5 = Amortecimento negativo ζ = −0,1
+regimes-table-caption = Os regimes de amortecimento
+regimes-table-column-1 = regime
+regimes-table-column-2 = condição
+regimes-table-column-3 = raízes s₁, s₂
+regimes-table-column-4 = comportamento
+regimes-table-column-5 = exemplos de engenharia
+regimes-table-undamped-1 = Não amortecido
+regimes-table-undamped-2 = ζ = 0
+regimes-table-undamped-3 = ±iωₙ, no eixo imaginário
+regimes-table-undamped-4 = oscila indefinidamente em ωₙ
+regimes-table-undamped-5 = pêndulo ideal, circuito tanque LC
+regimes-table-underdamped-1 = Subamortecido
+regimes-table-underdamped-2 = 0 < ζ < 1
+regimes-table-underdamped-3 = −ζωₙ ± iω_d, par complexo
+regimes-table-underdamped-4 = oscilação decrescente em ω_d
+regimes-table-underdamped-5 = suspensão de automóvel (ζ ≈ 0,2–0,7), corda de violão
+regimes-table-critically-damped-1 = Criticamente amortecido
+regimes-table-critically-damped-2 = ζ = 1
+regimes-table-critically-damped-3 = −ωₙ, raiz real dupla
+regimes-table-critically-damped-4 = retorno mais rápido sem oscilar
+regimes-table-critically-damped-5 = mola aérea de porta, ponteiro de medidor analógico
+regimes-table-overdamped-1 = Superamortecido
+regimes-table-overdamped-2 = ζ > 1
+regimes-table-overdamped-3 = duas raízes reais negativas
+regimes-table-overdamped-4 = retorno lento, sem oscilação
+regimes-table-overdamped-5 = amortecedor hidráulico pesado, termômetro
+regimes-table-negatively-damped-1 = Amortecimento negativo
+regimes-table-negatively-damped-2 = ζ < 0
+regimes-table-negatively-damped-3 = semiplano direito
+regimes-table-negatively-damped-4 = oscilação crescente
+regimes-table-negatively-damped-5 = flutter (ponte de Tacoma Narrows), freios que chiam
+

@@ -338,3 +338,76 @@ universality-table-thermal-5 = 1
 universality-table-thermal-6 = 1/√(τ₁τ₂)
 universality-table-thermal-7 = (τ₁ + τ₂ + R₁C₂)/(2√(τ₁τ₂)) > 1
 
+### regimes
+
+regimes-envelope = 包络线 ±A·e^(−ζωₙt)
+regimes-series-response = x(t)，{ $regime }
+regimes-describe-settles = { $regime }：{ $swings ->
+        [0] 稳定前不越过平衡位置
+        [1] 稳定前越过平衡位置一次
+       *[other] 稳定前越过平衡位置 { $swings } 次
+    }，{ $time } 后保持在距静止位置 5 % 以内，最大回弹 { $rebound }。
+regimes-describe-unsettled = { $regime }：{ $swings ->
+        [0] 稳定前不越过平衡位置
+        [1] 稳定前越过平衡位置一次
+       *[other] 稳定前越过平衡位置 { $swings } 次
+    }，始终不稳定，最大回弹 { $rebound }。
+regimes-describe-undamped = 无阻尼：以振幅 { $amplitude }、频率 { $frequency } 持续振荡。
+regimes-describe-growing = 负阻尼：响应无限增长，每经过 { $time } 增大为原来的 e 倍。
+regimes-describe-at-rest = { $regime }：从平衡位置静止开始。
+regimes-poles = 极点位于 { $re1 } { $sign1 } { $im1 }i 和 { $re2 } { $sign2 } { $im2 }i 1/s，在{ $side ->
+        [right] 右半平面（不稳定）
+       *[left] 左半平面（稳定）
+    }。
+regimes-schematic = t = { $time } 时弹簧–阻尼器上的质量：偏离静止位置 { $displacement }。
+regimes-title = 阻尼状态
+regimes-summary = 从 x(0) = x₀、x′(0) = v₀ 开始的自由响应。阻尼比 ζ 决定阻尼状态：ζ = 0 为无阻尼，0 < ζ < 1 为欠阻尼，ζ = 1 为临界阻尼，ζ > 1 为过阻尼，ζ < 0 为负阻尼（响应增长）。极点 s = −ζωₙ ± ωₙ√(ζ² − 1) 沿半径为 ωₙ 的圆移动，在 ζ = 1 时到达实轴，在 ζ = 0 时穿过虚轴。
+regimes-param-wn = 固有频率
+regimes-param-zeta = 阻尼比
+regimes-param-x0 = 初始位移
+regimes-param-v0 = 初始速度
+regimes-readout-regime = 阻尼状态
+regimes-readout-wn = 固有频率 ωₙ
+regimes-readout-zeta = 阻尼比 ζ
+regimes-readout-wd = 阻尼频率 ω_d
+regimes-readout-pole-re = 极点实部
+regimes-readout-pole-im = 极点虚部
+regimes-plot-response = 自由响应 x(t)
+regimes-plot-poles = s 平面上的极点
+regimes-preset-1 = 无阻尼 ζ = 0
+regimes-preset-2 = 欠阻尼 ζ = 0.2
+regimes-preset-3 = 临界阻尼 ζ = 1
+regimes-preset-4 = 过阻尼 ζ = 2
+regimes-preset-5 = 负阻尼 ζ = −0.1
+regimes-table-caption = 各种阻尼状态
+regimes-table-column-1 = 阻尼状态
+regimes-table-column-2 = 条件
+regimes-table-column-3 = 根 s₁、s₂
+regimes-table-column-4 = 行为
+regimes-table-column-5 = 工程实例
+regimes-table-undamped-1 = 无阻尼
+regimes-table-undamped-2 = ζ = 0
+regimes-table-undamped-3 = ±iωₙ，位于虚轴上
+regimes-table-undamped-4 = 以 ωₙ 持续振荡
+regimes-table-undamped-5 = 理想单摆、LC 振荡回路
+regimes-table-underdamped-1 = 欠阻尼
+regimes-table-underdamped-2 = 0 < ζ < 1
+regimes-table-underdamped-3 = −ζωₙ ± iω_d，共轭复根
+regimes-table-underdamped-4 = 以 ω_d 衰减振荡
+regimes-table-underdamped-5 = 汽车悬架（ζ ≈ 0.2–0.7）、吉他弦
+regimes-table-critically-damped-1 = 临界阻尼
+regimes-table-critically-damped-2 = ζ = 1
+regimes-table-critically-damped-3 = −ωₙ，二重实根
+regimes-table-critically-damped-4 = 不振荡的最快回复
+regimes-table-critically-damped-5 = 闭门器、模拟仪表指针
+regimes-table-overdamped-1 = 过阻尼
+regimes-table-overdamped-2 = ζ > 1
+regimes-table-overdamped-3 = 两个负实根
+regimes-table-overdamped-4 = 缓慢回复，无振荡
+regimes-table-overdamped-5 = 重型液压阻尼器、温度计
+regimes-table-negatively-damped-1 = 负阻尼
+regimes-table-negatively-damped-2 = ζ < 0
+regimes-table-negatively-damped-3 = 右半平面
+regimes-table-negatively-damped-4 = 振荡增长
+regimes-table-negatively-damped-5 = 颤振（塔科马海峡大桥）、刹车尖叫
+
