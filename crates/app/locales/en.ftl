@@ -125,6 +125,106 @@ regimes-schematic = Mass on a spring and damper at t = { $time }: displaced { $d
 
 schematic-title = Schematic
 schematic-circuit = Circuit
+### rlc
+
+rlc-axis-current = current i
+rlc-axis-voltage = capacitor voltage v_C
+rlc-envelope = envelope
+rlc-series-critical = critical R = { $resistance }
+rlc-schematic = Series RLC loop at t = { $time }: current { $current }, capacitor at { $voltage }.
+rlc-describe-current-undamped = R = { $resistance }, undamped (a lossless LC loop): the current oscillates forever at ω₀ = { $frequency }, between ±{ $bound } (all the energy passes to the inductor and back every half period).
+rlc-describe-voltage-undamped = R = { $resistance }, undamped (a lossless LC loop): the capacitor voltage swings between +{ $voltage } and −{ $voltage } forever at ω₀ = { $frequency }.
+rlc-describe-current-underdamped = R = { $resistance } below the critical { $critical }, underdamped: the current rings at ω_d = { $frequency } (Q = { $q }), decaying as e^(−αt) with α = { $alpha }; it never exceeds { $bound }.
+rlc-describe-voltage-underdamped = R = { $resistance } below the critical { $critical }, underdamped: the capacitor voltage { $reversal ->
+        [slight] reverses only slightly (at most { $rebound } of V₀, inside the band)
+        [count] { $crossings ->
+            [one] reverses polarity once before settling
+           *[other] reverses polarity { $crossings } times before settling
+        }
+       *[never] never reverses polarity
+    }, and { $settles ->
+        [yes] stays within 5 % of V₀ after { $time }
+       *[no] never settles
+    }.
+rlc-describe-current-critical = R = { $resistance } equals the critical resistance, critically damped: one pulse of current (negative, the capacitor discharging) that returns to zero without reversing; it never exceeds { $bound }.
+rlc-describe-voltage-critical = R = { $resistance } equals the critical resistance, critically damped: the capacitor empties as fast as it can without reversing; it { $settles ->
+        [yes] stays within 5 % of V₀ after { $time }
+       *[no] never settles
+    }.
+rlc-describe-current-overdamped = R = { $resistance } above the critical { $critical }, overdamped: one slow pulse of current (negative, the capacitor discharging) without reversing, slow time constant { $time }.
+rlc-describe-voltage-overdamped = R = { $resistance } above the critical { $critical }, overdamped: the capacitor discharges slowly without reversing; it { $settles ->
+        [yes] stays within 5 % of V₀ after { $time }
+       *[no] never settles
+    }.
+
+### analogy
+
+analogy-axis-response = normalised response
+analogy-axis-energy = energy
+analogy-series-x = x/x₀ mass
+analogy-series-q = q/q₀ circuit
+analogy-series-v = v/(x₀ωₙ) mass
+analogy-series-i = i/(q₀ω₀) circuit
+analogy-series-spring = ½kx² spring
+analogy-series-capacitor = ½q²/C capacitor
+analogy-series-mass = ½mv² mass
+analogy-series-inductor = ½Li² inductor
+analogy-series-total-mass = total, mass
+analogy-series-total-circuit = total, circuit
+analogy-caption-mechanical = mechanical
+analogy-caption-electrical = electrical
+analogy-schematic-title = Mechanical and electrical twins
+analogy-describe-responses = { $regime } (ζ = { $zeta }): the mechanical x/x₀ and electrical q/q₀ coincide, as do the velocity v/(x₀ωₙ) and current i/(q₀ω₀) ({ $same ->
+        [exact] identical to the last digit
+       *[close] largest difference { $difference }
+    }); { $motion ->
+        [decaying] both oscillate at ω_d = { $frequency } and decay with time constant 1/(ζωₙ) = { $time }
+        [lasting] both oscillate for ever at ω₀ = ωₙ = { $frequency }
+       *[creeping] both creep back to rest without oscillating
+    }.
+analogy-describe-energy = At t = 0 all { $energy } is stored in the spring, and equally in the capacitor. { $exchange ->
+        [swings] It swings to the mass (inductor), at most { $peak } at once, and back, twice per cycle
+       *[passes] Without oscillating, at most { $peak } passes through the mass (inductor)
+    }; { $loss ->
+        [none] with no damper (resistor) it is all still there after { $time }
+       *[heat] the damper c (resistor R) turns it into heat, leaving { $left } ({ $percent }) after { $time }
+    }. The mechanical and electrical curves coincide.
+analogy-schematic = At t = { $time }: the mass is displaced { $displacement } and moves at { $velocity }; the capacitor holds { $charge } and the current is { $current }. The same numbers in different units.
+
+### universality
+
+universality-axis-response = normalised response y/y₀
+universality-axis-time = normalised time ωₙt
+universality-series-critical = ζ = 1 (critical), for reference
+universality-schematic-title = Machines A and B
+universality-match-off = off
+universality-match-on = on: B has the ωₙ and ζ of A
+universality-match-too-light = not reachable: with its other parameters kept, B cannot go below ζ = { $zeta_min }; A has ζ = { $zeta }
+universality-match-out-of-range = not reachable within the sliders: B would need { $symbol } = { $value }, outside { $low } … { $high }
+universality-match-impossible = not reachable: A has no natural frequency
+universality-describe-normalised = Released from rest: A ({ $machine_a }, ζ = { $zeta_a }) { $behaviour_a ->
+        [forever] oscillates for ever
+        [dies-away] oscillates and dies away
+        [fastest] returns as fast as it can without overshoot
+       *[creeps] creeps back without overshoot
+    }; B ({ $machine_b }, ζ = { $zeta_b }) { $behaviour_b ->
+        [forever] oscillates for ever
+        [dies-away] oscillates and dies away
+        [fastest] returns as fast as it can without overshoot
+       *[creeps] creeps back without overshoot
+    }. { $relation ->
+        [coincide] The two curves coincide (largest difference { $gap }).
+       *[differ] The curves differ by up to { $gap } of y₀.
+    }{ $thermal ->
+        [yes] { " " }A two-capacity thermal system cannot oscillate: its ζ is above 1 for any capacities and resistances.
+       *[no] { "" }
+    }
+universality-describe-realtime = Real time over { $window }: time scale 1/ωₙ of A { $scale_a }, of B { $scale_b }; { $pace ->
+        [faster] B runs { $factor } times faster than A
+        [slower] B runs { $factor } times slower than A
+       *[same] B keeps pace with A exactly
+    }.
+universality-schematic = At t = { $time }: A, { $machine_a }: { $coordinate_a } = { $value_a }; B, { $machine_b }: { $coordinate_b } = { $value_b }.
 
 ## Declared strings (generated from the demo declarations)
 

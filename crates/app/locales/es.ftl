@@ -117,6 +117,106 @@ regimes-schematic = Masa sobre resorte y amortiguador en t = { $time }: desplaza
 
 schematic-title = Esquema
 schematic-circuit = Circuito
+### rlc
+
+rlc-axis-current = corriente i
+rlc-axis-voltage = tensión del condensador v_C
+rlc-envelope = envolvente
+rlc-series-critical = R crítica = { $resistance }
+rlc-schematic = Circuito RLC serie en t = { $time }: corriente { $current }, condensador a { $voltage }.
+rlc-describe-current-undamped = R = { $resistance }, no amortiguado (un circuito LC sin pérdidas): la corriente oscila indefinidamente a ω₀ = { $frequency }, entre ±{ $bound } (toda la energía pasa a la bobina y vuelve cada medio periodo).
+rlc-describe-voltage-undamped = R = { $resistance }, no amortiguado (un circuito LC sin pérdidas): la tensión del condensador oscila entre +{ $voltage } y −{ $voltage } indefinidamente a ω₀ = { $frequency }.
+rlc-describe-current-underdamped = R = { $resistance }, por debajo de la R crítica de { $critical }, subamortiguado: la corriente oscila a ω_d = { $frequency } (Q = { $q }), decreciendo como e^(−αt) con α = { $alpha }; nunca supera { $bound }.
+rlc-describe-voltage-underdamped = R = { $resistance }, por debajo de la R crítica de { $critical }, subamortiguado: la tensión del condensador { $reversal ->
+        [slight] se invierte solo ligeramente (como mucho un { $rebound } de V₀, dentro de la banda)
+        [count] { $crossings ->
+            [one] invierte su polaridad una vez antes de establecerse
+           *[other] invierte su polaridad { $crossings } veces antes de establecerse
+        }
+       *[never] nunca invierte su polaridad
+    } y { $settles ->
+        [yes] queda dentro del 5 % de V₀ tras { $time }
+       *[no] nunca se establece
+    }.
+rlc-describe-current-critical = R = { $resistance }, igual a la resistencia crítica, amortiguamiento crítico: un único pulso de corriente (negativo, el condensador se descarga) que vuelve a cero sin invertirse; nunca supera { $bound }.
+rlc-describe-voltage-critical = R = { $resistance }, igual a la resistencia crítica, amortiguamiento crítico: el condensador se vacía lo más rápido posible sin invertirse; { $settles ->
+        [yes] queda dentro del 5 % de V₀ tras { $time }
+       *[no] nunca se establece
+    }.
+rlc-describe-current-overdamped = R = { $resistance }, por encima de la R crítica de { $critical }, sobreamortiguado: un pulso lento de corriente (negativo, el condensador se descarga) sin invertirse, constante de tiempo lenta { $time }.
+rlc-describe-voltage-overdamped = R = { $resistance }, por encima de la R crítica de { $critical }, sobreamortiguado: el condensador se descarga lentamente sin invertirse; { $settles ->
+        [yes] queda dentro del 5 % de V₀ tras { $time }
+       *[no] nunca se establece
+    }.
+
+### analogy
+
+analogy-axis-response = respuesta normalizada
+analogy-axis-energy = energía
+analogy-series-x = x/x₀ masa
+analogy-series-q = q/q₀ circuito
+analogy-series-v = v/(x₀ωₙ) masa
+analogy-series-i = i/(q₀ω₀) circuito
+analogy-series-spring = ½kx² resorte
+analogy-series-capacitor = ½q²/C condensador
+analogy-series-mass = ½mv² masa
+analogy-series-inductor = ½Li² bobina
+analogy-series-total-mass = total, masa
+analogy-series-total-circuit = total, circuito
+analogy-caption-mechanical = mecánico
+analogy-caption-electrical = eléctrico
+analogy-schematic-title = Gemelos mecánico y eléctrico
+analogy-describe-responses = { $regime } (ζ = { $zeta }): coinciden la x/x₀ mecánica y la q/q₀ eléctrica, así como la velocidad v/(x₀ωₙ) y la corriente i/(q₀ω₀) ({ $same ->
+        [exact] idénticas hasta la última cifra
+       *[close] diferencia máxima { $difference }
+    }); { $motion ->
+        [decaying] ambas oscilan a ω_d = { $frequency } y decaen con constante de tiempo 1/(ζωₙ) = { $time }
+        [lasting] ambas oscilan indefinidamente a ω₀ = ωₙ = { $frequency }
+       *[creeping] ambas vuelven lentamente al reposo sin oscilar
+    }.
+analogy-describe-energy = En t = 0, toda la energía, { $energy }, está almacenada en el resorte, e igualmente en el condensador. { $exchange ->
+        [swings] Pasa a la masa (bobina), como mucho { $peak } a la vez, y vuelve, dos veces por ciclo
+       *[passes] Sin oscilar, como mucho { $peak } pasa por la masa (bobina)
+    }; { $loss ->
+        [none] sin amortiguador (resistencia) sigue toda ahí tras { $time }
+       *[heat] el amortiguador c (resistencia R) la convierte en calor y quedan { $left } ({ $percent }) tras { $time }
+    }. Las curvas mecánica y eléctrica coinciden.
+analogy-schematic = En t = { $time }: la masa está desplazada { $displacement } y se mueve a { $velocity }; el condensador tiene { $charge } y la corriente es { $current }. Los mismos números en otras unidades.
+
+### universality
+
+universality-axis-response = respuesta normalizada y/y₀
+universality-axis-time = tiempo normalizado ωₙt
+universality-series-critical = ζ = 1 (crítico), como referencia
+universality-schematic-title = Máquinas A y B
+universality-match-off = desactivado
+universality-match-on = activado: B tiene la ωₙ y la ζ de A
+universality-match-too-light = no alcanzable: con sus demás parámetros fijos, B no puede bajar de ζ = { $zeta_min }; A tiene ζ = { $zeta }
+universality-match-out-of-range = no alcanzable dentro de los controles: B necesitaría { $symbol } = { $value }, fuera de { $low } … { $high }
+universality-match-impossible = no alcanzable: A no tiene frecuencia natural
+universality-describe-normalised = Soltadas desde el reposo: A ({ $machine_a }, ζ = { $zeta_a }) { $behaviour_a ->
+        [forever] oscila indefinidamente
+        [dies-away] oscila y se extingue
+        [fastest] vuelve lo más rápido posible sin sobrepasar el equilibrio
+       *[creeps] vuelve lentamente sin sobrepasar el equilibrio
+    }; B ({ $machine_b }, ζ = { $zeta_b }) { $behaviour_b ->
+        [forever] oscila indefinidamente
+        [dies-away] oscila y se extingue
+        [fastest] vuelve lo más rápido posible sin sobrepasar el equilibrio
+       *[creeps] vuelve lentamente sin sobrepasar el equilibrio
+    }. { $relation ->
+        [coincide] Las dos curvas coinciden (diferencia máxima { $gap }).
+       *[differ] Las curvas difieren hasta en { $gap } de y₀.
+    }{ $thermal ->
+        [yes] { " " }Un sistema térmico de dos capacidades no puede oscilar: su ζ supera 1 con cualesquiera capacidades y resistencias.
+       *[no] { "" }
+    }
+universality-describe-realtime = Tiempo real durante { $window }: escala de tiempo 1/ωₙ de A { $scale_a }, de B { $scale_b }; { $pace ->
+        [faster] B va { $factor } veces más rápido que A
+        [slower] B va { $factor } veces más lento que A
+       *[same] B sigue el paso de A exactamente
+    }.
+universality-schematic = En t = { $time }: A, { $machine_a }: { $coordinate_a } = { $value_a }; B, { $machine_b }: { $coordinate_b } = { $value_b }.
 
 ## Declared strings (generated from the demo declarations)
 
@@ -397,7 +497,7 @@ universality-readout-wn-B = frecuencia natural ωₙ de B
 universality-readout-zeta-B = coeficiente de amortiguamiento ζ de B
 universality-readout-regime-B = régimen de B
 universality-readout-wn-ratio = razón de escalas de tiempo ωₙ(B)/ωₙ(A)
-universality-readout-match = igualar
+universality-readout-match = igualación
 universality-plot-normalised = Respuestas normalizadas y/y₀ frente a ωₙt
 universality-plot-realtime = Respuestas en tiempo real
 universality-preset-1 = Masa–resorte y circuito RLC, igualados

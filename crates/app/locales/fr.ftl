@@ -2,4 +2,416 @@
 
 schematic-title = Schéma
 schematic-circuit = Circuit
+### rlc
+
+rlc-axis-current = courant i
+rlc-axis-voltage = tension du condensateur v_C
+rlc-envelope = enveloppe
+rlc-series-critical = R critique = { $resistance }
+rlc-schematic = Circuit RLC série à t = { $time } : courant { $current }, condensateur à { $voltage }.
+rlc-describe-current-undamped = R = { $resistance }, non amorti (circuit LC sans pertes) : le courant oscille indéfiniment à ω₀ = { $frequency }, entre ±{ $bound } (toute l'énergie passe dans la bobine et revient à chaque demi-période).
+rlc-describe-voltage-undamped = R = { $resistance }, non amorti (circuit LC sans pertes) : la tension du condensateur oscille indéfiniment entre +{ $voltage } et −{ $voltage } à ω₀ = { $frequency }.
+rlc-describe-current-underdamped = R = { $resistance }, inférieure à la résistance critique { $critical }, sous-amorti : le courant oscille à ω_d = { $frequency } (Q = { $q }) en décroissant comme e^(−αt), avec α = { $alpha } ; il ne dépasse jamais { $bound }.
+rlc-describe-voltage-underdamped = R = { $resistance }, inférieure à la résistance critique { $critical }, sous-amorti : la tension du condensateur { $reversal ->
+        [slight] ne s'inverse que légèrement (au plus { $rebound } de V₀, à l'intérieur de la bande)
+        [count] { $crossings ->
+            [one] change de signe une fois avant de s'établir
+           *[other] change de signe { $crossings } fois avant de s'établir
+        }
+       *[never] ne change jamais de signe
+    } et { $settles ->
+        [yes] reste à moins de 5 % de V₀ après { $time }
+       *[no] ne s'établit jamais
+    }.
+rlc-describe-current-critical = R = { $resistance }, égale à la résistance critique, amortissement critique : une seule impulsion de courant (négative, le condensateur se décharge) qui revient à zéro sans s'inverser ; le courant ne dépasse jamais { $bound }.
+rlc-describe-voltage-critical = R = { $resistance }, égale à la résistance critique, amortissement critique : le condensateur se vide aussi vite que possible sans inversion ; sa tension { $settles ->
+        [yes] reste à moins de 5 % de V₀ après { $time }
+       *[no] ne s'établit jamais
+    }.
+rlc-describe-current-overdamped = R = { $resistance }, supérieure à la résistance critique { $critical }, suramorti : une seule impulsion lente de courant (négative, le condensateur se décharge), sans inversion, constante de temps lente { $time }.
+rlc-describe-voltage-overdamped = R = { $resistance }, supérieure à la résistance critique { $critical }, suramorti : le condensateur se décharge lentement sans inversion ; sa tension { $settles ->
+        [yes] reste à moins de 5 % de V₀ après { $time }
+       *[no] ne s'établit jamais
+    }.
+rlc-title = Circuit RLC série
+rlc-summary = Un condensateur chargé à V₀ est branché à t = 0 dans une boucle comprenant une bobine et une résistance. La charge q obéit à la même équation qu'une masse sur un ressort : L joue le rôle de la masse, R celui de l'amortisseur, 1/C celui du ressort. Avec R inférieure à la résistance critique 2√(L/C), l'énergie passe et repasse de C à L et le courant oscille à ω_d en décroissant comme e^(−αt), α = R/(2L) ; pour R = 2√(L/C), le condensateur se vide le plus vite possible sans inversion ; au-delà, la décharge redevient plus lente. Q = 1/(2ζ) mesure l'importance des oscillations, et R/L est la bande passante à demi-puissance de la résonance du courant : sous une tension sinusoïdale, |I|² reste au-dessus de la moitié de son maximum sur une bande large d'exactement R/L rad/s, quel que soit R. Le courant est négatif pendant que le condensateur se décharge (i = dq/dt).
+rlc-param-R = résistance
+rlc-param-L = inductance
+rlc-param-C = capacité
+rlc-param-V0 = tension initiale du condensateur
+rlc-readout-regime = régime
+rlc-readout-w0 = pulsation de résonance ω₀ = 1/√(LC)
+rlc-readout-f0 = fréquence de résonance f₀
+rlc-readout-alpha = taux de décroissance α = R/(2L)
+rlc-readout-zeta = taux d'amortissement ζ
+rlc-readout-Q = facteur de qualité Q = 1/(2ζ)
+rlc-readout-bandwidth = bande passante à demi-puissance de la résonance en courant Δω = R/L
+rlc-readout-R-crit = résistance critique 2√(L/C)
+rlc-readout-wd = pulsation des oscillations ω_d
+rlc-readout-settling-time = v_C à moins de 5 % de V₀ après
+rlc-plot-current = Courant i(t)
+rlc-plot-voltage = Tension du condensateur v_C(t)
+rlc-preset-1 = LC sans pertes, R = 0
+rlc-preset-2 = Oscillant, R = 2 Ω
+rlc-preset-3 = Sous-amorti, R = 5 Ω
+rlc-preset-4 = Critique, R = 10 Ω
+rlc-preset-5 = Suramorti, R = 20 Ω
+
+### analogy
+
+analogy-axis-response = réponse normalisée
+analogy-axis-energy = énergie
+analogy-series-x = x/x₀ masse
+analogy-series-q = q/q₀ circuit
+analogy-series-v = v/(x₀ωₙ) masse
+analogy-series-i = i/(q₀ω₀) circuit
+analogy-series-spring = ½kx² ressort
+analogy-series-capacitor = ½q²/C condensateur
+analogy-series-mass = ½mv² masse
+analogy-series-inductor = ½Li² bobine
+analogy-series-total-mass = total, masse
+analogy-series-total-circuit = total, circuit
+analogy-caption-mechanical = mécanique
+analogy-caption-electrical = électrique
+analogy-schematic-title = Jumeaux mécanique et électrique
+analogy-describe-responses = { $regime } (ζ = { $zeta }) : le rapport mécanique x/x₀ et le rapport électrique q/q₀ coïncident, de même que la vitesse v/(x₀ωₙ) et le courant i/(q₀ω₀) ({ $same ->
+        [exact] identiques jusqu'au dernier chiffre
+       *[close] écart maximal { $difference }
+    }) ; { $motion ->
+        [decaying] les deux oscillent à ω_d = { $frequency } et décroissent avec la constante de temps 1/(ζωₙ) = { $time }
+        [lasting] les deux oscillent indéfiniment à ω₀ = ωₙ = { $frequency }
+       *[creeping] les deux reviennent lentement au repos sans osciller
+    }.
+analogy-describe-energy = À t = 0, toute l'énergie, { $energy }, est stockée dans le ressort, et de même dans le condensateur. { $exchange ->
+        [swings] Elle passe dans la masse (la bobine), au plus { $peak } à la fois, puis revient, deux fois par cycle
+       *[passes] Sans oscillation, au plus { $peak } transite par la masse (la bobine)
+    } ; { $loss ->
+        [none] sans amortisseur (résistance), elle est encore entièrement présente après { $time }
+       *[heat] l'amortisseur c (la résistance R) la transforme en chaleur ; il en reste { $left } ({ $percent }) après { $time }
+    }. Les courbes mécaniques et électriques coïncident.
+analogy-schematic = À t = { $time } : la masse est déplacée de { $displacement } et se déplace à { $velocity } ; le condensateur porte { $charge } et le courant vaut { $current }. Les mêmes nombres, dans d'autres unités.
+analogy-title = Une équation, deux machines
+analogy-summary = Une masse sur un ressort et un amortisseur et une boucle série bobine–résistance–condensateur obéissent à la même équation du second ordre. Dans l'analogie force–tension, masse m ↔ inductance L, amortissement c ↔ résistance R, raideur k ↔ 1/C, force F ↔ tension E et déplacement x ↔ charge q (donc vitesse ↔ courant). Ici, le circuit reçoit les mêmes nombres que le mécanisme (L en H = m en kg, R en Ω = c en N·s/m, 1/C en 1/F = k en N/m, q₀ en C = x₀ en m), et tous deux partent du repos : déplacez n'importe quel curseur et les deux machines changent ensemble, leurs réponses normalisées restent une seule et même courbe, et l'énergie passe du ressort à la masse exactement comme du condensateur à la bobine.
+analogy-param-m = masse (≙ inductance L)
+analogy-param-c = amortissement (≙ résistance R)
+analogy-param-k = raideur du ressort (≙ 1/C)
+analogy-param-x0 = déplacement initial (≙ charge q₀)
+analogy-readout-m = masse m
+analogy-readout-L = inductance L (≙ masse m)
+analogy-readout-c = amortissement c
+analogy-readout-R = résistance R (≙ amortissement c)
+analogy-readout-k = raideur du ressort k
+analogy-readout-elastance = élastance 1/C (≙ k)
+analogy-readout-compliance = souplesse 1/k (≙ C)
+analogy-readout-C = capacité C (≙ 1/k)
+analogy-readout-x0 = déplacement initial x₀
+analogy-readout-q0 = charge initiale q₀ (≙ x₀)
+analogy-readout-wn = pulsation propre ωₙ = √(k/m)
+analogy-readout-w0 = pulsation de résonance ω₀ = 1/√(LC) (≙ ωₙ)
+analogy-readout-zeta = taux d'amortissement ζ (les deux)
+analogy-readout-regime = régime (les deux)
+analogy-readout-Q = facteur de qualité Q (les deux)
+analogy-readout-energy = énergie stockée ½kx₀² = ½q₀²/C
+analogy-plot-responses = Réponses normalisées des deux machines
+analogy-plot-energy = Échange d'énergie
+analogy-preset-1 = Ressort sans frottement ↔ circuit oscillant LC (c = R = 0)
+analogy-preset-2 = Amortissement faible ζ = 0,05
+analogy-preset-3 = Critique ζ = 1 (c = 2√(mk), R = 2√(L/C))
+analogy-preset-4 = Suramorti ζ = 2
+analogy-preset-5 = Lourd et souple : m = 4 kg ↔ L = 4 H, k = 25 N/m ↔ C = 40 mF
+analogy-table-caption = L'analogie force–tension : a·y″ + b·y′ + c·y = f(t) lue de deux façons, avec les valeurs actuelles des deux machines
+analogy-table-column-1 = rôle dans l'équation
+analogy-table-column-2 = mécanique
+analogy-table-column-3 = valeur actuelle
+analogy-table-column-4 = électrique
+analogy-table-column-5 = valeur actuelle
+analogy-table-inertia-1 = inertie a
+analogy-table-inertia-2 = masse m [kg]
+analogy-table-inertia-4 = inductance L [H]
+analogy-table-dissipation-1 = dissipation b
+analogy-table-dissipation-2 = coefficient d'amortissement c [N·s/m]
+analogy-table-dissipation-4 = résistance R [Ω]
+analogy-table-stiffness-1 = raideur c
+analogy-table-stiffness-2 = raideur du ressort k [N/m]
+analogy-table-stiffness-4 = élastance 1/C [1/F]
+analogy-table-compliance-1 = souplesse 1/c
+analogy-table-compliance-2 = souplesse 1/k [m/N]
+analogy-table-compliance-4 = capacité C [F]
+analogy-table-drive-1 = excitation f(t)
+analogy-table-drive-2 = force F [N]
+analogy-table-drive-3 = 0 : lâché depuis le repos
+analogy-table-drive-4 = tension E [V]
+analogy-table-drive-5 = 0 : aucune source dans la boucle
+analogy-table-coordinate-1 = coordonnée y, initialement y₀
+analogy-table-coordinate-2 = déplacement x, initialement x₀ [m]
+analogy-table-coordinate-4 = charge q, initialement q₀ [C]
+analogy-table-rate-1 = dérivée y′
+analogy-table-rate-2 = vitesse v = ẋ [m/s]
+analogy-table-rate-3 = 0 au lâcher
+analogy-table-rate-4 = courant i = q̇ [A]
+analogy-table-rate-5 = 0 au lâcher
+analogy-table-natural-frequency-1 = pulsation propre √(c/a)
+analogy-table-natural-frequency-2 = ωₙ = √(k/m) [rad/s]
+analogy-table-natural-frequency-4 = ω₀ = 1/√(LC) [rad/s]
+analogy-table-damping-ratio-1 = taux d'amortissement ζ = b/(2√(ac))
+analogy-table-damping-ratio-2 = ζ = c/(2√(mk))
+analogy-table-damping-ratio-4 = ζ = (R/2)·√(C/L)
+analogy-table-quality-factor-1 = facteur de qualité Q = √(ac)/b
+analogy-table-quality-factor-2 = Q = √(mk)/c
+analogy-table-quality-factor-4 = Q = √(L/C)/R
+analogy-table-potential-energy-1 = stockée par la raideur
+analogy-table-potential-energy-2 = ressort ½kx², au lâcher ½kx₀² [J]
+analogy-table-potential-energy-4 = condensateur ½q²/C, au lâcher ½q₀²/C [J]
+analogy-table-kinetic-energy-1 = stockée par l'inertie
+analogy-table-kinetic-energy-2 = masse ½mv² [J]
+analogy-table-kinetic-energy-3 = 0 au lâcher
+analogy-table-kinetic-energy-4 = bobine ½Li² [J]
+analogy-table-kinetic-energy-5 = 0 au lâcher
+analogy-table-power-lost-1 = puissance dissipée
+analogy-table-power-lost-2 = amortisseur c·v² [W]
+analogy-table-power-lost-3 = 0 au lâcher
+analogy-table-power-lost-4 = résistance R·i² [W]
+analogy-table-power-lost-5 = 0 au lâcher
+
+### universality
+
+universality-axis-response = réponse normalisée y/y₀
+universality-axis-time = temps normalisé ωₙt
+universality-series-critical = ζ = 1 (critique), pour référence
+universality-schematic-title = Machines A et B
+universality-match-off = désactivé
+universality-match-on = activé : B a les mêmes ωₙ et ζ que A
+universality-match-too-light = inaccessible : ses autres paramètres étant conservés, B ne peut pas descendre sous ζ = { $zeta_min } ; A a ζ = { $zeta }
+universality-match-out-of-range = inaccessible avec les curseurs : B nécessiterait { $symbol } = { $value }, hors de { $low } … { $high }
+universality-match-impossible = inaccessible : A n'a pas de pulsation propre
+universality-describe-normalised = Lâchées depuis le repos : A ({ $machine_a }, ζ = { $zeta_a }) { $behaviour_a ->
+        [forever] oscille indéfiniment
+        [dies-away] oscille en s'amortissant
+        [fastest] revient aussi vite que possible sans dépassement
+       *[creeps] revient lentement sans dépassement
+    } ; B ({ $machine_b }, ζ = { $zeta_b }) { $behaviour_b ->
+        [forever] oscille indéfiniment
+        [dies-away] oscille en s'amortissant
+        [fastest] revient aussi vite que possible sans dépassement
+       *[creeps] revient lentement sans dépassement
+    }. { $relation ->
+        [coincide] Les deux courbes coïncident (écart maximal { $gap }).
+       *[differ] Les courbes diffèrent d'au plus { $gap } de y₀.
+    }{ $thermal ->
+        [yes] { " " }Un système thermique à deux capacités ne peut pas osciller : son ζ dépasse 1 quelles que soient ses capacités et ses résistances.
+       *[no] { "" }
+    }
+universality-describe-realtime = Temps réel sur { $window } : échelle de temps 1/ωₙ de A { $scale_a }, de B { $scale_b } ; { $pace ->
+        [faster] B va { $factor } fois plus vite que A
+        [slower] B va { $factor } fois plus lentement que A
+       *[same] B suit exactement le rythme de A
+    }.
+universality-schematic = À t = { $time } : A, { $machine_a } : { $coordinate_a } = { $value_a } ; B, { $machine_b } : { $coordinate_b } = { $value_b }.
+universality-title = Une équation, de nombreuses machines
+universality-summary = Six machines, une équation a·y″ + b·y′ + c·y = f(t). Choisissez une machine pour A et une pour B, et réglez chacune par ses propres paramètres physiques : chacune donne ses propres a, b et c, dans ses propres unités, et donc une pulsation propre ωₙ = √(c/a) et un taux d'amortissement ζ = b/(2√(ac)). Lâchée depuis y₀ au repos, la réponse normalisée y/y₀ d'une machine en fonction de ωₙt ne dépend que de ζ : des machines de même ζ tracent une seule et même courbe. Cochez « accorder » et les paramètres de réglage de B sont calculés pour que ses ωₙ et ζ égalent ceux de A : B se comporte alors exactement comme A, seconde par seconde. Le système thermique à deux capacités n'oscille jamais : b² − 4ac = (τ₁ − τ₂)² + R₁C₂(2τ₁ + 2τ₂ + R₁C₂) > 0, donc son ζ > 1 quelles que soient ses capacités et ses résistances — la chaleur n'a pas d'inertie qui l'emporterait au-delà de l'équilibre.
+universality-param-A = machine A
+universality-param-A-mass-spring = masse–ressort–amortisseur
+universality-param-A-rlc = circuit RLC série
+universality-param-A-u-tube = manomètre à tube en U
+universality-param-A-servo = asservissement de position par moteur à courant continu (commande PD)
+universality-param-A-storey = étage de bâtiment soumis à un mouvement du sol
+universality-param-A-thermal = système thermique à deux capacités
+universality-param-A-m = masse
+universality-param-A-c = coefficient d'amortissement
+universality-param-A-k = raideur du ressort
+universality-param-A-L = inductance
+universality-param-A-R = résistance
+universality-param-A-C = capacité
+universality-param-A-len = longueur de la colonne de liquide
+universality-param-A-bore = diamètre intérieur du tube
+universality-param-A-rho = masse volumique du liquide
+universality-param-A-mu = viscosité dynamique
+universality-param-A-J = inertie du moteur et de la charge
+universality-param-A-Kt = constante de couple du moteur
+universality-param-A-Ra = résistance d'induit
+universality-param-A-Kp = gain proportionnel
+universality-param-A-Kd = gain dérivé
+universality-param-A-mf = masse du plancher
+universality-param-A-h = hauteur d'étage
+universality-param-A-EI = rigidité en flexion de chacun des 4 poteaux
+universality-param-A-cf = coefficient d'amortissement de l'étage
+universality-param-A-C1 = capacité thermique du corps 1
+universality-param-A-R1 = résistance thermique, du corps 1 vers l'ambiance
+universality-param-A-C2 = capacité thermique du corps 2
+universality-param-A-R2 = résistance thermique, du corps 2 vers le corps 1
+universality-param-B = machine B
+universality-param-B-mass-spring = masse–ressort–amortisseur
+universality-param-B-rlc = circuit RLC série
+universality-param-B-u-tube = manomètre à tube en U
+universality-param-B-servo = asservissement de position par moteur à courant continu (commande PD)
+universality-param-B-storey = étage de bâtiment soumis à un mouvement du sol
+universality-param-B-thermal = système thermique à deux capacités
+universality-param-B-m = masse
+universality-param-B-c = coefficient d'amortissement
+universality-param-B-k = raideur du ressort
+universality-param-B-L = inductance
+universality-param-B-R = résistance
+universality-param-B-C = capacité
+universality-param-B-len = longueur de la colonne de liquide
+universality-param-B-bore = diamètre intérieur du tube
+universality-param-B-rho = masse volumique du liquide
+universality-param-B-mu = viscosité dynamique
+universality-param-B-J = inertie du moteur et de la charge
+universality-param-B-Kt = constante de couple du moteur
+universality-param-B-Ra = résistance d'induit
+universality-param-B-Kp = gain proportionnel
+universality-param-B-Kd = gain dérivé
+universality-param-B-mf = masse du plancher
+universality-param-B-h = hauteur d'étage
+universality-param-B-EI = rigidité en flexion de chacun des 4 poteaux
+universality-param-B-cf = coefficient d'amortissement de l'étage
+universality-param-B-C1 = capacité thermique du corps 1
+universality-param-B-R1 = résistance thermique, du corps 1 vers l'ambiance
+universality-param-B-C2 = capacité thermique du corps 2
+universality-param-B-R2 = résistance thermique, du corps 2 vers le corps 1
+universality-param-match = accorder : régler B pour qu'il se comporte comme A (mêmes ωₙ et ζ)
+universality-readout-a-A = coefficient d'inertie a de A
+universality-readout-b-A = coefficient d'amortissement b de A
+universality-readout-c-A = coefficient de raideur c de A
+universality-readout-wn-A = pulsation propre ωₙ de A
+universality-readout-zeta-A = taux d'amortissement ζ de A
+universality-readout-regime-A = régime de A
+universality-readout-a-B = coefficient d'inertie a de B
+universality-readout-b-B = coefficient d'amortissement b de B
+universality-readout-c-B = coefficient de raideur c de B
+universality-readout-wn-B = pulsation propre ωₙ de B
+universality-readout-zeta-B = taux d'amortissement ζ de B
+universality-readout-regime-B = régime de B
+universality-readout-wn-ratio = rapport des échelles de temps ωₙ(B)/ωₙ(A)
+universality-readout-match = accord
+universality-plot-normalised = Réponses normalisées y/y₀ en fonction de ωₙt
+universality-plot-realtime = Réponses en temps réel
+universality-preset-1 = Masse–ressort et circuit RLC, accordés
+universality-preset-2 = Manomètre à tube en U et masse–ressort, accordés
+universality-preset-3 = Étage de bâtiment réglé comme un asservissement
+universality-preset-4 = Thermomètre (deux capacités) et masse–ressort, accordés
+universality-preset-5 = Un système thermique ne peut pas imiter un oscillateur
+universality-table-caption = Une équation, de nombreuses machines : ce que sont y, a, b et c
+universality-table-column-1 = machine
+universality-table-column-2 = coordonnée y
+universality-table-column-3 = a
+universality-table-column-4 = b
+universality-table-column-5 = c
+universality-table-column-6 = ωₙ
+universality-table-column-7 = ζ
+universality-table-mass-spring-1 = masse–ressort–amortisseur
+universality-table-mass-spring-2 = déplacement x [m]
+universality-table-mass-spring-3 = masse m [kg]
+universality-table-mass-spring-4 = coefficient d'amortissement c [N·s/m]
+universality-table-mass-spring-5 = raideur du ressort k [N/m]
+universality-table-mass-spring-6 = √(k/m)
+universality-table-mass-spring-7 = c/(2√(km))
+universality-table-rlc-1 = circuit RLC série
+universality-table-rlc-2 = charge q [C]
+universality-table-rlc-3 = inductance L [H]
+universality-table-rlc-4 = résistance R [Ω]
+universality-table-rlc-5 = 1/C [1/F]
+universality-table-rlc-6 = 1/√(LC)
+universality-table-rlc-7 = (R/2)·√(C/L)
+universality-table-u-tube-1 = manomètre à tube en U
+universality-table-u-tube-2 = variation de niveau h [m]
+universality-table-u-tube-3 = ρAL [kg]
+universality-table-u-tube-4 = 8πμL [N·s/m]
+universality-table-u-tube-5 = 2ρgA [N/m]
+universality-table-u-tube-6 = √(2g/L)
+universality-table-u-tube-7 = 16μ/(ρd²ωₙ)
+universality-table-servo-1 = asservissement de position par moteur à courant continu (commande PD)
+universality-table-servo-2 = erreur angulaire θ [rad]
+universality-table-servo-3 = J [kg·m²]
+universality-table-servo-4 = K_t(K_t + K_d)/R_a [N·m·s/rad]
+universality-table-servo-5 = K_t·K_p/R_a [N·m/rad]
+universality-table-servo-6 = √(K_t·K_p/(R_a·J))
+universality-table-servo-7 = ≥ K_t²/(2ωₙR_a·J), due à la seule force contre-électromotrice
+universality-table-storey-1 = étage de bâtiment soumis à un mouvement du sol
+universality-table-storey-2 = déplacement relatif de l'étage u [m]
+universality-table-storey-3 = masse du plancher m [kg]
+universality-table-storey-4 = coefficient d'amortissement c [N·s/m]
+universality-table-storey-5 = 12·4·EI/h³ [N/m]
+universality-table-storey-6 = √(48EI/(m·h³))
+universality-table-storey-7 = c/(2√(km))
+universality-table-thermal-1 = système thermique à deux capacités
+universality-table-thermal-2 = excès de température T₂ [K]
+universality-table-thermal-3 = R₁C₁R₂C₂ [s²]
+universality-table-thermal-4 = R₁C₁ + R₂C₂ + R₁C₂ [s]
+universality-table-thermal-5 = 1
+universality-table-thermal-6 = 1/√(τ₁τ₂)
+universality-table-thermal-7 = (τ₁ + τ₂ + R₁C₂)/(2√(τ₁τ₂)) > 1
+
+### regimes
+
+regimes-envelope = enveloppe ±A·e^(−ζωₙt)
+regimes-series-response = x(t), { $regime }
+regimes-describe-settles = { $regime } : { $swings ->
+        [0] ne franchit pas l'équilibre avant de s'établir
+        [one] franchit l'équilibre une fois avant de s'établir
+       *[other] franchit l'équilibre { $swings } fois avant de s'établir
+    }, reste à moins de 5 % du repos après { $time }, rebond maximal { $rebound }.
+regimes-describe-unsettled = { $regime } : { $swings ->
+        [0] ne franchit pas l'équilibre avant de s'établir
+        [one] franchit l'équilibre une fois avant de s'établir
+       *[other] franchit l'équilibre { $swings } fois avant de s'établir
+    }, ne s'établit pas, rebond maximal { $rebound }.
+regimes-describe-undamped = non amorti : oscille indéfiniment avec une amplitude de { $amplitude } à { $frequency }.
+regimes-describe-growing = amortissement négatif : la réponse croît sans limite, d'un facteur e toutes les { $time }.
+regimes-describe-at-rest = { $regime } : part du repos à l'équilibre.
+regimes-poles = Pôles en { $re1 } { $sign1 } { $im1 }i et { $re2 } { $sign2 } { $im2 }i 1/s, dans le demi-plan { $side ->
+        [right] droit (instable)
+       *[left] gauche (stable)
+    }.
+regimes-schematic = Masse sur ressort et amortisseur à t = { $time } : déplacée de { $displacement } par rapport au repos.
+regimes-title = Régimes d'amortissement
+regimes-summary = Réponse libre depuis x(0) = x₀, x′(0) = v₀. Le taux d'amortissement ζ détermine le régime : ζ = 0 non amorti, 0 < ζ < 1 sous-amorti, ζ = 1 amortissement critique, ζ > 1 suramorti, ζ < 0 amortissement négatif (la réponse croît). Les pôles s = −ζωₙ ± ωₙ√(ζ² − 1) se déplacent sur un cercle de rayon ωₙ, rejoignent l'axe réel en ζ = 1 et traversent l'axe imaginaire en ζ = 0.
+regimes-param-wn = pulsation propre
+regimes-param-zeta = taux d'amortissement
+regimes-param-x0 = déplacement initial
+regimes-param-v0 = vitesse initiale
+regimes-readout-regime = régime
+regimes-readout-wn = pulsation propre ωₙ
+regimes-readout-zeta = taux d'amortissement ζ
+regimes-readout-wd = pulsation amortie ω_d
+regimes-readout-pole-re = partie réelle du pôle
+regimes-readout-pole-im = partie imaginaire du pôle
+regimes-plot-response = Réponse libre x(t)
+regimes-plot-poles = Pôles dans le plan s
+regimes-preset-1 = Non amorti ζ = 0
+regimes-preset-2 = Sous-amorti ζ = 0,2
+regimes-preset-3 = Amortissement critique ζ = 1
+regimes-preset-4 = Suramorti ζ = 2
+regimes-preset-5 = Amortissement négatif ζ = −0,1
+regimes-table-caption = Les régimes d'amortissement
+regimes-table-column-1 = régime
+regimes-table-column-2 = condition
+regimes-table-column-3 = racines s₁, s₂
+regimes-table-column-4 = comportement
+regimes-table-column-5 = exemples en ingénierie
+regimes-table-undamped-1 = Non amorti
+regimes-table-undamped-2 = ζ = 0
+regimes-table-undamped-3 = ±iωₙ, sur l'axe imaginaire
+regimes-table-undamped-4 = oscille indéfiniment à ωₙ
+regimes-table-undamped-5 = pendule idéal, circuit oscillant LC
+regimes-table-underdamped-1 = Sous-amorti
+regimes-table-underdamped-2 = 0 < ζ < 1
+regimes-table-underdamped-3 = −ζωₙ ± iω_d, paire complexe
+regimes-table-underdamped-4 = oscillation décroissante à ω_d
+regimes-table-underdamped-5 = suspension automobile (ζ ≈ 0,2–0,7), corde de guitare
+regimes-table-critically-damped-1 = Amortissement critique
+regimes-table-critically-damped-2 = ζ = 1
+regimes-table-critically-damped-3 = −ωₙ, racine réelle double
+regimes-table-critically-damped-4 = retour le plus rapide sans oscillation
+regimes-table-critically-damped-5 = ferme-porte, aiguille de galvanomètre analogique
+regimes-table-overdamped-1 = Suramorti
+regimes-table-overdamped-2 = ζ > 1
+regimes-table-overdamped-3 = deux racines réelles négatives
+regimes-table-overdamped-4 = retour lent, sans oscillation
+regimes-table-overdamped-5 = amortisseur hydraulique lourd, thermomètre
+regimes-table-negatively-damped-1 = Amortissement négatif
+regimes-table-negatively-damped-2 = ζ < 0
+regimes-table-negatively-damped-3 = demi-plan droit
+regimes-table-negatively-damped-4 = oscillation croissante
+regimes-table-negatively-damped-5 = flottement (pont de Tacoma Narrows), freins qui crissent
 

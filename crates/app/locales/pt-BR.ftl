@@ -2,4 +2,416 @@
 
 schematic-title = Esquema
 schematic-circuit = Circuito
+### rlc
+
+rlc-axis-current = corrente i
+rlc-axis-voltage = tensão no capacitor v_C
+rlc-envelope = envoltória
+rlc-series-critical = R crítica = { $resistance }
+rlc-schematic = Circuito RLC série em t = { $time }: corrente { $current }, capacitor em { $voltage }.
+rlc-describe-current-undamped = R = { $resistance }, não amortecido (um circuito LC sem perdas): a corrente oscila indefinidamente em ω₀ = { $frequency }, entre ±{ $bound } (toda a energia passa para o indutor e volta a cada meio período).
+rlc-describe-voltage-undamped = R = { $resistance }, não amortecido (um circuito LC sem perdas): a tensão no capacitor oscila indefinidamente entre +{ $voltage } e −{ $voltage } em ω₀ = { $frequency }.
+rlc-describe-current-underdamped = R = { $resistance }, abaixo da resistência crítica { $critical }, subamortecido: a corrente oscila em ω_d = { $frequency } (Q = { $q }), decaindo como e^(−αt) com α = { $alpha }; nunca ultrapassa { $bound }.
+rlc-describe-voltage-underdamped = R = { $resistance }, abaixo da resistência crítica { $critical }, subamortecido: a tensão no capacitor { $reversal ->
+        [slight] se inverte apenas levemente (no máximo { $rebound } de V₀, dentro da faixa)
+        [count] { $crossings ->
+            [one] inverte a polaridade uma vez antes de se acomodar
+           *[other] inverte a polaridade { $crossings } vezes antes de se acomodar
+        }
+       *[never] nunca inverte a polaridade
+    } e { $settles ->
+        [yes] fica dentro de 5 % de V₀ após { $time }
+       *[no] nunca se acomoda
+    }.
+rlc-describe-current-critical = R = { $resistance }, igual à resistência crítica, criticamente amortecido: um único pulso de corrente (negativo, com o capacitor se descarregando) que volta a zero sem inverter; a corrente nunca ultrapassa { $bound }.
+rlc-describe-voltage-critical = R = { $resistance }, igual à resistência crítica, criticamente amortecido: o capacitor se descarrega o mais rápido possível sem inverter; a tensão { $settles ->
+        [yes] fica dentro de 5 % de V₀ após { $time }
+       *[no] nunca se acomoda
+    }.
+rlc-describe-current-overdamped = R = { $resistance }, acima da resistência crítica { $critical }, superamortecido: um pulso lento de corrente (negativo, com o capacitor se descarregando) sem inverter, constante de tempo lenta { $time }.
+rlc-describe-voltage-overdamped = R = { $resistance }, acima da resistência crítica { $critical }, superamortecido: o capacitor se descarrega lentamente sem inverter; a tensão { $settles ->
+        [yes] fica dentro de 5 % de V₀ após { $time }
+       *[no] nunca se acomoda
+    }.
+rlc-title = Circuito RLC série
+rlc-summary = Um capacitor carregado com V₀ é ligado em t = 0 a uma malha com um indutor e um resistor. A carga q obedece à mesma equação de uma massa presa a uma mola: L faz o papel da massa, R o do amortecedor e 1/C o da mola. Com R abaixo da resistência crítica 2√(L/C), a energia vai e volta entre C e L e a corrente oscila em ω_d, decaindo como e^(−αt), α = R/(2L); com R = 2√(L/C), o capacitor se descarrega o mais rápido possível sem inverter; acima disso, a descarga volta a ser mais lenta. Q = 1/(2ζ) mede o quanto o circuito oscila, e R/L é a largura de banda de meia potência da ressonância da corrente: sob uma tensão senoidal, |I|² fica acima da metade do seu pico numa faixa de exatamente R/L rad/s, para qualquer R. A corrente é negativa enquanto o capacitor se descarrega (i = dq/dt).
+rlc-param-R = resistência
+rlc-param-L = indutância
+rlc-param-C = capacitância
+rlc-param-V0 = tensão inicial no capacitor
+rlc-readout-regime = regime
+rlc-readout-w0 = frequência de ressonância ω₀ = 1/√(LC)
+rlc-readout-f0 = frequência de ressonância f₀
+rlc-readout-alpha = taxa de decaimento α = R/(2L)
+rlc-readout-zeta = razão de amortecimento ζ
+rlc-readout-Q = fator de qualidade Q = 1/(2ζ)
+rlc-readout-bandwidth = largura de banda de meia potência da ressonância da corrente Δω = R/L
+rlc-readout-R-crit = resistência crítica 2√(L/C)
+rlc-readout-wd = frequência de oscilação ω_d
+rlc-readout-settling-time = v_C dentro de 5 % de V₀ após
+rlc-plot-current = Corrente i(t)
+rlc-plot-voltage = Tensão no capacitor v_C(t)
+rlc-preset-1 = LC sem perdas, R = 0
+rlc-preset-2 = Oscilante, R = 2 Ω
+rlc-preset-3 = Subamortecido, R = 5 Ω
+rlc-preset-4 = Crítico, R = 10 Ω
+rlc-preset-5 = Superamortecido, R = 20 Ω
+
+### analogy
+
+analogy-axis-response = resposta normalizada
+analogy-axis-energy = energia
+analogy-series-x = x/x₀ massa
+analogy-series-q = q/q₀ circuito
+analogy-series-v = v/(x₀ωₙ) massa
+analogy-series-i = i/(q₀ω₀) circuito
+analogy-series-spring = ½kx² mola
+analogy-series-capacitor = ½q²/C capacitor
+analogy-series-mass = ½mv² massa
+analogy-series-inductor = ½Li² indutor
+analogy-series-total-mass = total, massa
+analogy-series-total-circuit = total, circuito
+analogy-caption-mechanical = mecânico
+analogy-caption-electrical = elétrico
+analogy-schematic-title = Gêmeos mecânico e elétrico
+analogy-describe-responses = { $regime } (ζ = { $zeta }): o x/x₀ mecânico e o q/q₀ elétrico coincidem, assim como a velocidade v/(x₀ωₙ) e a corrente i/(q₀ω₀) ({ $same ->
+        [exact] idênticos até o último dígito
+       *[close] diferença máxima de { $difference }
+    }); { $motion ->
+        [decaying] ambos oscilam em ω_d = { $frequency } e decaem com constante de tempo 1/(ζωₙ) = { $time }
+        [lasting] ambos oscilam indefinidamente em ω₀ = ωₙ = { $frequency }
+       *[creeping] ambos voltam lentamente ao repouso sem oscilar
+    }.
+analogy-describe-energy = Em t = 0, toda a energia, { $energy }, está armazenada na mola e, igualmente, no capacitor. { $exchange ->
+        [swings] Ela passa para a massa (indutor), no máximo { $peak } de cada vez, e volta, duas vezes por ciclo
+       *[passes] Sem oscilar, no máximo { $peak } passa pela massa (indutor)
+    }; { $loss ->
+        [none] sem amortecedor (resistor), ela continua toda lá após { $time }
+       *[heat] o amortecedor c (resistor R) a transforma em calor, restando { $left } ({ $percent }) após { $time }
+    }. As curvas mecânica e elétrica coincidem.
+analogy-schematic = Em t = { $time }: a massa está deslocada { $displacement } e se move a { $velocity }; o capacitor armazena { $charge } e a corrente é { $current }. Os mesmos números em unidades diferentes.
+analogy-title = Uma equação, duas máquinas
+analogy-summary = Uma massa presa a uma mola e a um amortecedor e uma malha série indutor–resistor–capacitor obedecem à mesma equação de segunda ordem. Na analogia força–tensão, massa m ↔ indutância L, amortecimento c ↔ resistência R, rigidez k ↔ 1/C, força F ↔ tensão E e deslocamento x ↔ carga q (logo, velocidade ↔ corrente). Aqui o circuito recebe os mesmos números que o mecanismo (L em H = m em kg, R em Ω = c em N·s/m, 1/C em 1/F = k em N/m, q₀ em C = x₀ em m), e ambos partem do repouso: mova qualquer controle deslizante e as duas máquinas mudam juntas, suas respostas normalizadas continuam sendo uma única curva, e a energia vai e volta entre a mola e a massa exatamente como entre o capacitor e o indutor.
+analogy-param-m = massa (≙ indutância L)
+analogy-param-c = amortecimento (≙ resistência R)
+analogy-param-k = rigidez da mola (≙ 1/C)
+analogy-param-x0 = deslocamento inicial (≙ carga q₀)
+analogy-readout-m = massa m
+analogy-readout-L = indutância L (≙ massa m)
+analogy-readout-c = amortecimento c
+analogy-readout-R = resistência R (≙ amortecimento c)
+analogy-readout-k = rigidez da mola k
+analogy-readout-elastance = elastância 1/C (≙ k)
+analogy-readout-compliance = flexibilidade 1/k (≙ C)
+analogy-readout-C = capacitância C (≙ 1/k)
+analogy-readout-x0 = deslocamento inicial x₀
+analogy-readout-q0 = carga inicial q₀ (≙ x₀)
+analogy-readout-wn = frequência natural ωₙ = √(k/m)
+analogy-readout-w0 = frequência de ressonância ω₀ = 1/√(LC) (≙ ωₙ)
+analogy-readout-zeta = razão de amortecimento ζ (ambos)
+analogy-readout-regime = regime (ambos)
+analogy-readout-Q = fator de qualidade Q (ambos)
+analogy-readout-energy = energia armazenada ½kx₀² = ½q₀²/C
+analogy-plot-responses = Respostas normalizadas das duas máquinas
+analogy-plot-energy = Troca de energia
+analogy-preset-1 = Mola sem atrito ↔ circuito tanque LC (c = R = 0)
+analogy-preset-2 = Amortecimento leve ζ = 0,05
+analogy-preset-3 = Crítico ζ = 1 (c = 2√(mk), R = 2√(L/C))
+analogy-preset-4 = Superamortecido ζ = 2
+analogy-preset-5 = Pesado e macio: m = 4 kg ↔ L = 4 H, k = 25 N/m ↔ C = 40 mF
+analogy-table-caption = A analogia força–tensão: a·y″ + b·y′ + c·y = f(t) lida de duas maneiras, com os valores atuais das duas máquinas
+analogy-table-column-1 = papel na equação
+analogy-table-column-2 = mecânico
+analogy-table-column-3 = valor atual
+analogy-table-column-4 = elétrico
+analogy-table-column-5 = valor atual
+analogy-table-inertia-1 = inércia a
+analogy-table-inertia-2 = massa m [kg]
+analogy-table-inertia-4 = indutância L [H]
+analogy-table-dissipation-1 = dissipação b
+analogy-table-dissipation-2 = coeficiente de amortecimento c [N·s/m]
+analogy-table-dissipation-4 = resistência R [Ω]
+analogy-table-stiffness-1 = rigidez c
+analogy-table-stiffness-2 = rigidez da mola k [N/m]
+analogy-table-stiffness-4 = elastância 1/C [1/F]
+analogy-table-compliance-1 = flexibilidade 1/c
+analogy-table-compliance-2 = flexibilidade 1/k [m/N]
+analogy-table-compliance-4 = capacitância C [F]
+analogy-table-drive-1 = excitação f(t)
+analogy-table-drive-2 = força F [N]
+analogy-table-drive-3 = 0: parte do repouso
+analogy-table-drive-4 = tensão E [V]
+analogy-table-drive-5 = 0: sem fonte na malha
+analogy-table-coordinate-1 = coordenada y, inicialmente y₀
+analogy-table-coordinate-2 = deslocamento x, inicialmente x₀ [m]
+analogy-table-coordinate-4 = carga q, inicialmente q₀ [C]
+analogy-table-rate-1 = derivada y′
+analogy-table-rate-2 = velocidade v = ẋ [m/s]
+analogy-table-rate-3 = 0 ao soltar
+analogy-table-rate-4 = corrente i = q̇ [A]
+analogy-table-rate-5 = 0 ao soltar
+analogy-table-natural-frequency-1 = frequência natural √(c/a)
+analogy-table-natural-frequency-2 = ωₙ = √(k/m) [rad/s]
+analogy-table-natural-frequency-4 = ω₀ = 1/√(LC) [rad/s]
+analogy-table-damping-ratio-1 = razão de amortecimento ζ = b/(2√(ac))
+analogy-table-damping-ratio-2 = ζ = c/(2√(mk))
+analogy-table-damping-ratio-4 = ζ = (R/2)·√(C/L)
+analogy-table-quality-factor-1 = fator de qualidade Q = √(ac)/b
+analogy-table-quality-factor-2 = Q = √(mk)/c
+analogy-table-quality-factor-4 = Q = √(L/C)/R
+analogy-table-potential-energy-1 = armazenada pela rigidez
+analogy-table-potential-energy-2 = mola ½kx², ao soltar ½kx₀² [J]
+analogy-table-potential-energy-4 = capacitor ½q²/C, ao soltar ½q₀²/C [J]
+analogy-table-kinetic-energy-1 = armazenada pela inércia
+analogy-table-kinetic-energy-2 = massa ½mv² [J]
+analogy-table-kinetic-energy-3 = 0 ao soltar
+analogy-table-kinetic-energy-4 = indutor ½Li² [J]
+analogy-table-kinetic-energy-5 = 0 ao soltar
+analogy-table-power-lost-1 = potência dissipada
+analogy-table-power-lost-2 = amortecedor c·v² [W]
+analogy-table-power-lost-3 = 0 ao soltar
+analogy-table-power-lost-4 = resistor R·i² [W]
+analogy-table-power-lost-5 = 0 ao soltar
+
+### universality
+
+universality-axis-response = resposta normalizada y/y₀
+universality-axis-time = tempo normalizado ωₙt
+universality-series-critical = ζ = 1 (crítico), como referência
+universality-schematic-title = Máquinas A e B
+universality-match-off = desligado
+universality-match-on = ligado: B tem os mesmos ωₙ e ζ de A
+universality-match-too-light = inalcançável: mantidos os seus outros parâmetros, B não consegue ficar abaixo de ζ = { $zeta_min }; A tem ζ = { $zeta }
+universality-match-out-of-range = inalcançável dentro dos controles: B precisaria de { $symbol } = { $value }, fora de { $low } … { $high }
+universality-match-impossible = inalcançável: A não tem frequência natural
+universality-describe-normalised = Liberadas a partir do repouso: A ({ $machine_a }, ζ = { $zeta_a }) { $behaviour_a ->
+        [forever] oscila indefinidamente
+        [dies-away] oscila e se extingue
+        [fastest] volta o mais rápido possível sem sobressinal
+       *[creeps] volta lentamente sem sobressinal
+    }; B ({ $machine_b }, ζ = { $zeta_b }) { $behaviour_b ->
+        [forever] oscila indefinidamente
+        [dies-away] oscila e se extingue
+        [fastest] volta o mais rápido possível sem sobressinal
+       *[creeps] volta lentamente sem sobressinal
+    }. { $relation ->
+        [coincide] As duas curvas coincidem (diferença máxima de { $gap }).
+       *[differ] As curvas diferem em até { $gap } de y₀.
+    }{ $thermal ->
+        [yes] { " " }Um sistema térmico de duas capacidades não pode oscilar: seu ζ fica acima de 1 para quaisquer capacidades e resistências.
+       *[no] { "" }
+    }
+universality-describe-realtime = Tempo real ao longo de { $window }: escala de tempo 1/ωₙ de A { $scale_a }, de B { $scale_b }; { $pace ->
+        [faster] B é { $factor } vezes mais rápida que A
+        [slower] B é { $factor } vezes mais lenta que A
+       *[same] B acompanha A exatamente
+    }.
+universality-schematic = Em t = { $time }: A, { $machine_a }: { $coordinate_a } = { $value_a }; B, { $machine_b }: { $coordinate_b } = { $value_b }.
+universality-title = Uma equação, muitas máquinas
+universality-summary = Seis máquinas, uma equação a·y″ + b·y′ + c·y = f(t). Escolha uma máquina para A e outra para B e ajuste cada uma pelos seus próprios parâmetros físicos: cada uma fornece seus próprios a, b e c, em suas próprias unidades, e daí uma frequência natural ωₙ = √(c/a) e uma razão de amortecimento ζ = b/(2√(ac)). Liberada a partir de y₀ em repouso, a resposta normalizada y/y₀ de uma máquina em função de ωₙt depende apenas de ζ, de modo que máquinas com o mesmo ζ traçam uma única curva. Marque “igualar” e os parâmetros de ajuste de B são calculados para que seus ωₙ e ζ sejam iguais aos de A: então B se comporta exatamente como A, segundo a segundo. O sistema térmico de duas capacidades nunca oscila: b² − 4ac = (τ₁ − τ₂)² + R₁C₂(2τ₁ + 2τ₂ + R₁C₂) > 0, logo seu ζ > 1 quaisquer que sejam suas capacidades e resistências — o calor não tem inércia que o leve além do equilíbrio.
+universality-param-A = máquina A
+universality-param-A-mass-spring = massa–mola–amortecedor
+universality-param-A-rlc = circuito RLC série
+universality-param-A-u-tube = manômetro de tubo em U
+universality-param-A-servo = servo de posição com motor CC (controle PD)
+universality-param-A-storey = andar de edifício sob movimento do solo
+universality-param-A-thermal = sistema térmico de duas capacidades
+universality-param-A-m = massa
+universality-param-A-c = coeficiente de amortecimento
+universality-param-A-k = rigidez da mola
+universality-param-A-L = indutância
+universality-param-A-R = resistência
+universality-param-A-C = capacitância
+universality-param-A-len = comprimento da coluna de líquido
+universality-param-A-bore = diâmetro interno do tubo
+universality-param-A-rho = massa específica do líquido
+universality-param-A-mu = viscosidade dinâmica
+universality-param-A-J = inércia do motor e da carga
+universality-param-A-Kt = constante de torque do motor
+universality-param-A-Ra = resistência de armadura
+universality-param-A-Kp = ganho proporcional
+universality-param-A-Kd = ganho derivativo
+universality-param-A-mf = massa do piso
+universality-param-A-h = altura do andar
+universality-param-A-EI = rigidez à flexão de cada um dos 4 pilares
+universality-param-A-cf = coeficiente de amortecimento do andar
+universality-param-A-C1 = capacidade térmica do corpo 1
+universality-param-A-R1 = resistência térmica, do corpo 1 ao ambiente
+universality-param-A-C2 = capacidade térmica do corpo 2
+universality-param-A-R2 = resistência térmica, do corpo 2 ao corpo 1
+universality-param-B = máquina B
+universality-param-B-mass-spring = massa–mola–amortecedor
+universality-param-B-rlc = circuito RLC série
+universality-param-B-u-tube = manômetro de tubo em U
+universality-param-B-servo = servo de posição com motor CC (controle PD)
+universality-param-B-storey = andar de edifício sob movimento do solo
+universality-param-B-thermal = sistema térmico de duas capacidades
+universality-param-B-m = massa
+universality-param-B-c = coeficiente de amortecimento
+universality-param-B-k = rigidez da mola
+universality-param-B-L = indutância
+universality-param-B-R = resistência
+universality-param-B-C = capacitância
+universality-param-B-len = comprimento da coluna de líquido
+universality-param-B-bore = diâmetro interno do tubo
+universality-param-B-rho = massa específica do líquido
+universality-param-B-mu = viscosidade dinâmica
+universality-param-B-J = inércia do motor e da carga
+universality-param-B-Kt = constante de torque do motor
+universality-param-B-Ra = resistência de armadura
+universality-param-B-Kp = ganho proporcional
+universality-param-B-Kd = ganho derivativo
+universality-param-B-mf = massa do piso
+universality-param-B-h = altura do andar
+universality-param-B-EI = rigidez à flexão de cada um dos 4 pilares
+universality-param-B-cf = coeficiente de amortecimento do andar
+universality-param-B-C1 = capacidade térmica do corpo 1
+universality-param-B-R1 = resistência térmica, do corpo 1 ao ambiente
+universality-param-B-C2 = capacidade térmica do corpo 2
+universality-param-B-R2 = resistência térmica, do corpo 2 ao corpo 1
+universality-param-match = igualar: ajustar B para se comportar como A (mesmos ωₙ e ζ)
+universality-readout-a-A = coeficiente de inércia a de A
+universality-readout-b-A = coeficiente de amortecimento b de A
+universality-readout-c-A = coeficiente de rigidez c de A
+universality-readout-wn-A = frequência natural ωₙ de A
+universality-readout-zeta-A = razão de amortecimento ζ de A
+universality-readout-regime-A = regime de A
+universality-readout-a-B = coeficiente de inércia a de B
+universality-readout-b-B = coeficiente de amortecimento b de B
+universality-readout-c-B = coeficiente de rigidez c de B
+universality-readout-wn-B = frequência natural ωₙ de B
+universality-readout-zeta-B = razão de amortecimento ζ de B
+universality-readout-regime-B = regime de B
+universality-readout-wn-ratio = razão das escalas de tempo ωₙ(B)/ωₙ(A)
+universality-readout-match = igualação
+universality-plot-normalised = Respostas normalizadas y/y₀ em função de ωₙt
+universality-plot-realtime = Respostas em tempo real
+universality-preset-1 = Massa–mola e circuito RLC, igualados
+universality-preset-2 = Manômetro de tubo em U e massa–mola, igualados
+universality-preset-3 = Andar de edifício ajustado como um servo
+universality-preset-4 = Termômetro (duas capacidades) e massa–mola, igualados
+universality-preset-5 = Um sistema térmico não consegue igualar um oscilador
+universality-table-caption = Uma equação, muitas máquinas: o que são y, a, b e c
+universality-table-column-1 = máquina
+universality-table-column-2 = coordenada y
+universality-table-column-3 = a
+universality-table-column-4 = b
+universality-table-column-5 = c
+universality-table-column-6 = ωₙ
+universality-table-column-7 = ζ
+universality-table-mass-spring-1 = massa–mola–amortecedor
+universality-table-mass-spring-2 = deslocamento x [m]
+universality-table-mass-spring-3 = massa m [kg]
+universality-table-mass-spring-4 = coeficiente de amortecimento c [N·s/m]
+universality-table-mass-spring-5 = rigidez da mola k [N/m]
+universality-table-mass-spring-6 = √(k/m)
+universality-table-mass-spring-7 = c/(2√(km))
+universality-table-rlc-1 = circuito RLC série
+universality-table-rlc-2 = carga q [C]
+universality-table-rlc-3 = indutância L [H]
+universality-table-rlc-4 = resistência R [Ω]
+universality-table-rlc-5 = 1/C [1/F]
+universality-table-rlc-6 = 1/√(LC)
+universality-table-rlc-7 = (R/2)·√(C/L)
+universality-table-u-tube-1 = manômetro de tubo em U
+universality-table-u-tube-2 = variação de nível h [m]
+universality-table-u-tube-3 = ρAL [kg]
+universality-table-u-tube-4 = 8πμL [N·s/m]
+universality-table-u-tube-5 = 2ρgA [N/m]
+universality-table-u-tube-6 = √(2g/L)
+universality-table-u-tube-7 = 16μ/(ρd²ωₙ)
+universality-table-servo-1 = servo de posição com motor CC (controle PD)
+universality-table-servo-2 = erro de ângulo θ [rad]
+universality-table-servo-3 = J [kg·m²]
+universality-table-servo-4 = K_t(K_t + K_d)/R_a [N·m·s/rad]
+universality-table-servo-5 = K_t·K_p/R_a [N·m/rad]
+universality-table-servo-6 = √(K_t·K_p/(R_a·J))
+universality-table-servo-7 = ≥ K_t²/(2ωₙR_a·J), só pela força contraeletromotriz
+universality-table-storey-1 = andar de edifício sob movimento do solo
+universality-table-storey-2 = deslocamento relativo do andar u [m]
+universality-table-storey-3 = massa do piso m [kg]
+universality-table-storey-4 = coeficiente de amortecimento c [N·s/m]
+universality-table-storey-5 = 12·4·EI/h³ [N/m]
+universality-table-storey-6 = √(48EI/(m·h³))
+universality-table-storey-7 = c/(2√(km))
+universality-table-thermal-1 = sistema térmico de duas capacidades
+universality-table-thermal-2 = excesso de temperatura T₂ [K]
+universality-table-thermal-3 = R₁C₁R₂C₂ [s²]
+universality-table-thermal-4 = R₁C₁ + R₂C₂ + R₁C₂ [s]
+universality-table-thermal-5 = 1
+universality-table-thermal-6 = 1/√(τ₁τ₂)
+universality-table-thermal-7 = (τ₁ + τ₂ + R₁C₂)/(2√(τ₁τ₂)) > 1
+
+### regimes
+
+regimes-envelope = envoltória ±A·e^(−ζωₙt)
+regimes-series-response = x(t), { $regime }
+regimes-describe-settles = { $regime }: { $swings ->
+        [0] não cruza o equilíbrio antes de se acomodar
+        [one] cruza o equilíbrio uma vez antes de se acomodar
+       *[other] cruza o equilíbrio { $swings } vezes antes de se acomodar
+    }, fica dentro de 5 % do repouso após { $time }, ressalto máximo { $rebound }.
+regimes-describe-unsettled = { $regime }: { $swings ->
+        [0] não cruza o equilíbrio antes de se acomodar
+        [one] cruza o equilíbrio uma vez antes de se acomodar
+       *[other] cruza o equilíbrio { $swings } vezes antes de se acomodar
+    }, não se acomoda, ressalto máximo { $rebound }.
+regimes-describe-undamped = não amortecido: oscila indefinidamente com amplitude { $amplitude } em { $frequency }.
+regimes-describe-growing = amortecimento negativo: a resposta cresce sem limite, por um fator e a cada { $time }.
+regimes-describe-at-rest = { $regime }: parte do repouso no equilíbrio.
+regimes-poles = Polos em { $re1 } { $sign1 } { $im1 }i e { $re2 } { $sign2 } { $im2 }i 1/s, no semiplano { $side ->
+        [right] direito (instável)
+       *[left] esquerdo (estável)
+    }.
+regimes-schematic = Massa sobre mola e amortecedor em t = { $time }: deslocada { $displacement } do repouso.
+regimes-title = Regimes de amortecimento
+regimes-summary = Resposta livre a partir de x(0) = x₀, x′(0) = v₀. A razão de amortecimento ζ define o regime: ζ = 0 não amortecido, 0 < ζ < 1 subamortecido, ζ = 1 criticamente amortecido, ζ > 1 superamortecido, ζ < 0 amortecimento negativo (a resposta cresce). Os polos s = −ζωₙ ± ωₙ√(ζ² − 1) percorrem um círculo de raio ωₙ, chegam ao eixo real em ζ = 1 e cruzam o eixo imaginário em ζ = 0.
+regimes-param-wn = frequência natural
+regimes-param-zeta = razão de amortecimento
+regimes-param-x0 = deslocamento inicial
+regimes-param-v0 = velocidade inicial
+regimes-readout-regime = regime
+regimes-readout-wn = frequência natural ωₙ
+regimes-readout-zeta = razão de amortecimento ζ
+regimes-readout-wd = frequência amortecida ω_d
+regimes-readout-pole-re = parte real do polo
+regimes-readout-pole-im = parte imaginária do polo
+regimes-plot-response = Resposta livre x(t)
+regimes-plot-poles = Polos no plano s
+regimes-preset-1 = Não amortecido ζ = 0
+regimes-preset-2 = Subamortecido ζ = 0,2
+regimes-preset-3 = Criticamente amortecido ζ = 1
+regimes-preset-4 = Superamortecido ζ = 2
+regimes-preset-5 = Amortecimento negativo ζ = −0,1
+regimes-table-caption = Os regimes de amortecimento
+regimes-table-column-1 = regime
+regimes-table-column-2 = condição
+regimes-table-column-3 = raízes s₁, s₂
+regimes-table-column-4 = comportamento
+regimes-table-column-5 = exemplos de engenharia
+regimes-table-undamped-1 = Não amortecido
+regimes-table-undamped-2 = ζ = 0
+regimes-table-undamped-3 = ±iωₙ, no eixo imaginário
+regimes-table-undamped-4 = oscila indefinidamente em ωₙ
+regimes-table-undamped-5 = pêndulo ideal, circuito tanque LC
+regimes-table-underdamped-1 = Subamortecido
+regimes-table-underdamped-2 = 0 < ζ < 1
+regimes-table-underdamped-3 = −ζωₙ ± iω_d, par complexo
+regimes-table-underdamped-4 = oscilação decrescente em ω_d
+regimes-table-underdamped-5 = suspensão de automóvel (ζ ≈ 0,2–0,7), corda de violão
+regimes-table-critically-damped-1 = Criticamente amortecido
+regimes-table-critically-damped-2 = ζ = 1
+regimes-table-critically-damped-3 = −ωₙ, raiz real dupla
+regimes-table-critically-damped-4 = retorno mais rápido sem oscilar
+regimes-table-critically-damped-5 = mola aérea de porta, ponteiro de medidor analógico
+regimes-table-overdamped-1 = Superamortecido
+regimes-table-overdamped-2 = ζ > 1
+regimes-table-overdamped-3 = duas raízes reais negativas
+regimes-table-overdamped-4 = retorno lento, sem oscilação
+regimes-table-overdamped-5 = amortecedor hidráulico pesado, termômetro
+regimes-table-negatively-damped-1 = Amortecimento negativo
+regimes-table-negatively-damped-2 = ζ < 0
+regimes-table-negatively-damped-3 = semiplano direito
+regimes-table-negatively-damped-4 = oscilação crescente
+regimes-table-negatively-damped-5 = flutter (ponte de Tacoma Narrows), freios que chiam
 

@@ -5,6 +5,7 @@ use super::{text, Results};
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle};
 use crate::plot::Ink;
 use crate::schematic::{beside, caption, mass_spring_damper, rlc_loop, MassLabels};
+use crate::t;
 use zeta_solver::integrate::analysis::oscillator_energy;
 
 /// Samples per curve.
@@ -72,14 +73,30 @@ pub(super) fn responses(r: &Results) -> Figure {
     let y = (lo, hi + 0.45 * (hi - lo));
     let description = text::describe_responses(r, n.gap());
     Figure::plot(
-        RESPONSES_TITLE,
-        Axis::linear("time t", "s", (0.0, r.t_end)),
-        Axis::linear("normalised response", "", y),
+        t!("analogy-plot-responses"),
+        Axis::linear(t!("axis-time"), "s", (0.0, r.t_end)),
+        Axis::linear(t!("analogy-axis-response"), "", y),
     )
-    .with_line("x/x₀ mass", n.x, LineStyle::solid(Ink::Blue, 3.5))
-    .with_line("q/q₀ circuit", n.q, LineStyle::dashed(Ink::Vermillion, 2.0))
-    .with_line("v/(x₀ωₙ) mass", n.v, LineStyle::solid(Ink::Green, 3.5))
-    .with_line("i/(q₀ω₀) circuit", n.i, LineStyle::dotted(Ink::Purple, 2.0))
+    .with_line(
+        t!("analogy-series-x"),
+        n.x,
+        LineStyle::solid(Ink::Blue, 3.5),
+    )
+    .with_line(
+        t!("analogy-series-q"),
+        n.q,
+        LineStyle::dashed(Ink::Vermillion, 2.0),
+    )
+    .with_line(
+        t!("analogy-series-v"),
+        n.v,
+        LineStyle::solid(Ink::Green, 3.5),
+    )
+    .with_line(
+        t!("analogy-series-i"),
+        n.i,
+        LineStyle::dotted(Ink::Purple, 2.0),
+    )
     .with_origin_lines()
     .described(description)
 }
@@ -106,21 +123,37 @@ pub(super) fn energy(r: &Results) -> Figure {
     let kinetic_peak = mass.iter().map(|p| p.1).fold(0.0, f64::max);
     let description = text::describe_energy(r, e0, left, kinetic_peak);
     Figure::plot(
-        ENERGY_TITLE,
-        Axis::linear("time t", "s", (0.0, r.t_end)),
-        Axis::linear("energy", "J", (0.0, 2.1 * e0.max(1e-300))),
+        t!("analogy-plot-energy"),
+        Axis::linear(t!("axis-time"), "s", (0.0, r.t_end)),
+        Axis::linear(t!("analogy-axis-energy"), "J", (0.0, 2.1 * e0.max(1e-300))),
     )
-    .with_line("½kx² spring", spring, LineStyle::solid(Ink::Blue, 3.5))
     .with_line(
-        "½q²/C capacitor",
+        t!("analogy-series-spring"),
+        spring,
+        LineStyle::solid(Ink::Blue, 3.5),
+    )
+    .with_line(
+        t!("analogy-series-capacitor"),
         cap,
         LineStyle::dashed(Ink::Vermillion, 2.0),
     )
-    .with_line("½mv² mass", mass, LineStyle::solid(Ink::Green, 3.5))
-    .with_line("½Li² inductor", ind, LineStyle::dotted(Ink::Purple, 2.0))
-    .with_line("total, mass", total_mech, LineStyle::solid(Ink::Black, 2.5))
     .with_line(
-        "total, circuit",
+        t!("analogy-series-mass"),
+        mass,
+        LineStyle::solid(Ink::Green, 3.5),
+    )
+    .with_line(
+        t!("analogy-series-inductor"),
+        ind,
+        LineStyle::dotted(Ink::Purple, 2.0),
+    )
+    .with_line(
+        t!("analogy-series-total-mass"),
+        total_mech,
+        LineStyle::solid(Ink::Black, 2.5),
+    )
+    .with_line(
+        t!("analogy-series-total-circuit"),
         total_elec,
         LineStyle::dashed(Ink::Orange, 1.5),
     )
@@ -142,11 +175,11 @@ pub(super) fn schematic(r: &Results, t: f64) -> Figure {
     let elec = rlc_loop(i / (r.q0 * r.w0()), q / r.q0, String::new());
     let (dx, _) = CIRCUIT_OFFSET;
     let mut fig = beside(mech, elec, CIRCUIT_OFFSET)
-        .with_marker(caption("mechanical", (-1.0, 4.2)))
-        .with_marker(caption("electrical", (dx - 1.0, 4.2)))
+        .with_marker(caption(&t!("analogy-caption-mechanical"), (-1.0, 4.2)))
+        .with_marker(caption(&t!("analogy-caption-electrical"), (dx - 1.0, 4.2)))
         .with_marker(caption("≙", (2.05, 1.9)))
         .described(text::describe_schematic(t, [x, v], [q, i]));
-    fig.title = "Mechanical and electrical twins".to_string();
+    fig.title = t!("analogy-schematic-title");
     fig.y.range = (fig.y.range.0, fig.y.range.1.max(4.4));
     fig
 }

@@ -195,7 +195,7 @@ impl Model for Analogy {
                     r.mech.damping_ratio()
                 }),
                 ReadoutDef::text("regime", "regime (both)", |r| {
-                    r.mech.regime().key().to_string()
+                    crate::format::regime(r.mech.regime())
                 }),
                 ReadoutDef::number("Q", "quality factor Q (both)", "", 4, |r| {
                     r.mech.quality_factor()

@@ -2,8 +2,10 @@
 //! alternatives.
 
 use super::Results;
-use crate::format::si;
+use crate::format::{self, si};
+use crate::i18n::number;
 use crate::spec::Table;
+use crate::t;
 
 pub(super) const SUMMARY: &str =
     "A mass on a spring and damper and a series inductor–resistor–capacitor \
@@ -177,93 +179,81 @@ pub(super) fn analogy_table() -> Table {
     }
 }
 
-/// A dimensionless number with 3 significant digits and no trailing zeros (`0.05`, `2`).
+/// A dimensionless number with 3 significant digits and no trailing zeros (`0.05`, `2`),
+/// in the interface language's digits and decimal separator.
 pub(super) fn plain(v: f64) -> String {
-    let s = si(v, "", 3);
-    if s.contains('.') && !s.contains('e') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
+    if !v.is_finite() {
+        return si(v, "", 3);
     }
+    let s = format::significant_plain(v, 3);
+    if s.contains('e') {
+        return format::significant(v, 3);
+    }
+    let s = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        s.as_str()
+    };
+    let decimals = s.split_once('.').map_or(0, |(_, f)| f.len());
+    number::fixed(s.parse().unwrap_or(v), decimals)
 }
 
 /// The normalised responses in words; `gap` is the largest difference between a
 /// mechanical curve and its electrical twin.
 pub(super) fn describe_responses(r: &Results, gap: f64) -> String {
-    let regime = r.mech.regime();
     let zeta = r.mech.damping_ratio().unwrap_or(0.0);
-    let motion = match r.mech.damped_frequency() {
-        Some(wd) if zeta > 0.0 => format!(
-            "both oscillate at ω_d = {} and decay with time constant 1/(ζωₙ) = {}",
+    let (motion, frequency, time) = match r.mech.damped_frequency() {
+        Some(wd) if zeta > 0.0 => (
+            "decaying",
             si(wd, "rad/s", 3),
-            si(1.0 / (zeta * r.wn()), "s", 3)
+            si(1.0 / (zeta * r.wn()), "s", 3),
         ),
-        Some(wd) => format!(
-            "both oscillate for ever at ω₀ = ωₙ = {}",
-            si(wd, "rad/s", 3)
-        ),
-        None => "both creep back to rest without oscillating".to_string(),
+        Some(wd) => ("lasting", si(wd, "rad/s", 3), String::new()),
+        None => ("creeping", String::new(), String::new()),
     };
-    let same = if gap == 0.0 {
-        "identical to the last digit".to_string()
-    } else {
-        format!("largest difference {}", si(gap, "", 2))
-    };
-    format!(
-        "{} (ζ = {}): the mechanical x/x₀ and electrical q/q₀ coincide, as do the \
-         velocity v/(x₀ωₙ) and current i/(q₀ω₀) ({}); {}.",
-        regime.key(),
-        plain(zeta),
-        same,
-        motion
+    t!(
+        "analogy-describe-responses",
+        regime = format::regime(r.mech.regime()),
+        zeta = plain(zeta),
+        same = if gap == 0.0 { "exact" } else { "close" },
+        difference = si(gap, "", 2),
+        motion = motion,
+        frequency = frequency,
+        time = time
     )
 }
 
 /// The energy exchange in words: `e0` stored at release, `left` at the end of the window
 /// and at most `kinetic_peak` in the mass at once \[J\].
 pub(super) fn describe_energy(r: &Results, e0: f64, left: f64, kinetic_peak: f64) -> String {
-    let exchange = if r.mech.damped_frequency().is_some() {
-        format!(
-            "It swings to the mass (inductor), at most {} at once, and back, twice per cycle",
-            si(kinetic_peak, "J", 3)
-        )
-    } else {
-        format!(
-            "Without oscillating, at most {} passes through the mass (inductor)",
-            si(kinetic_peak, "J", 3)
-        )
-    };
-    let loss = if left >= 0.999_999 * e0 {
-        format!(
-            "with no damper (resistor) it is all still there after {}",
-            si(r.t_end, "s", 3)
-        )
-    } else {
-        format!(
-            "the damper c (resistor R) turns it into heat, leaving {} ({}) after {}",
-            si(left, "J", 3),
-            si(100.0 * left / e0.max(1e-300), "%", 3),
-            si(r.t_end, "s", 3)
-        )
-    };
-    format!(
-        "At t = 0 all {} is stored in the spring, and equally in the capacitor. {}; {}. \
-         The mechanical and electrical curves coincide.",
-        si(e0, "J", 3),
-        exchange,
-        loss
+    t!(
+        "analogy-describe-energy",
+        energy = si(e0, "J", 3),
+        exchange = if r.mech.damped_frequency().is_some() {
+            "swings"
+        } else {
+            "passes"
+        },
+        peak = si(kinetic_peak, "J", 3),
+        loss = if left >= 0.999_999 * e0 {
+            "none"
+        } else {
+            "heat"
+        },
+        left = si(left, "J", 3),
+        percent = si(100.0 * left / e0.max(1e-300), "%", 3),
+        time = si(r.t_end, "s", 3)
     )
 }
 
 /// Both machines at time `t` \[s\] in words.
 pub(super) fn describe_schematic(t: f64, [x, v]: [f64; 2], [q, i]: [f64; 2]) -> String {
-    format!(
-        "At t = {}: the mass is displaced {} and moves at {}; the capacitor holds {} and \
-         the current is {}. The same numbers in different units.",
-        si(t, "s", 3),
-        si(x, "m", 3),
-        si(v, "m/s", 3),
-        si(q, "C", 3),
-        si(i, "A", 3),
+    t!(
+        "analogy-schematic",
+        time = si(t, "s", 3),
+        displacement = si(x, "m", 3),
+        velocity = si(v, "m/s", 3),
+        charge = si(q, "C", 3),
+        current = si(i, "A", 3)
     )
 }

@@ -7,6 +7,7 @@ use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle};
 use crate::format::si;
 use crate::plot::{curve, Ink};
 use crate::schematic::rlc_loop;
+use crate::t;
 use zeta_solver::{FreeResponse, Regime, SecondOrder};
 
 /// Samples per curve.
@@ -71,12 +72,12 @@ fn sample(r: &Results, sys: SecondOrder, signal: Signal) -> Vec<(f64, f64)> {
 /// (dashed) and, while it rings, the decay envelope (dotted).
 pub(super) fn signal(r: &Results, signal: Signal) -> Figure {
     let (title, label, unit) = match signal {
-        Signal::Current => (CURRENT_TITLE, "current i", "A"),
-        Signal::Voltage => (VOLTAGE_TITLE, "capacitor voltage v_C", "V"),
+        Signal::Current => (t!("rlc-plot-current"), t!("rlc-axis-current"), "A"),
+        Signal::Voltage => (t!("rlc-plot-voltage"), t!("rlc-axis-voltage"), "V"),
     };
     let mut fig = Figure::plot(
         title,
-        Axis::linear("time t", "s", (0.0, r.t_end)),
+        Axis::linear(t!("axis-time"), "s", (0.0, r.t_end)),
         Axis::linear(label, unit, (-1.0, 1.0)),
     );
     let response: FreeResponse = r.p.response(r.sys);
@@ -85,7 +86,7 @@ pub(super) fn signal(r: &Results, signal: Signal) -> Figure {
         let style = LineStyle::dotted(Ink::Green, 1.5);
         fig = fig
             .with_line(
-                "envelope",
+                t!("rlc-envelope"),
                 curve((0.0, r.t_end), ENVELOPE_SAMPLES, envelope),
                 style,
             )
@@ -97,7 +98,10 @@ pub(super) fn signal(r: &Results, signal: Signal) -> Figure {
     }
     if let (Some(crit), false) = (r.critical, r.sys.regime() == Regime::CriticallyDamped) {
         fig = fig.with_line(
-            format!("critical R = {}", text::ohms(crit.damping())),
+            t!(
+                "rlc-series-critical",
+                resistance = text::ohms(crit.damping())
+            ),
             sample(r, crit, signal),
             LineStyle::dashed(Ink::Vermillion, 2.0),
         );
@@ -128,11 +132,11 @@ pub(super) fn signal(r: &Results, signal: Signal) -> Figure {
 /// The loop at time `t` \[s\] in charge state `[q, i]`, the current drawn relative to its
 /// bound `scale` \[A\] and the charge relative to `q₀`.
 pub(super) fn schematic(p: &P, scale: f64, [q, i]: [f64; 2], t: f64) -> Figure {
-    let description = format!(
-        "Series RLC loop at t = {}: current {}, capacitor at {}.",
-        si(t, "s", 3),
-        si(i, "A", 3),
-        si(q / p.cap, "V", 3)
+    let description = t!(
+        "rlc-schematic",
+        time = si(t, "s", 3),
+        current = si(i, "A", 3),
+        voltage = si(q / p.cap, "V", 3)
     );
     let q0 = p.q0().abs().max(1e-300);
     rlc_loop(i / scale.max(1e-300), q / q0, description)

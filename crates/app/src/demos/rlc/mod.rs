@@ -144,7 +144,9 @@ impl Model for Rlc {
                 ),
             ],
             readouts: vec![
-                ReadoutDef::text("regime", "regime", |r| r.sys.regime().key().to_string()),
+                ReadoutDef::text("regime", "regime", |r| {
+                    crate::format::regime(r.sys.regime())
+                }),
                 ReadoutDef::number(
                     "w0",
                     "resonant frequency ω₀ = 1/√(LC)",

@@ -3,6 +3,7 @@
 use super::figures::Signal;
 use super::Results;
 use crate::format::si;
+use crate::t;
 use zeta_solver::Regime;
 
 pub(super) const SUMMARY: &str =
@@ -33,86 +34,76 @@ pub(super) fn ohms(r: f64) -> String {
 pub(super) fn describe(r: &Results, signal: Signal) -> String {
     let sys = &r.sys;
     let metrics = r.metrics;
-    let r_crit = sys.critical_damping().unwrap_or(0.0);
-    let w0 = sys.natural_frequency().unwrap_or(0.0);
+    let resistance = ohms(r.p.r);
+    let critical = ohms(sys.critical_damping().unwrap_or(0.0));
+    let w0 = si(sys.natural_frequency().unwrap_or(0.0), "rad/s", 3);
     let bound = si(r.current_scale(), "A", 3);
-    let settle = metrics
-        .and_then(|m| m.settling_time)
-        .map(|t| format!("stays within 5 % of V₀ after {}", si(t, "s", 3)))
-        .unwrap_or_else(|| "never settles".to_string());
+    let settling = metrics.and_then(|m| m.settling_time);
+    let settles = if settling.is_some() { "yes" } else { "no" };
+    let time = settling.map(|t| si(t, "s", 3)).unwrap_or_default();
     // The solver counts zero crossings before the settling time.
-    let reversals = match metrics {
-        Some(m) if m.zero_crossings == 0 && m.rebound_time.is_some() => format!(
-            "reverses only slightly (at most {} of V₀, inside the band)",
-            si(100.0 * m.peak_rebound, "%", 3)
-        ),
-        Some(m) if m.zero_crossings == 1 => "reverses polarity once before settling".to_string(),
-        Some(m) if m.zero_crossings > 1 => {
-            format!(
-                "reverses polarity {} times before settling",
-                m.zero_crossings
-            )
+    let (reversal, crossings, rebound) = match metrics {
+        Some(m) if m.zero_crossings == 0 && m.rebound_time.is_some() => {
+            ("slight", 0, si(100.0 * m.peak_rebound, "%", 3))
         }
-        _ => "never reverses polarity".to_string(),
+        Some(m) if m.zero_crossings >= 1 => ("count", m.zero_crossings, String::new()),
+        _ => ("never", 0, String::new()),
     };
     match (sys.regime(), signal) {
-        (Regime::Undamped, Signal::Current) => format!(
-            "R = {}, undamped (a lossless LC loop): the current oscillates forever at ω₀ = {}, \
-             between ±{} (all the energy passes to the inductor and back every half period).",
-            ohms(r.p.r),
-            si(w0, "rad/s", 3),
-            bound
+        (Regime::Undamped, Signal::Current) => t!(
+            "rlc-describe-current-undamped",
+            resistance = resistance,
+            frequency = w0,
+            bound = bound
         ),
-        (Regime::Undamped, Signal::Voltage) => format!(
-            "R = {}, undamped (a lossless LC loop): the capacitor voltage swings between +{v} \
-             and −{v} forever at ω₀ = {}.",
-            ohms(r.p.r),
-            si(w0, "rad/s", 3),
-            v = si(r.p.v0.abs(), "V", 3)
+        (Regime::Undamped, Signal::Voltage) => t!(
+            "rlc-describe-voltage-undamped",
+            resistance = resistance,
+            voltage = si(r.p.v0.abs(), "V", 3),
+            frequency = w0
         ),
-        (Regime::Underdamped, Signal::Current) => format!(
-            "R = {} below the critical {}, underdamped: the current rings at ω_d = {} \
-             (Q = {}), decaying as e^(−αt) with α = {}; it never exceeds {}.",
-            ohms(r.p.r),
-            ohms(r_crit),
-            si(sys.damped_frequency().unwrap_or(0.0), "rad/s", 3),
-            si(sys.quality_factor().unwrap_or(f64::NAN), "", 3),
-            si(sys.alpha(), "1/s", 3),
-            bound
+        (Regime::Underdamped, Signal::Current) => t!(
+            "rlc-describe-current-underdamped",
+            resistance = resistance,
+            critical = critical,
+            frequency = si(sys.damped_frequency().unwrap_or(0.0), "rad/s", 3),
+            q = si(sys.quality_factor().unwrap_or(f64::NAN), "", 3),
+            alpha = si(sys.alpha(), "1/s", 3),
+            bound = bound
         ),
-        (Regime::Underdamped, Signal::Voltage) => format!(
-            "R = {} below the critical {}, underdamped: the capacitor voltage {}, and {}.",
-            ohms(r.p.r),
-            ohms(r_crit),
-            reversals,
-            settle
+        (Regime::Underdamped, Signal::Voltage) => t!(
+            "rlc-describe-voltage-underdamped",
+            resistance = resistance,
+            critical = critical,
+            reversal = reversal,
+            crossings = crossings,
+            rebound = rebound,
+            settles = settles,
+            time = time
         ),
-        (Regime::CriticallyDamped, Signal::Current) => format!(
-            "R = {} equals the critical resistance, critically damped: one pulse of current \
-             (negative, the capacitor discharging) that returns to zero without reversing; it \
-             never exceeds {}.",
-            ohms(r.p.r),
-            bound
+        (Regime::CriticallyDamped, Signal::Current) => t!(
+            "rlc-describe-current-critical",
+            resistance = resistance,
+            bound = bound
         ),
-        (Regime::CriticallyDamped, Signal::Voltage) => format!(
-            "R = {} equals the critical resistance, critically damped: the capacitor empties \
-             as fast as it can without reversing; it {}.",
-            ohms(r.p.r),
-            settle
+        (Regime::CriticallyDamped, Signal::Voltage) => t!(
+            "rlc-describe-voltage-critical",
+            resistance = resistance,
+            settles = settles,
+            time = time
         ),
-        (_, Signal::Current) => format!(
-            "R = {} above the critical {}, overdamped: one slow pulse of current (negative, \
-             the capacitor discharging) without reversing, slow time constant {}.",
-            ohms(r.p.r),
-            ohms(r_crit),
-            si(sys.time_constants()[0].unwrap_or(f64::NAN), "s", 3)
+        (_, Signal::Current) => t!(
+            "rlc-describe-current-overdamped",
+            resistance = resistance,
+            critical = critical,
+            time = si(sys.time_constants()[0].unwrap_or(f64::NAN), "s", 3)
         ),
-        (_, Signal::Voltage) => format!(
-            "R = {} above the critical {}, overdamped: the capacitor discharges slowly \
-             without reversing; it {}.",
-            ohms(r.p.r),
-            ohms(r_crit),
-            settle
+        (_, Signal::Voltage) => t!(
+            "rlc-describe-voltage-overdamped",
+            resistance = resistance,
+            critical = critical,
+            settles = settles,
+            time = time
         ),
     }
 }

@@ -6,6 +6,7 @@ use super::{drawings, machine, text, One, Results};
 use crate::figure::{Axis, Figure, LineStyle};
 use crate::plot::{curve, fit_range, Ink};
 use crate::schematic::{mass_spring_damper, rlc_loop, MassLabels};
+use crate::t;
 use zeta_solver::{FreeResponse, SecondOrder};
 
 /// Samples per curve on the normalised axis, and at least on the time axis.
@@ -39,7 +40,11 @@ const STYLES: [LineStyle; 2] = [
 /// A y axis that holds −1…1 and the curves, with headroom for the legend.
 fn response_axis(values: impl IntoIterator<Item = f64>) -> Axis {
     let (lo, hi) = fit_range(values.into_iter().chain([-0.2, 1.0]), 0.06, 0.5);
-    Axis::linear("normalised response y/y₀", "", (lo, hi + 0.4 * (hi - lo)))
+    Axis::linear(
+        t!("universality-axis-response"),
+        "",
+        (lo, hi + 0.4 * (hi - lo)),
+    )
 }
 
 /// y/y₀ of A and B against their own ωₙt, with the critically damped response for
@@ -66,12 +71,12 @@ pub(super) fn normalised(r: &Results) -> Figure {
         .unwrap_or_default();
     let y = response_axis(curves.iter().flatten().map(|p| p.1));
     let mut fig = Figure::plot(
-        NORMALISED_TITLE,
-        Axis::linear("normalised time ωₙt", "rad", (0.0, r.tau_end)),
+        t!("universality-plot-normalised"),
+        Axis::linear(t!("universality-axis-time"), "rad", (0.0, r.tau_end)),
         y,
     )
     .with_line(
-        "ζ = 1 (critical), for reference",
+        t!("universality-series-critical"),
         critical,
         LineStyle::dotted(Ink::Black, 1.5),
     );
@@ -85,8 +90,8 @@ pub(super) fn normalised(r: &Results) -> Figure {
 /// y/y₀ of A and B against time on A's clock: with equal ωₙ as well as ζ they coincide.
 pub(super) fn realtime(r: &Results) -> Figure {
     let mut fig = Figure::plot(
-        REALTIME_TITLE,
-        Axis::linear("time t", "s", (0.0, r.t_end)),
+        t!("universality-plot-realtime"),
+        Axis::linear(t!("axis-time"), "s", (0.0, r.t_end)),
         Axis::linear("", "", (0.0, 1.0)),
     );
     let mut values = Vec::new();
@@ -138,6 +143,6 @@ pub(super) fn schematic(m: &[One; 2], t: f64) -> Figure {
         0.6,
         ["A", "B"],
     );
-    fig.title = "Machines A and B".to_string();
+    fig.title = t!("universality-schematic-title");
     fig.described(text::describe_schematic(m, t, [states[0][0], states[1][0]]))
 }

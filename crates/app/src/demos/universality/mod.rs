@@ -244,7 +244,7 @@ fn readouts() -> Vec<ReadoutDef<Results>> {
             r.m[0].sys.damping_ratio()
         }),
         ReadoutDef::text("regime_A", "regime of A", |r| {
-            r.m[0].sys.regime().key().to_string()
+            crate::format::regime(r.m[0].sys.regime())
         }),
         ReadoutDef::formatted("a_B", "inertia coefficient a of B", "", |r| {
             coefficient(r, 1, 0)
@@ -262,7 +262,7 @@ fn readouts() -> Vec<ReadoutDef<Results>> {
             r.m[1].sys.damping_ratio()
         }),
         ReadoutDef::text("regime_B", "regime of B", |r| {
-            r.m[1].sys.regime().key().to_string()
+            crate::format::regime(r.m[1].sys.regime())
         }),
         ReadoutDef::number(
             "wn_ratio",

@@ -3,9 +3,9 @@
 
 use super::params::Kind;
 use super::{machine, Matching, One};
-use crate::declare::Choice;
 use crate::format::{si, significant};
 use crate::spec::Table;
+use crate::t;
 use zeta_solver::Regime;
 
 pub(super) const SUMMARY: &str =
@@ -125,68 +125,74 @@ pub(super) fn amount(v: f64, unit: &str) -> String {
 /// The match status, for its readout.
 pub(super) fn matching(m: &Matching) -> String {
     match *m {
-        Matching::Off => "off".to_string(),
-        Matching::Exact => "on: B has the ωₙ and ζ of A".to_string(),
-        Matching::TooLight { zeta_min, zeta } => format!(
-            "not reachable: with its other parameters kept, B cannot go below ζ = {}; A has ζ = {}",
-            significant(zeta_min, 4),
-            significant(zeta, 4)
+        Matching::Off => t!("universality-match-off"),
+        Matching::Exact => t!("universality-match-on"),
+        Matching::TooLight { zeta_min, zeta } => t!(
+            "universality-match-too-light",
+            zeta_min = significant(zeta_min, 4),
+            zeta = significant(zeta, 4)
         ),
         Matching::OutOfRange {
             symbol,
             unit,
             value,
             range,
-        } => format!(
-            "not reachable within the sliders: B would need {symbol} = {}, outside {} … {}",
-            amount(value, unit),
-            amount(range.0, unit),
-            amount(range.1, unit)
+        } => t!(
+            "universality-match-out-of-range",
+            symbol = symbol,
+            value = amount(value, unit),
+            low = amount(range.0, unit),
+            high = amount(range.1, unit)
         ),
-        Matching::Impossible => "not reachable: A has no natural frequency".to_string(),
+        Matching::Impossible => t!("universality-match-impossible"),
     }
 }
 
-/// How a machine returns to rest, in words.
+/// The name of a machine in the interface language (the option's declared label).
+pub(super) fn machine_name(kind: Kind) -> String {
+    match kind {
+        Kind::MassSpring => t!("universality-param-A-mass-spring"),
+        Kind::Rlc => t!("universality-param-A-rlc"),
+        Kind::UTube => t!("universality-param-A-u-tube"),
+        Kind::Servo => t!("universality-param-A-servo"),
+        Kind::Storey => t!("universality-param-A-storey"),
+        Kind::Thermal => t!("universality-param-A-thermal"),
+    }
+}
+
+/// How a machine returns to rest, as a selector key of the descriptions.
 fn behaviour(one: &One) -> &'static str {
     match one.sys.regime() {
-        Regime::Undamped => "oscillates for ever",
-        Regime::Underdamped => "oscillates and dies away",
-        Regime::CriticallyDamped => "returns as fast as it can without overshoot",
-        _ => "creeps back without overshoot",
+        Regime::Undamped => "forever",
+        Regime::Underdamped => "dies-away",
+        Regime::CriticallyDamped => "fastest",
+        _ => "creeps",
     }
 }
 
-/// `"A (mass–spring–damper, ζ = 0.1000)"`.
-fn named(slot: &str, one: &One) -> String {
-    format!(
-        "{slot} ({}, ζ = {})",
-        one.kind.label(),
-        significant(one.sys.damping_ratio().unwrap_or(0.0), 4)
-    )
+/// A machine's damping ratio as the descriptions write it (`0.1000`).
+fn zeta(one: &One) -> String {
+    significant(one.sys.damping_ratio().unwrap_or(0.0), 4)
 }
 
 /// The normalised responses in words; `gap` is the largest difference between them.
 pub(super) fn describe_normalised(m: &[One; 2], gap: f64) -> String {
-    let relation = if gap <= 1e-9 {
-        format!(
-            "The two curves coincide (largest difference {}).",
-            si(gap, "", 2)
-        )
-    } else {
-        format!("The curves differ by up to {} of y₀.", si(gap, "", 3))
-    };
-    let thermal = if m.iter().any(|one| one.kind == Kind::Thermal) {
-        " A two-capacity thermal system cannot oscillate: its ζ is above 1 for any capacities and resistances."
-    } else {
-        ""
-    };
-    format!(
-        "Released from rest: {} {}; {} {}. {relation}{thermal}",
-        named("A", &m[0]),
-        behaviour(&m[0]),
-        named("B", &m[1]),
-        behaviour(&m[1]),
+    let coincide = gap <= 1e-9;
+    t!(
+        "universality-describe-normalised",
+        machine_a = machine_name(m[0].kind),
+        zeta_a = zeta(&m[0]),
+        behaviour_a = behaviour(&m[0]),
+        machine_b = machine_name(m[1].kind),
+        zeta_b = zeta(&m[1]),
+        behaviour_b = behaviour(&m[1]),
+        relation = if coincide { "coincide" } else { "differ" },
+        gap = si(gap, "", if coincide { 2 } else { 3 }),
+        thermal = if m.iter().any(|one| one.kind == Kind::Thermal) {
+            "yes"
+        } else {
+            "no"
+        }
     )
 }
 
@@ -194,35 +200,33 @@ pub(super) fn describe_normalised(m: &[One; 2], gap: f64) -> String {
 pub(super) fn describe_realtime(m: &[One; 2], t_end: f64) -> String {
     let (wa, wb) = (m[0].wn(), m[1].wn());
     let ratio = wb / wa;
-    let pace = if (ratio - 1.0).abs() <= 1e-9 {
-        "B keeps pace with A exactly".to_string()
+    let (pace, factor) = if (ratio - 1.0).abs() <= 1e-9 {
+        ("same", String::new())
     } else if ratio > 1.0 {
-        format!("B runs {} times faster than A", significant(ratio, 3))
+        ("faster", significant(ratio, 3))
     } else {
-        format!("B runs {} times slower than A", significant(1.0 / ratio, 3))
+        ("slower", significant(1.0 / ratio, 3))
     };
-    format!(
-        "Real time over {}: time scale 1/ωₙ of A {}, of B {}; {pace}.",
-        si(t_end, "s", 3),
-        si(1.0 / wa, "s", 3),
-        si(1.0 / wb, "s", 3),
+    t!(
+        "universality-describe-realtime",
+        window = si(t_end, "s", 3),
+        scale_a = si(1.0 / wa, "s", 3),
+        scale_b = si(1.0 / wb, "s", 3),
+        pace = pace,
+        factor = factor
     )
 }
 
 /// The schematic in words at time `t` \[s\], with the normalised positions `y/y₀`.
 pub(super) fn describe_schematic(m: &[One; 2], t: f64, y: [f64; 2]) -> String {
-    let part = |slot: &str, one: &One, y: f64| {
-        format!(
-            "{slot}, {}: {} = {}",
-            one.kind.label(),
-            machine::normalised_coordinate(one.kind),
-            significant(y, 3)
-        )
-    };
-    format!(
-        "At t = {}: {}; {}.",
-        si(t, "s", 3),
-        part("A", &m[0], y[0]),
-        part("B", &m[1], y[1])
+    t!(
+        "universality-schematic",
+        time = si(t, "s", 3),
+        machine_a = machine_name(m[0].kind),
+        coordinate_a = machine::normalised_coordinate(m[0].kind),
+        value_a = significant(y[0], 3),
+        machine_b = machine_name(m[1].kind),
+        coordinate_b = machine::normalised_coordinate(m[1].kind),
+        value_b = significant(y[1], 3)
     )
 }
