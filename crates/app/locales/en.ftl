@@ -106,6 +106,60 @@ regimes-poles = Poles at { $re1 } { $sign1 } { $im1 }i and { $re2 } { $sign2 } {
     } half-plane.
 regimes-schematic = Mass on a spring and damper at t = { $time }: displaced { $displacement } from rest.
 
+### quarter-car
+
+quarter-car-legend-comfort = comfort { $low }, { $high }
+quarter-car-legend-performance = performance { $low }, { $high }
+quarter-car-legend-critical = critical { $zeta } (×)
+quarter-car-legend-overdamped = overdamped { $zeta } (●)
+quarter-car-group = { $group ->
+        [comfort] comfort
+        [performance] performance
+        [critical] critical
+       *[overdamped] overdamped
+    }
+quarter-car-crossings = { $count ->
+        [0] does not cross equilibrium
+        [one] crosses equilibrium once before settling
+       *[other] crosses equilibrium { $count } times before settling
+    }
+quarter-car-crossings-inside-band = settles before crossing equilibrium (its rebound stays inside the band)
+quarter-car-settles-after = stays within ±{ $band } of x₀ around rest after { $time }
+quarter-car-does-not-settle = does not settle
+quarter-car-rebound = peak rebound { $rebound } at { $time }
+quarter-car-no-rebound = no rebound
+quarter-car-describe-design = This design (ζ = { $zeta }, { $regime }): { $crossings }, { $settling }, { $rebound }.
+quarter-car-describe-undamped = This design (ζ = 0, undamped): oscillates forever between ±{ $amplitude } at { $frequency }.
+quarter-car-describe-unsettled = This design ({ $regime }): does not settle.
+quarter-car-list-separator = {"; "}
+quarter-car-describe-response = { $design } Preset family on this car, settling into ±{ $band } of x₀: { $family }.
+quarter-car-member-settles = { $group } ζ = { $zeta } in { $time }
+quarter-car-member-unsettled = { $group } ζ = { $zeta } does not settle
+quarter-car-two-sentences = { $first } { $second }
+quarter-car-settling-fastest = Free-response settling time into ±{ $band } of x₀ against ζ for this car: fastest at ζ = { $zeta } ({ $time }), just past a jump; it jumps down each time a rebound drops inside the band.
+quarter-car-settling-curve = Free-response settling time into ±{ $band } of x₀ against ζ.
+quarter-car-settling-design = This design, ζ = { $zeta }, settles in { $time }.
+quarter-car-settling-design-never = This design, ζ = { $zeta }, never settles.
+quarter-car-sensitivity-range = With the sprung mass between { $low } and { $high } (±{ $variation }) and the same damper and spring, ζ ranges from { $min } to { $max } (nominal { $nominal }); the linear estimate is { $linear_min } to { $linear_max }.
+quarter-car-sensitivity-undefined = The damping-ratio range is undefined for this design.
+quarter-car-sensitivity-inside = The fastest-settling ζ = { $zeta } lies inside this range: loads that push ζ below it settle markedly later.
+quarter-car-sensitivity-outside = The fastest-settling ζ = { $zeta } lies outside this range.
+quarter-car-schematic = Quarter car at t = { $time }: the body is { $displacement } from rest ({ $side ->
+        [above] above
+       *[below] below
+    }), road fixed.
+quarter-car-settling-title = Settling time into ±{ $band } of x₀ against ζ
+quarter-car-axis-zeta = damping ratio ζ
+quarter-car-axis-zeta-fastest = damping ratio ζ (dashed: fastest ζ = { $zeta })
+quarter-car-axis-settling-time = settling time t_s
+quarter-car-axis-sprung-mass = sprung mass m
+quarter-car-fastest = fastest ζ = { $zeta }
+quarter-car-this-design = this design
+quarter-car-nominal = nominal
+quarter-car-road = road
+quarter-car-band-label = ±{ $band } of x₀
+quarter-car-series-design = this design, ζ { $zeta }
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

@@ -98,6 +98,60 @@ regimes-poles = Polos en { $re1 } { $sign1 } { $im1 }i y { $re2 } { $sign2 } { $
     }.
 regimes-schematic = Masa sobre resorte y amortiguador en t = { $time }: desplazada { $displacement } del reposo.
 
+### quarter-car
+
+quarter-car-legend-comfort = confort { $low } y { $high }
+quarter-car-legend-performance = deportivo { $low } y { $high }
+quarter-car-legend-critical = crítico { $zeta } (×)
+quarter-car-legend-overdamped = sobreamortiguado { $zeta } (●)
+quarter-car-group = { $group ->
+        [comfort] confort
+        [performance] deportivo
+        [critical] crítico
+       *[overdamped] sobreamortiguado
+    }
+quarter-car-crossings = { $count ->
+        [0] no cruza el equilibrio
+        [one] cruza el equilibrio una vez antes de establecerse
+       *[other] cruza el equilibrio { $count } veces antes de establecerse
+    }
+quarter-car-crossings-inside-band = se establece antes de cruzar el equilibrio (su rebote queda dentro de la banda)
+quarter-car-settles-after = queda dentro de ±{ $band } de x₀ alrededor del reposo tras { $time }
+quarter-car-does-not-settle = no se establece
+quarter-car-rebound = rebote máximo del { $rebound } en { $time }
+quarter-car-no-rebound = sin rebote
+quarter-car-describe-design = Este diseño (ζ = { $zeta }, { $regime }): { $crossings }, { $settling }, { $rebound }.
+quarter-car-describe-undamped = Este diseño (ζ = 0, no amortiguado): oscila indefinidamente entre ±{ $amplitude } a { $frequency }.
+quarter-car-describe-unsettled = Este diseño ({ $regime }): no se establece.
+quarter-car-list-separator = {"; "}
+quarter-car-describe-response = { $design } Ajustes predefinidos en este vehículo, con establecimiento en ±{ $band } de x₀: { $family }.
+quarter-car-member-settles = { $group } ζ = { $zeta } en { $time }
+quarter-car-member-unsettled = { $group } ζ = { $zeta } no se establece
+quarter-car-two-sentences = { $first } { $second }
+quarter-car-settling-fastest = Tiempo de establecimiento de la respuesta libre en ±{ $band } de x₀ frente a ζ en este vehículo: el más rápido es ζ = { $zeta } ({ $time }), justo después de un salto; baja de golpe cada vez que un rebote queda dentro de la banda.
+quarter-car-settling-curve = Tiempo de establecimiento de la respuesta libre en ±{ $band } de x₀ frente a ζ.
+quarter-car-settling-design = Este diseño, ζ = { $zeta }, se establece en { $time }.
+quarter-car-settling-design-never = Este diseño, ζ = { $zeta }, nunca se establece.
+quarter-car-sensitivity-range = Con la masa suspendida entre { $low } y { $high } (±{ $variation }) y el mismo amortiguador y resorte, ζ va de { $min } a { $max } (nominal { $nominal }); la estimación lineal es de { $linear_min } a { $linear_max }.
+quarter-car-sensitivity-undefined = El intervalo del coeficiente de amortiguamiento no está definido para este diseño.
+quarter-car-sensitivity-inside = El ζ de establecimiento más rápido, { $zeta }, está dentro de este intervalo: las cargas que llevan ζ por debajo de él se establecen notablemente más tarde.
+quarter-car-sensitivity-outside = El ζ de establecimiento más rápido, { $zeta }, está fuera de este intervalo.
+quarter-car-schematic = Cuarto de vehículo en t = { $time }: la carrocería está a { $displacement } del reposo ({ $side ->
+        [above] por encima
+       *[below] por debajo
+    }), carretera fija.
+quarter-car-settling-title = Tiempo de establecimiento en ±{ $band } de x₀ frente a ζ
+quarter-car-axis-zeta = coeficiente de amortiguamiento ζ
+quarter-car-axis-zeta-fastest = coeficiente de amortiguamiento ζ (a trazos: ζ más rápido = { $zeta })
+quarter-car-axis-settling-time = tiempo de establecimiento t_s
+quarter-car-axis-sprung-mass = masa suspendida m
+quarter-car-fastest = ζ más rápido = { $zeta }
+quarter-car-this-design = este diseño
+quarter-car-nominal = nominal
+quarter-car-road = carretera
+quarter-car-band-label = ±{ $band } de x₀
+quarter-car-series-design = este diseño, ζ { $zeta }
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes
