@@ -160,6 +160,36 @@ quarter-car-road = road
 quarter-car-band-label = ±{ $band } of x₀
 quarter-car-series-design = this design, ζ { $zeta }
 
+### quarter-car-2dof
+
+quarter-car-2dof-describe-motion = Over { $road ->
+        [bump] a bump
+        [step] a step
+        [sine] a sinusoidal road
+       *[random] a random road
+    } (largest road height { $road_peak }), the body moves at most { $body } (at { $body_time }) and the wheel { $wheel } (at { $wheel_time }).
+quarter-car-2dof-describe-acceleration = Body acceleration peaks at { $peak } ({ $peak_g } g); over the run from rest, 0 to { $window }, its RMS is { $rms }.
+quarter-car-2dof-describe-tyre-lift-off = Tyre deflection (wheel above road, positive = tyre unloading) ranges from { $low } to { $high }, RMS { $rms }; it reaches the static deflection { $limit } first at { $time }, where the tyre force falls to zero and the wheel leaves the road: lift-offs { $lift_offs }; time off the road { $airborne }.
+quarter-car-2dof-describe-tyre-contact = Tyre deflection (wheel above road, positive = tyre unloading) ranges from { $low } to { $high }, RMS { $rms }; it stays below the static deflection { $limit }, so the tyre keeps contact.
+quarter-car-2dof-describe-frf = Frequency response per unit road height, on log axes. The body follows slow road waves (ratio 1), peaks at { $body_peak } near body bounce { $body_frequency }, and is isolated above: { $at_20 } at 20 Hz. The tyre deflection peaks at { $tyre_peak } near wheel hop { $tyre_frequency }.
+quarter-car-2dof-schematic = Quarter car at t = { $time }: body { $body }, wheel { $wheel }, road { $road } (drawn to a common scale).
+quarter-car-2dof-schematic-title = Schematic
+quarter-car-2dof-axis-height = height from equilibrium
+quarter-car-2dof-axis-acceleration = acceleration z_s″
+quarter-car-2dof-axis-tyre-deflection = tyre deflection z_u − u
+quarter-car-2dof-axis-frequency = frequency f
+quarter-car-2dof-axis-magnitude = magnitude per unit road height
+quarter-car-2dof-series-road = road u
+quarter-car-2dof-series-wheel = wheel z_u
+quarter-car-2dof-series-body = body z_s
+quarter-car-2dof-series-body-acceleration = body acceleration
+quarter-car-2dof-series-rms = ± RMS
+quarter-car-2dof-series-lift-off = lift-off (static deflection)
+quarter-car-2dof-series-off-road = off the road
+quarter-car-2dof-series-body-gain = body/road
+quarter-car-2dof-series-tyre-gain = tyre defl./road
+quarter-car-2dof-marker-road = road
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

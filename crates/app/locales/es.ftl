@@ -152,6 +152,36 @@ quarter-car-road = carretera
 quarter-car-band-label = ±{ $band } de x₀
 quarter-car-series-design = este diseño, ζ { $zeta }
 
+### quarter-car-2dof
+
+quarter-car-2dof-describe-motion = Sobre { $road ->
+        [bump] un resalto
+        [step] un escalón
+        [sine] una carretera sinusoidal
+       *[random] una carretera aleatoria
+    } (altura máxima de la carretera { $road_peak }), la carrocería se mueve como mucho { $body } (en { $body_time }) y la rueda { $wheel } (en { $wheel_time }).
+quarter-car-2dof-describe-acceleration = La aceleración de la carrocería alcanza un pico de { $peak } ({ $peak_g } g); en la marcha desde el reposo, de 0 a { $window }, su valor RMS es { $rms }.
+quarter-car-2dof-describe-tyre-lift-off = La deflexión del neumático (rueda sobre la carretera, positiva = neumático descargándose) va de { $low } a { $high }, con un valor RMS de { $rms }; alcanza la deflexión estática { $limit } por primera vez a los { $time }, donde la fuerza del neumático cae a cero y la rueda despega de la carretera: despegues { $lift_offs }; tiempo en el aire { $airborne }.
+quarter-car-2dof-describe-tyre-contact = La deflexión del neumático (rueda sobre la carretera, positiva = neumático descargándose) va de { $low } a { $high }, con un valor RMS de { $rms }; queda por debajo de la deflexión estática, { $limit }, así que el neumático mantiene el contacto.
+quarter-car-2dof-describe-frf = Respuesta en frecuencia por unidad de altura de la carretera, en ejes logarítmicos. La carrocería sigue las ondulaciones lentas (razón 1), tiene un pico de { $body_peak } cerca del rebote de la carrocería, { $body_frequency }, y queda aislada por encima: { $at_20 } a 20 Hz. La deflexión del neumático tiene un pico de { $tyre_peak } cerca del salto de la rueda, { $tyre_frequency }.
+quarter-car-2dof-schematic = Cuarto de vehículo en t = { $time }: carrocería { $body }, rueda { $wheel }, carretera { $road } (dibujadas a una escala común).
+quarter-car-2dof-schematic-title = Esquema
+quarter-car-2dof-axis-height = altura desde el equilibrio
+quarter-car-2dof-axis-acceleration = aceleración z_s″
+quarter-car-2dof-axis-tyre-deflection = deflexión del neumático z_u − u
+quarter-car-2dof-axis-frequency = frecuencia f
+quarter-car-2dof-axis-magnitude = magnitud por unidad de altura de la carretera
+quarter-car-2dof-series-road = carretera u
+quarter-car-2dof-series-wheel = rueda z_u
+quarter-car-2dof-series-body = carrocería z_s
+quarter-car-2dof-series-body-acceleration = aceleración de la carrocería
+quarter-car-2dof-series-rms = ± RMS
+quarter-car-2dof-series-lift-off = despegue (deflexión estática)
+quarter-car-2dof-series-off-road = en el aire
+quarter-car-2dof-series-body-gain = carrocería/carretera
+quarter-car-2dof-series-tyre-gain = defl. neumático/carretera
+quarter-car-2dof-marker-road = carretera
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

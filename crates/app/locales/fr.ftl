@@ -84,3 +84,83 @@ quarter-car-preset-4 = Sport ζ = 0,7
 quarter-car-preset-5 = Critique ζ = 1
 quarter-car-preset-6 = Suramorti ζ = 2
 
+### quarter-car-2dof
+
+quarter-car-2dof-describe-motion = Sur { $road ->
+        [bump] une bosse
+        [step] une marche
+        [sine] une route sinusoïdale
+       *[random] une route aléatoire
+    } (hauteur maximale de la route { $road_peak }), la caisse se déplace d'au plus { $body } (à { $body_time }) et la roue d'au plus { $wheel } (à { $wheel_time }).
+quarter-car-2dof-describe-acceleration = L'accélération de la caisse culmine à { $peak } ({ $peak_g } g) ; sur le trajet depuis le repos, de 0 à { $window }, sa valeur efficace est de { $rms }.
+quarter-car-2dof-describe-tyre-lift-off = La déflexion du pneu (roue au-dessus de la route, positive = pneu qui se décharge) varie de { $low } à { $high }, valeur efficace { $rms } ; elle atteint la déflexion statique { $limit } pour la première fois à { $time }, où la force du pneu tombe à zéro et la roue quitte la route : décollements { $lift_offs } ; temps hors de la route { $airborne }.
+quarter-car-2dof-describe-tyre-contact = La déflexion du pneu (roue au-dessus de la route, positive = pneu qui se décharge) varie de { $low } à { $high }, valeur efficace { $rms } ; elle reste sous la déflexion statique { $limit }, donc le pneu garde le contact.
+quarter-car-2dof-describe-frf = Réponse en fréquence par unité de hauteur de route, en axes logarithmiques. La caisse suit les ondulations lentes de la route (rapport 1), culmine à { $body_peak } près du pompage de la caisse à { $body_frequency }, et est isolée au-delà : { $at_20 } à 20 Hz. La déflexion du pneu culmine à { $tyre_peak } près du battement de roue à { $tyre_frequency }.
+quarter-car-2dof-schematic = Quart de véhicule à t = { $time } : caisse { $body }, roue { $wheel }, route { $road } (dessinées à une échelle commune).
+quarter-car-2dof-schematic-title = Schéma
+quarter-car-2dof-axis-height = hauteur par rapport à l'équilibre
+quarter-car-2dof-axis-acceleration = accélération z_s″
+quarter-car-2dof-axis-tyre-deflection = déflexion du pneu z_u − u
+quarter-car-2dof-axis-frequency = fréquence f
+quarter-car-2dof-axis-magnitude = amplitude par unité de hauteur de route
+quarter-car-2dof-series-road = route u
+quarter-car-2dof-series-wheel = roue z_u
+quarter-car-2dof-series-body = caisse z_s
+quarter-car-2dof-series-body-acceleration = accélération de la caisse
+quarter-car-2dof-series-rms = ± valeur efficace
+quarter-car-2dof-series-lift-off = décollement (déflexion statique)
+quarter-car-2dof-series-off-road = roue décollée
+quarter-car-2dof-series-body-gain = caisse/route
+quarter-car-2dof-series-tyre-gain = défl. pneu/route
+quarter-car-2dof-marker-road = route
+quarter-car-2dof-title = Quart de véhicule avec caisse et roue
+quarter-car-2dof-summary = Deux masses, deux modes. La caisse (masse suspendue m_s) repose sur le ressort de suspension k_s et l'amortisseur c_s ; la roue (masse non suspendue m_u) repose sur le ressort du pneu k_t, qui suit la route u(t). Le pompage de la caisse, vers 1–1,5 Hz, est le mouvement de la caisse sur la suspension souple ; le battement de roue, vers 10–15 Hz, est la roue légère qui rebondit entre le pneu raide et la suspension. Les réponses en fréquence montrent les deux : la caisse suit les ondulations lentes de la route, passe par-dessus les rapides et vibre le plus près du pompage ; la déflexion du pneu, qui décide de l'adhérence, culmine au battement de roue. Le pneu ne peut que pousser : quand la roue remonte au-delà de sa déflexion statique, la force du pneu est nulle et la roue quitte la route jusqu'à ce qu'elle retombe. Le confort se juge à l'accélération efficace (RMS) de la caisse, la tenue de route à la déflexion efficace du pneu, toutes deux sur le trajet depuis le repos, 0 … T. La réponse est exacte entre les échantillons de la route, assez rapprochés pour suivre chaque bosse et chaque battement de roue. Les déplacements sont comptés depuis l'équilibre statique, positifs vers le haut ; la route aléatoire additionne 64 sinusoïdes selon le spectre ISO 8608 sur 0,5–20 Hz. Sur celle-ci, la page indique aussi l'accélération efficace stationnaire de la caisse sur la route ISO 8608 complète, non pondérée et pondérée par le filtre W_k de l'ISO 2631-1 (a_w, la mesure du confort), tirée de l'équation de Lyapunov de la voiture.
+quarter-car-2dof-param-ms = masse de la caisse (suspendue)
+quarter-car-2dof-param-mu = masse de la roue (non suspendue)
+quarter-car-2dof-param-ks = raideur de la suspension
+quarter-car-2dof-param-kt = raideur du pneu
+quarter-car-2dof-param-cs = amortissement de la suspension
+quarter-car-2dof-param-road = excitation de la route
+quarter-car-2dof-param-road-bump = bosse unique (1 − cos)
+quarter-car-2dof-param-road-step = marche (bordure de trottoir)
+quarter-car-2dof-param-road-sine = sinusoïde
+quarter-car-2dof-param-road-random = route aléatoire (ISO 8608)
+quarter-car-2dof-param-h = hauteur de la bosse ou de la marche, amplitude du sinus
+quarter-car-2dof-param-L = longueur de la bosse
+quarter-car-2dof-param-V = vitesse
+quarter-car-2dof-param-f-road = fréquence de la route sinusoïdale
+quarter-car-2dof-param-class = classe de la route aléatoire
+quarter-car-2dof-param-class-A = A (très bonne)
+quarter-car-2dof-param-class-B = B (bonne)
+quarter-car-2dof-param-class-C = C (moyenne)
+quarter-car-2dof-param-class-D = D (mauvaise)
+quarter-car-2dof-param-class-E = E (très mauvaise)
+quarter-car-2dof-param-class-F = F
+quarter-car-2dof-param-class-G = G
+quarter-car-2dof-param-class-H = H
+quarter-car-2dof-param-seed = graine de la route aléatoire
+quarter-car-2dof-readout-f-body = fréquence de pompage de la caisse [Hz]
+quarter-car-2dof-readout-f-wheel = fréquence de battement de roue [Hz]
+quarter-car-2dof-readout-window = fenêtre de la valeur efficace : le trajet depuis le repos, 0 … T
+quarter-car-2dof-readout-rms-body-accel = accélération efficace de la caisse sur 0 … T (confort)
+quarter-car-2dof-readout-rms-tyre-deflection = déflexion efficace du pneu z_u − u sur 0 … T (tenue de route)
+quarter-car-2dof-readout-max-travel = plus grand débattement de suspension |z_s − z_u|
+quarter-car-2dof-readout-static-tyre-deflection = déflexion statique du pneu (la roue décolle au-delà)
+quarter-car-2dof-readout-lift-off = premier décollement : la force du pneu atteint zéro
+quarter-car-2dof-readout-airborne-time = durée pendant laquelle la roue a quitté la route
+quarter-car-2dof-readout-rms-road = hauteur efficace de la route (route aléatoire)
+quarter-car-2dof-readout-stationary-accel = accélération efficace stationnaire de la caisse, route ISO 8608 complète (route aléatoire)
+quarter-car-2dof-readout-stationary-weighted-accel = a_w stationnaire : accélération efficace de la caisse pondérée par W_k de l'ISO 2631-1 (route aléatoire)
+quarter-car-2dof-readout-body-gain = amplitude caisse / route à la fréquence du sinus
+quarter-car-2dof-readout-tyre-gain = déflexion du pneu / amplitude de la route à la fréquence du sinus
+quarter-car-2dof-plot-motion = Caisse, roue et route
+quarter-car-2dof-plot-accel = Accélération de la caisse
+quarter-car-2dof-plot-frf = Réponse en fréquence par unité de hauteur de route
+quarter-car-2dof-plot-tyre = Déflexion du pneu
+quarter-car-2dof-preset-1 = Ralentisseur de 5 cm à 10 m/s
+quarter-car-2dof-preset-2 = Bordure de trottoir de 5 cm
+quarter-car-2dof-preset-3 = Ondulation au pompage de la caisse
+quarter-car-2dof-preset-4 = Ondulation au battement de roue
+quarter-car-2dof-preset-5 = Route aléatoire, classe C, 20 m/s
+quarter-car-2dof-preset-6 = Amortisseur souple sur route dégradée
+

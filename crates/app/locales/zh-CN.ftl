@@ -84,3 +84,83 @@ quarter-car-preset-4 = 运动 ζ = 0.7
 quarter-car-preset-5 = 临界 ζ = 1
 quarter-car-preset-6 = 过阻尼 ζ = 2
 
+### quarter-car-2dof
+
+quarter-car-2dof-describe-motion = 经过{ $road ->
+        [bump] 一个凸起
+        [step] 一个台阶
+        [sine] 正弦路面
+       *[random] 随机路面
+    }（最大路面高度 { $road_peak }），车身最大位移 { $body }（t = { $body_time }），车轮最大位移 { $wheel }（t = { $wheel_time }）。
+quarter-car-2dof-describe-acceleration = 车身加速度峰值为 { $peak }（{ $peak_g } g）；在从静止开始的整个过程（0 到 { $window }）中，其均方根值为 { $rms }。
+quarter-car-2dof-describe-tyre-lift-off = 轮胎变形（车轮高于路面，正值 = 轮胎卸载）范围为 { $low } 到 { $high }，均方根值 { $rms }；在 { $time } 首次达到静态变形 { $limit }，此时轮胎力降为零，车轮离开路面：离地 { $lift_offs } 次；离地时间 { $airborne }。
+quarter-car-2dof-describe-tyre-contact = 轮胎变形（车轮高于路面，正值 = 轮胎卸载）范围为 { $low } 到 { $high }，均方根值 { $rms }；始终低于静态变形 { $limit }，因此轮胎保持接地。
+quarter-car-2dof-describe-frf = 单位路面高度的频率响应，采用对数坐标。车身跟随缓慢的路面起伏（比值 1），在车身跳动频率 { $body_frequency } 附近达到峰值 { $body_peak }，更高频率处被隔离：20 Hz 时为 { $at_20 }。轮胎变形在车轮跳动频率 { $tyre_frequency } 附近达到峰值 { $tyre_peak }。
+quarter-car-2dof-schematic = 四分之一车辆，t = { $time }：车身 { $body }，车轮 { $wheel }，路面 { $road }（按同一比例绘制）。
+quarter-car-2dof-schematic-title = 示意图
+quarter-car-2dof-axis-height = 相对平衡位置的高度
+quarter-car-2dof-axis-acceleration = 加速度 z_s″
+quarter-car-2dof-axis-tyre-deflection = 轮胎变形 z_u − u
+quarter-car-2dof-axis-frequency = 频率 f
+quarter-car-2dof-axis-magnitude = 单位路面高度的幅值
+quarter-car-2dof-series-road = 路面 u
+quarter-car-2dof-series-wheel = 车轮 z_u
+quarter-car-2dof-series-body = 车身 z_s
+quarter-car-2dof-series-body-acceleration = 车身加速度
+quarter-car-2dof-series-rms = ± 均方根
+quarter-car-2dof-series-lift-off = 离地界限（静态变形）
+quarter-car-2dof-series-off-road = 车轮离地
+quarter-car-2dof-series-body-gain = 车身/路面
+quarter-car-2dof-series-tyre-gain = 轮胎变形/路面
+quarter-car-2dof-marker-road = 路面
+quarter-car-2dof-title = 含车身与车轮的四分之一车辆
+quarter-car-2dof-summary = 两个质量，两个模态。车身（簧上质量 m_s）支承在悬架弹簧 k_s 和阻尼器 c_s 上；车轮（簧下质量 m_u）支承在轮胎弹簧 k_t 上，轮胎跟随路面 u(t)。车身跳动约在 1–1.5 Hz，是车身在较软悬架上的运动；车轮跳动约在 10–15 Hz，是较轻的车轮在刚硬的轮胎与悬架之间弹跳。频率响应同时显示两者：车身跟随缓慢的路面起伏，越过快速的起伏，在车身跳动附近振动最大；决定抓地力的轮胎变形在车轮跳动处达到峰值。轮胎只能推不能拉：当车轮升高超过其静态变形时，轮胎力为零，车轮离开路面，直到再次落地。舒适性以车身加速度均方根（RMS）衡量，抓地性以轮胎变形均方根衡量，两者都在从静止开始的整个过程 0 … T 内计算。在路面采样点之间响应是精确的，采样点足够密，可以跟上每个凸起和每次车轮跳动。位移从静平衡位置算起，向上为正；随机路面由 64 个正弦分量叠加而成，在 0.5–20 Hz 内符合 ISO 8608 谱。在随机路面上，页面还根据车辆的李雅普诺夫方程给出完整 ISO 8608 路面上的稳态车身加速度均方根，包括未加权值和按 ISO 2631-1 的 W_k 加权的值（a_w，舒适性指标）。
+quarter-car-2dof-param-ms = 车身（簧上）质量
+quarter-car-2dof-param-mu = 车轮（簧下）质量
+quarter-car-2dof-param-ks = 悬架刚度
+quarter-car-2dof-param-kt = 轮胎刚度
+quarter-car-2dof-param-cs = 悬架阻尼
+quarter-car-2dof-param-road = 路面输入
+quarter-car-2dof-param-road-bump = 单个凸起（1 − cos）
+quarter-car-2dof-param-road-step = 台阶（路缘）
+quarter-car-2dof-param-road-sine = 正弦
+quarter-car-2dof-param-road-random = 随机路面（ISO 8608）
+quarter-car-2dof-param-h = 凸起或台阶高度、正弦幅值
+quarter-car-2dof-param-L = 凸起长度
+quarter-car-2dof-param-V = 车速
+quarter-car-2dof-param-f-road = 正弦路面频率
+quarter-car-2dof-param-class = 随机路面等级
+quarter-car-2dof-param-class-A = A（很好）
+quarter-car-2dof-param-class-B = B（好）
+quarter-car-2dof-param-class-C = C（一般）
+quarter-car-2dof-param-class-D = D（差）
+quarter-car-2dof-param-class-E = E（很差）
+quarter-car-2dof-param-class-F = F
+quarter-car-2dof-param-class-G = G
+quarter-car-2dof-param-class-H = H
+quarter-car-2dof-param-seed = 随机路面种子
+quarter-car-2dof-readout-f-body = 车身跳动频率 [Hz]
+quarter-car-2dof-readout-f-wheel = 车轮跳动频率 [Hz]
+quarter-car-2dof-readout-window = 均方根统计区间：从静止开始的整个过程，0 … T
+quarter-car-2dof-readout-rms-body-accel = 0 … T 内车身加速度均方根（舒适性）
+quarter-car-2dof-readout-rms-tyre-deflection = 0 … T 内轮胎变形 z_u − u 的均方根（抓地性）
+quarter-car-2dof-readout-max-travel = 最大悬架行程 |z_s − z_u|
+quarter-car-2dof-readout-static-tyre-deflection = 轮胎静态变形（超过即车轮离地）
+quarter-car-2dof-readout-lift-off = 首次离地：轮胎力降为零
+quarter-car-2dof-readout-airborne-time = 车轮离地时间
+quarter-car-2dof-readout-rms-road = 路面高度均方根（随机路面）
+quarter-car-2dof-readout-stationary-accel = 稳态车身加速度均方根，完整 ISO 8608 路面（随机路面）
+quarter-car-2dof-readout-stationary-weighted-accel = 稳态 a_w：按 ISO 2631-1 W_k 加权的车身加速度均方根（随机路面）
+quarter-car-2dof-readout-body-gain = 正弦频率下车身与路面的幅值比
+quarter-car-2dof-readout-tyre-gain = 正弦频率下轮胎变形与路面幅值之比
+quarter-car-2dof-plot-motion = 车身、车轮与路面
+quarter-car-2dof-plot-accel = 车身加速度
+quarter-car-2dof-plot-frf = 单位路面高度的频率响应
+quarter-car-2dof-plot-tyre = 轮胎变形
+quarter-car-2dof-preset-1 = 减速带 5 cm，10 m/s
+quarter-car-2dof-preset-2 = 路缘台阶 5 cm
+quarter-car-2dof-preset-3 = 车身跳动频率的路面波
+quarter-car-2dof-preset-4 = 车轮跳动频率的路面波
+quarter-car-2dof-preset-5 = 随机路面，C 级，20 m/s
+quarter-car-2dof-preset-6 = 差路面上的软阻尼器
+
