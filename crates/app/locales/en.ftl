@@ -225,6 +225,89 @@ universality-describe-realtime = Real time over { $window }: time scale 1/ωₙ 
        *[same] B keeps pace with A exactly
     }.
 universality-schematic = At t = { $time }: A, { $machine_a }: { $coordinate_a } = { $value_a }; B, { $machine_b }: { $coordinate_b } = { $value_b }.
+### quarter-car
+
+quarter-car-legend-comfort = comfort { $low }, { $high }
+quarter-car-legend-performance = performance { $low }, { $high }
+quarter-car-legend-critical = critical { $zeta } (×)
+quarter-car-legend-overdamped = overdamped { $zeta } (●)
+quarter-car-group = { $group ->
+        [comfort] comfort
+        [performance] performance
+        [critical] critical
+       *[overdamped] overdamped
+    }
+quarter-car-crossings = { $count ->
+        [0] does not cross equilibrium
+        [one] crosses equilibrium once before settling
+       *[other] crosses equilibrium { $count } times before settling
+    }
+quarter-car-crossings-inside-band = settles before crossing equilibrium (its rebound stays inside the band)
+quarter-car-settles-after = stays within ±{ $band } of x₀ around rest after { $time }
+quarter-car-does-not-settle = does not settle
+quarter-car-rebound = peak rebound { $rebound } at { $time }
+quarter-car-no-rebound = no rebound
+quarter-car-describe-design = This design (ζ = { $zeta }, { $regime }): { $crossings }, { $settling }, { $rebound }.
+quarter-car-describe-undamped = This design (ζ = 0, undamped): oscillates forever between ±{ $amplitude } at { $frequency }.
+quarter-car-describe-unsettled = This design ({ $regime }): does not settle.
+quarter-car-list-separator = {"; "}
+quarter-car-describe-response = { $design } Preset family on this car, settling into ±{ $band } of x₀: { $family }.
+quarter-car-member-settles = { $group } ζ = { $zeta } in { $time }
+quarter-car-member-unsettled = { $group } ζ = { $zeta } does not settle
+quarter-car-two-sentences = { $first } { $second }
+quarter-car-settling-fastest = Free-response settling time into ±{ $band } of x₀ against ζ for this car: fastest at ζ = { $zeta } ({ $time }), just past a jump; it jumps down each time a rebound drops inside the band.
+quarter-car-settling-curve = Free-response settling time into ±{ $band } of x₀ against ζ.
+quarter-car-settling-design = This design, ζ = { $zeta }, settles in { $time }.
+quarter-car-settling-design-never = This design, ζ = { $zeta }, never settles.
+quarter-car-sensitivity-range = With the sprung mass between { $low } and { $high } (±{ $variation }) and the same damper and spring, ζ ranges from { $min } to { $max } (nominal { $nominal }); the linear estimate is { $linear_min } to { $linear_max }.
+quarter-car-sensitivity-undefined = The damping-ratio range is undefined for this design.
+quarter-car-sensitivity-inside = The fastest-settling ζ = { $zeta } lies inside this range: loads that push ζ below it settle markedly later.
+quarter-car-sensitivity-outside = The fastest-settling ζ = { $zeta } lies outside this range.
+quarter-car-schematic = Quarter car at t = { $time }: the body is { $displacement } from rest ({ $side ->
+        [above] above
+       *[below] below
+    }), road fixed.
+quarter-car-settling-title = Settling time into ±{ $band } of x₀ against ζ
+quarter-car-axis-zeta = damping ratio ζ
+quarter-car-axis-zeta-fastest = damping ratio ζ (dashed: fastest ζ = { $zeta })
+quarter-car-axis-settling-time = settling time t_s
+quarter-car-axis-sprung-mass = sprung mass m
+quarter-car-fastest = fastest ζ = { $zeta }
+quarter-car-this-design = this design
+quarter-car-nominal = nominal
+quarter-car-road = road
+quarter-car-band-label = ±{ $band } of x₀
+quarter-car-series-design = this design, ζ { $zeta }
+
+### quarter-car-2dof
+
+quarter-car-2dof-describe-motion = Over { $road ->
+        [bump] a bump
+        [step] a step
+        [sine] a sinusoidal road
+       *[random] a random road
+    } (largest road height { $road_peak }), the body moves at most { $body } (at { $body_time }) and the wheel { $wheel } (at { $wheel_time }).
+quarter-car-2dof-describe-acceleration = Body acceleration peaks at { $peak } ({ $peak_g } g); over the run from rest, 0 to { $window }, its RMS is { $rms }.
+quarter-car-2dof-describe-tyre-lift-off = Tyre deflection (wheel above road, positive = tyre unloading) ranges from { $low } to { $high }, RMS { $rms }; it reaches the static deflection { $limit } first at { $time }, where the tyre force falls to zero and the wheel leaves the road: lift-offs { $lift_offs }; time off the road { $airborne }.
+quarter-car-2dof-describe-tyre-contact = Tyre deflection (wheel above road, positive = tyre unloading) ranges from { $low } to { $high }, RMS { $rms }; it stays below the static deflection { $limit }, so the tyre keeps contact.
+quarter-car-2dof-describe-frf = Frequency response per unit road height, on log axes. The body follows slow road waves (ratio 1), peaks at { $body_peak } near body bounce { $body_frequency }, and is isolated above: { $at_20 } at 20 Hz. The tyre deflection peaks at { $tyre_peak } near wheel hop { $tyre_frequency }.
+quarter-car-2dof-schematic = Quarter car at t = { $time }: body { $body }, wheel { $wheel }, road { $road } (drawn to a common scale).
+quarter-car-2dof-schematic-title = Schematic
+quarter-car-2dof-axis-height = height from equilibrium
+quarter-car-2dof-axis-acceleration = acceleration z_s″
+quarter-car-2dof-axis-tyre-deflection = tyre deflection z_u − u
+quarter-car-2dof-axis-frequency = frequency f
+quarter-car-2dof-axis-magnitude = magnitude per unit road height
+quarter-car-2dof-series-road = road u
+quarter-car-2dof-series-wheel = wheel z_u
+quarter-car-2dof-series-body = body z_s
+quarter-car-2dof-series-body-acceleration = body acceleration
+quarter-car-2dof-series-rms = ± RMS
+quarter-car-2dof-series-lift-off = lift-off (static deflection)
+quarter-car-2dof-series-off-road = off the road
+quarter-car-2dof-series-body-gain = body/road
+quarter-car-2dof-series-tyre-gain = tyre defl./road
+quarter-car-2dof-marker-road = road
 
 ## Declared strings (generated from the demo declarations)
 

@@ -217,6 +217,89 @@ universality-describe-realtime = Tiempo real durante { $window }: escala de tiem
        *[same] B sigue el paso de A exactamente
     }.
 universality-schematic = En t = { $time }: A, { $machine_a }: { $coordinate_a } = { $value_a }; B, { $machine_b }: { $coordinate_b } = { $value_b }.
+### quarter-car
+
+quarter-car-legend-comfort = confort { $low } y { $high }
+quarter-car-legend-performance = deportivo { $low } y { $high }
+quarter-car-legend-critical = crítico { $zeta } (×)
+quarter-car-legend-overdamped = sobreamortiguado { $zeta } (●)
+quarter-car-group = { $group ->
+        [comfort] confort
+        [performance] deportivo
+        [critical] crítico
+       *[overdamped] sobreamortiguado
+    }
+quarter-car-crossings = { $count ->
+        [0] no cruza el equilibrio
+        [one] cruza el equilibrio una vez antes de establecerse
+       *[other] cruza el equilibrio { $count } veces antes de establecerse
+    }
+quarter-car-crossings-inside-band = se establece antes de cruzar el equilibrio (su rebote queda dentro de la banda)
+quarter-car-settles-after = queda dentro de ±{ $band } de x₀ alrededor del reposo tras { $time }
+quarter-car-does-not-settle = no se establece
+quarter-car-rebound = rebote máximo del { $rebound } en { $time }
+quarter-car-no-rebound = sin rebote
+quarter-car-describe-design = Este diseño (ζ = { $zeta }, { $regime }): { $crossings }, { $settling }, { $rebound }.
+quarter-car-describe-undamped = Este diseño (ζ = 0, no amortiguado): oscila indefinidamente entre ±{ $amplitude } a { $frequency }.
+quarter-car-describe-unsettled = Este diseño ({ $regime }): no se establece.
+quarter-car-list-separator = {"; "}
+quarter-car-describe-response = { $design } Ajustes predefinidos en este vehículo, con establecimiento en ±{ $band } de x₀: { $family }.
+quarter-car-member-settles = { $group } ζ = { $zeta } en { $time }
+quarter-car-member-unsettled = { $group } ζ = { $zeta } no se establece
+quarter-car-two-sentences = { $first } { $second }
+quarter-car-settling-fastest = Tiempo de establecimiento de la respuesta libre en ±{ $band } de x₀ frente a ζ en este vehículo: el más rápido es ζ = { $zeta } ({ $time }), justo después de un salto; baja de golpe cada vez que un rebote queda dentro de la banda.
+quarter-car-settling-curve = Tiempo de establecimiento de la respuesta libre en ±{ $band } de x₀ frente a ζ.
+quarter-car-settling-design = Este diseño, ζ = { $zeta }, se establece en { $time }.
+quarter-car-settling-design-never = Este diseño, ζ = { $zeta }, nunca se establece.
+quarter-car-sensitivity-range = Con la masa suspendida entre { $low } y { $high } (±{ $variation }) y el mismo amortiguador y resorte, ζ va de { $min } a { $max } (nominal { $nominal }); la estimación lineal es de { $linear_min } a { $linear_max }.
+quarter-car-sensitivity-undefined = El intervalo del coeficiente de amortiguamiento no está definido para este diseño.
+quarter-car-sensitivity-inside = El ζ de establecimiento más rápido, { $zeta }, está dentro de este intervalo: las cargas que llevan ζ por debajo de él se establecen notablemente más tarde.
+quarter-car-sensitivity-outside = El ζ de establecimiento más rápido, { $zeta }, está fuera de este intervalo.
+quarter-car-schematic = Cuarto de vehículo en t = { $time }: la carrocería está a { $displacement } del reposo ({ $side ->
+        [above] por encima
+       *[below] por debajo
+    }), carretera fija.
+quarter-car-settling-title = Tiempo de establecimiento en ±{ $band } de x₀ frente a ζ
+quarter-car-axis-zeta = coeficiente de amortiguamiento ζ
+quarter-car-axis-zeta-fastest = coeficiente de amortiguamiento ζ (a trazos: ζ más rápido = { $zeta })
+quarter-car-axis-settling-time = tiempo de establecimiento t_s
+quarter-car-axis-sprung-mass = masa suspendida m
+quarter-car-fastest = ζ más rápido = { $zeta }
+quarter-car-this-design = este diseño
+quarter-car-nominal = nominal
+quarter-car-road = carretera
+quarter-car-band-label = ±{ $band } de x₀
+quarter-car-series-design = este diseño, ζ { $zeta }
+
+### quarter-car-2dof
+
+quarter-car-2dof-describe-motion = Sobre { $road ->
+        [bump] un resalto
+        [step] un escalón
+        [sine] una carretera sinusoidal
+       *[random] una carretera aleatoria
+    } (altura máxima de la carretera { $road_peak }), la carrocería se mueve como mucho { $body } (en { $body_time }) y la rueda { $wheel } (en { $wheel_time }).
+quarter-car-2dof-describe-acceleration = La aceleración de la carrocería alcanza un pico de { $peak } ({ $peak_g } g); en la marcha desde el reposo, de 0 a { $window }, su valor RMS es { $rms }.
+quarter-car-2dof-describe-tyre-lift-off = La deflexión del neumático (rueda sobre la carretera, positiva = neumático descargándose) va de { $low } a { $high }, con un valor RMS de { $rms }; alcanza la deflexión estática { $limit } por primera vez a los { $time }, donde la fuerza del neumático cae a cero y la rueda despega de la carretera: despegues { $lift_offs }; tiempo en el aire { $airborne }.
+quarter-car-2dof-describe-tyre-contact = La deflexión del neumático (rueda sobre la carretera, positiva = neumático descargándose) va de { $low } a { $high }, con un valor RMS de { $rms }; queda por debajo de la deflexión estática, { $limit }, así que el neumático mantiene el contacto.
+quarter-car-2dof-describe-frf = Respuesta en frecuencia por unidad de altura de la carretera, en ejes logarítmicos. La carrocería sigue las ondulaciones lentas (razón 1), tiene un pico de { $body_peak } cerca del rebote de la carrocería, { $body_frequency }, y queda aislada por encima: { $at_20 } a 20 Hz. La deflexión del neumático tiene un pico de { $tyre_peak } cerca del salto de la rueda, { $tyre_frequency }.
+quarter-car-2dof-schematic = Cuarto de vehículo en t = { $time }: carrocería { $body }, rueda { $wheel }, carretera { $road } (dibujadas a una escala común).
+quarter-car-2dof-schematic-title = Esquema
+quarter-car-2dof-axis-height = altura desde el equilibrio
+quarter-car-2dof-axis-acceleration = aceleración z_s″
+quarter-car-2dof-axis-tyre-deflection = deflexión del neumático z_u − u
+quarter-car-2dof-axis-frequency = frecuencia f
+quarter-car-2dof-axis-magnitude = magnitud por unidad de altura de la carretera
+quarter-car-2dof-series-road = carretera u
+quarter-car-2dof-series-wheel = rueda z_u
+quarter-car-2dof-series-body = carrocería z_s
+quarter-car-2dof-series-body-acceleration = aceleración de la carrocería
+quarter-car-2dof-series-rms = ± RMS
+quarter-car-2dof-series-lift-off = despegue (deflexión estática)
+quarter-car-2dof-series-off-road = en el aire
+quarter-car-2dof-series-body-gain = carrocería/carretera
+quarter-car-2dof-series-tyre-gain = defl. neumático/carretera
+quarter-car-2dof-marker-road = carretera
 
 ## Declared strings (generated from the demo declarations)
 

@@ -6,6 +6,7 @@ use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
 use crate::format::si;
 use crate::plot::{curve, Ink};
 use crate::schematic::{mass_spring_damper, MassLabels};
+use crate::t;
 
 pub(super) const SETTLING_TITLE: &str = "Free-response settling time against ζ";
 pub(super) const SENSITIVITY_TITLE: &str = "ζ when the sprung mass varies";
@@ -36,20 +37,24 @@ pub(super) fn settling(r: &Results) -> Figure {
     let band = text::pct(r.car.band_pct);
     // One curve, named by the axes and the title: no legend box to hide it.
     let mut fig = Figure::plot(
-        format!("Settling time into ±{band} of x₀ against ζ"),
-        Axis::linear("damping ratio ζ", "", (0.0, r.sweep.z_hi)),
-        Axis::linear("settling time t_s", "s", (0.0, y_top)),
+        t!("quarter-car-settling-title", band = band),
+        Axis::linear(t!("quarter-car-axis-zeta"), "", (0.0, r.sweep.z_hi)),
+        Axis::linear(t!("quarter-car-axis-settling-time"), "s", (0.0, y_top)),
     )
     .with_line("", points, LineStyle::solid(Ink::Blue, 2.5));
     if let Some(o) = r.optimum {
         fig = fig.with_marker(Marker::cross(
-            format!("fastest ζ = {}", si(o.zeta, "", 3)),
+            t!("quarter-car-fastest", zeta = si(o.zeta, "", 3)),
             (o.zeta, o.settling_time),
             Ink::Vermillion,
         ));
     }
     if let Some(ts) = ts_now {
-        fig = fig.with_marker(Marker::dot("this design", (zeta, ts), Ink::Black));
+        fig = fig.with_marker(Marker::dot(
+            t!("quarter-car-this-design"),
+            (zeta, ts),
+            Ink::Black,
+        ));
     }
     fig.described(text::describe_settling(r))
 }
@@ -76,14 +81,14 @@ pub(super) fn sensitivity(r: &Results) -> Figure {
     );
     let y = padded((m_lo.min(car.m), m_hi.max(car.m)), 0.25);
     let x_label = match z_opt {
-        Some(z) => format!("damping ratio ζ (dashed: fastest ζ = {})", si(z, "", 3)),
-        None => "damping ratio ζ".to_string(),
+        Some(z) => t!("quarter-car-axis-zeta-fastest", zeta = si(z, "", 3)),
+        None => t!("quarter-car-axis-zeta"),
     };
     // No legend box (it would cover the curve): the axes name the curve, labels the rest.
     let mut fig = Figure::plot(
-        SENSITIVITY_TITLE,
+        t!("quarter-car-plot-sensitivity"),
         Axis::linear(x_label, "", (xl, xh)),
-        Axis::linear("sprung mass m", "kg", y),
+        Axis::linear(t!("quarter-car-axis-sprung-mass"), "kg", y),
     )
     .with_line("", points, LineStyle::solid(Ink::Blue, 3.0));
     if let Some(z) = z_opt {
@@ -94,27 +99,32 @@ pub(super) fn sensitivity(r: &Results) -> Figure {
         );
     }
     let dm = text::pct(car.dm_pct);
-    fig.with_marker(Marker::dot("nominal", (zeta, car.m), Ink::Black))
-        .with_marker(Marker::cross(
-            format!("m − {dm}"),
-            (car.zeta_at_mass(m_lo), m_lo),
-            Ink::Blue,
-        ))
-        .with_marker(Marker::cross(
-            format!("m + {dm}"),
-            (car.zeta_at_mass(m_hi), m_hi),
-            Ink::Blue,
-        ))
-        .described(text::describe_sensitivity(r, (m_lo, m_hi)))
+    fig.with_marker(Marker::dot(
+        t!("quarter-car-nominal"),
+        (zeta, car.m),
+        Ink::Black,
+    ))
+    .with_marker(Marker::cross(
+        format!("m − {dm}"),
+        (car.zeta_at_mass(m_lo), m_lo),
+        Ink::Blue,
+    ))
+    .with_marker(Marker::cross(
+        format!("m + {dm}"),
+        (car.zeta_at_mass(m_hi), m_hi),
+        Ink::Blue,
+    ))
+    .described(text::describe_sensitivity(r, (m_lo, m_hi)))
 }
 
 /// The car with its body displaced `x` \[m\] at time `t` \[s\], drawn at `x/x₀` of full travel.
 pub(super) fn schematic(car: &Car, x: f64, t: f64) -> Figure {
+    let road = t!("quarter-car-road");
     let labels = MassLabels {
         mass: "m",
         spring: "k",
         damper: "c",
-        base: "road",
+        base: &road,
     };
     mass_spring_damper(
         x / car.x0.abs().max(1e-12),

@@ -7,7 +7,9 @@ use crate::declare::ReadoutDef;
 pub(super) fn table() -> Vec<ReadoutDef<Results>> {
     let settling = |r: &Results| r.metrics.and_then(|m| m.settling_time);
     vec![
-        ReadoutDef::text("regime", "regime", |r| r.car.sys.regime().key().to_string()),
+        ReadoutDef::text("regime", "regime", |r| {
+            crate::format::regime(r.car.sys.regime())
+        }),
         ReadoutDef::number("wn", "natural frequency ωₙ", "rad/s", 4, |r| {
             r.car.sys.natural_frequency()
         }),

@@ -5,6 +5,7 @@ use super::{text, Results};
 use crate::figure::{finite_extent, Axis, Figure, LineStyle, Marker, MarkerShape, Series};
 use crate::format::si;
 use crate::plot::{curve, Ink};
+use crate::t;
 use zeta_solver::grid::linspace;
 use zeta_solver::{FreeResponse, SecondOrder};
 
@@ -66,7 +67,7 @@ pub(super) fn response(r: &Results) -> Figure {
         let label = if first {
             text::family_legend(member.group)
         } else {
-            ""
+            String::new()
         };
         series.push(Series::new(label, sample(sys), style));
     }
@@ -95,12 +96,12 @@ pub(super) fn response(r: &Results) -> Figure {
     // Named under the lower band line, right of the middle: text hangs below its point, and
     // there the curves are back near rest.
     markers.push(Marker::text(
-        format!("±{} of x₀", text::pct(car.band_pct)),
+        t!("quarter-car-band-label", band = text::pct(car.band_pct)),
         (0.62 * t_end, -h - 0.015 * span),
         Ink::Black,
     ));
     series.push(Series::new(
-        format!("this design, ζ {}", si(car.zeta(), "", 3)),
+        t!("quarter-car-series-design", zeta = si(car.zeta(), "", 3)),
         current,
         LineStyle::solid(Ink::Blue, 3.0),
     ));
@@ -108,9 +109,9 @@ pub(super) fn response(r: &Results) -> Figure {
         series,
         markers,
         ..Figure::plot(
-            RESPONSE_TITLE,
-            Axis::linear("time t", "s", (0.0, t_end)),
-            Axis::linear("displacement x", "mm", y),
+            t!("quarter-car-plot-response"),
+            Axis::linear(t!("axis-time"), "s", (0.0, t_end)),
+            Axis::linear(t!("axis-displacement"), "mm", y),
         )
     }
     .with_origin_lines()

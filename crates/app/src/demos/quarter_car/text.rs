@@ -1,7 +1,9 @@
 //! The quarter-car demo's prose: summary, equation and the figures' text alternatives.
 
-use super::{Member, Results};
-use crate::format::si;
+use super::{Member, Results, FAMILY};
+use crate::format::{self, si};
+use crate::i18n::number;
+use crate::t;
 use zeta_solver::metrics::free::FreeMetrics;
 use zeta_solver::Regime;
 
@@ -25,18 +27,43 @@ pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mo>+</mo><mi>k</mi><mi>x</mi><mo>=</mo><mn>0</mn><mo>,</mo><mspace width=\"1em\"/>\
 <mi>c</mi><mo>=</mo><mn>2</mn><mi>ζ</mi><msqrt><mi>k</mi><mi>m</mi></msqrt></mrow></math>";
 
+/// `v` rounded to two decimals and written with as few as needed (`5`, `2.5`, `0.65`), in
+/// the interface language's digits.
+fn short(v: f64) -> String {
+    let rounded = (v * 100.0).round() / 100.0;
+    let decimals = format!("{rounded}")
+        .split_once('.')
+        .map_or(0, |(_, f)| f.len());
+    number::fixed(rounded, decimals)
+}
+
 /// A percentage as typed on the slider: `5` → `"5 %"`, `2.5` → `"2.5 %"`.
 pub(super) fn pct(v: f64) -> String {
-    format!("{} %", (v * 100.0).round() / 100.0)
+    format!("{} %", short(v))
+}
+
+/// The damping ratios of a family group, in [`FAMILY`] order.
+fn group_zetas(group: &str) -> Vec<String> {
+    FAMILY
+        .iter()
+        .filter(|(g, _)| *g == group)
+        .map(|&(_, z)| short(z))
+        .collect()
 }
 
 /// The legend entry of a family group.
-pub(super) fn family_legend(group: &str) -> &'static str {
+pub(super) fn family_legend(group: &str) -> String {
+    let z = group_zetas(group);
+    let nth = |i: usize| z.get(i).cloned().unwrap_or_default();
     match group {
-        "comfort" => "comfort 0.3, 0.4",
-        "performance" => "performance 0.65, 0.7",
-        "critical" => "critical 1 (×)",
-        _ => "overdamped 2 (●)",
+        "comfort" => t!("quarter-car-legend-comfort", low = nth(0), high = nth(1)),
+        "performance" => t!(
+            "quarter-car-legend-performance",
+            low = nth(0),
+            high = nth(1)
+        ),
+        "critical" => t!("quarter-car-legend-critical", zeta = nth(0)),
+        _ => t!("quarter-car-legend-overdamped", zeta = nth(0)),
     }
 }
 
@@ -44,12 +71,8 @@ pub(super) fn family_legend(group: &str) -> &'static str {
 /// crossings before the settling time; a later rebound inside the band is not counted).
 fn crossings_text(m: &FreeMetrics) -> String {
     match (m.zero_crossings, m.rebound_time) {
-        (0, None) => "does not cross equilibrium".to_string(),
-        (0, Some(_)) => {
-            "settles before crossing equilibrium (its rebound stays inside the band)".to_string()
-        }
-        (1, _) => "crosses equilibrium once before settling".to_string(),
-        (n, _) => format!("crosses equilibrium {n} times before settling"),
+        (0, Some(_)) => t!("quarter-car-crossings-inside-band"),
+        (n, _) => t!("quarter-car-crossings", count = n),
     }
 }
 
@@ -60,119 +83,138 @@ pub(super) fn describe_response(r: &Results) -> String {
     let band = pct(car.band_pct);
     let now = match r.metrics {
         Some(m) => {
-            let settle = m
-                .settling_time
-                .map(|t| {
-                    format!(
-                        "stays within ±{band} of x₀ around rest after {}",
-                        si(t, "s", 3)
-                    )
-                })
-                .unwrap_or_else(|| "does not settle".to_string());
-            let rebound = match m.rebound_time {
-                Some(t) => format!(
-                    "peak rebound {} at {}",
-                    si(100.0 * m.peak_rebound, "%", 3),
-                    si(t, "s", 3)
+            let settling = match m.settling_time {
+                Some(t) => t!(
+                    "quarter-car-settles-after",
+                    band = &band,
+                    time = si(t, "s", 3)
                 ),
-                None => "no rebound".to_string(),
+                None => t!("quarter-car-does-not-settle"),
             };
-            format!(
-                "This design (ζ = {}, {}): {}, {}, {}.",
-                si(car.zeta(), "", 3),
-                regime.key(),
-                crossings_text(&m),
-                settle,
-                rebound
+            let rebound = match m.rebound_time {
+                Some(t) => t!(
+                    "quarter-car-rebound",
+                    rebound = si(100.0 * m.peak_rebound, "%", 3),
+                    time = si(t, "s", 3)
+                ),
+                None => t!("quarter-car-no-rebound"),
+            };
+            t!(
+                "quarter-car-describe-design",
+                zeta = si(car.zeta(), "", 3),
+                regime = format::regime(regime),
+                crossings = crossings_text(&m),
+                settling = settling,
+                rebound = rebound
             )
         }
-        None if regime == Regime::Undamped => format!(
-            "This design (ζ = 0, undamped): oscillates forever between ±{} at {}.",
-            si(car.x0.abs(), "m", 3),
-            si(car.sys.natural_frequency_hz().unwrap_or(0.0), "Hz", 3)
+        None if regime == Regime::Undamped => t!(
+            "quarter-car-describe-undamped",
+            amplitude = si(car.x0.abs(), "m", 3),
+            frequency = si(car.sys.natural_frequency_hz().unwrap_or(0.0), "Hz", 3)
         ),
-        None => format!("This design ({}): does not settle.", regime.key()),
+        None => t!(
+            "quarter-car-describe-unsettled",
+            regime = format::regime(regime)
+        ),
     };
+    let separator = t!("quarter-car-list-separator");
     let fam: Vec<String> = r.family.iter().map(describe_member).collect();
-    format!(
-        "{now} Preset family on this car, settling into ±{band} of x₀: {}.",
-        fam.join("; ")
+    t!(
+        "quarter-car-describe-response",
+        design = now,
+        band = band,
+        family = fam.join(separator.as_str())
     )
+}
+
+/// A family group's name in the interface language.
+fn group_name(group: &str) -> String {
+    t!("quarter-car-group", group = group)
 }
 
 fn describe_member(f: &Member) -> String {
     match f.settling {
-        Some(t) => format!("{} ζ = {} in {}", f.group, si(f.zeta, "", 2), si(t, "s", 3)),
-        None => format!("{} ζ = {} does not settle", f.group, si(f.zeta, "", 2)),
+        Some(t) => t!(
+            "quarter-car-member-settles",
+            group = group_name(f.group),
+            zeta = si(f.zeta, "", 2),
+            time = si(t, "s", 3)
+        ),
+        None => t!(
+            "quarter-car-member-unsettled",
+            group = group_name(f.group),
+            zeta = si(f.zeta, "", 2)
+        ),
     }
+}
+
+/// Two sentences of a description, one after the other.
+fn two_sentences(first: String, second: String) -> String {
+    t!("quarter-car-two-sentences", first = first, second = second)
 }
 
 /// The settling-time plot in words.
 pub(super) fn describe_settling(r: &Results) -> String {
     let band = pct(r.car.band_pct);
-    let zeta = r.car.zeta();
-    let mut description = match r.optimum {
-        Some(o) => format!(
-            "Free-response settling time into ±{band} of x₀ against ζ for this car: fastest \
-             at ζ = {} ({}), just past a jump; it jumps down each time a rebound drops inside the band.",
-            si(o.zeta, "", 3),
-            si(o.settling_time, "s", 3)
+    let zeta = si(r.car.zeta(), "", 3);
+    let curve = match r.optimum {
+        Some(o) => t!(
+            "quarter-car-settling-fastest",
+            band = band,
+            zeta = si(o.zeta, "", 3),
+            time = si(o.settling_time, "s", 3)
         ),
-        None => format!("Free-response settling time into ±{band} of x₀ against ζ."),
+        None => t!("quarter-car-settling-curve", band = band),
     };
-    description.push_str(&match r.metrics.and_then(|m| m.settling_time) {
-        Some(ts) => format!(
-            " This design, ζ = {}, settles in {}.",
-            si(zeta, "", 3),
-            si(ts, "s", 3)
+    let design = match r.metrics.and_then(|m| m.settling_time) {
+        Some(ts) => t!(
+            "quarter-car-settling-design",
+            zeta = zeta,
+            time = si(ts, "s", 3)
         ),
-        None => format!(" This design, ζ = {}, never settles.", si(zeta, "", 3)),
-    });
-    description
+        None => t!("quarter-car-settling-design-never", zeta = zeta),
+    };
+    two_sentences(curve, design)
 }
 
 /// The mass-sensitivity strip in words.
 pub(super) fn describe_sensitivity(r: &Results, (m_lo, m_hi): (f64, f64)) -> String {
     let car = &r.car;
-    let mut description = match r.mass_spread {
-        Some(s) => format!(
-            "With the sprung mass between {} and {} (±{}) and the same damper and spring, ζ \
-             ranges from {} to {} (nominal {}); the linear estimate is {} to {}.",
-            si(m_lo, "kg", 3),
-            si(m_hi, "kg", 3),
-            pct(car.dm_pct),
-            si(s.min, "", 3),
-            si(s.max, "", 3),
-            si(s.nominal, "", 3),
-            si(s.linear_min, "", 3),
-            si(s.linear_max, "", 3)
+    let range = match r.mass_spread {
+        Some(s) => t!(
+            "quarter-car-sensitivity-range",
+            low = si(m_lo, "kg", 3),
+            high = si(m_hi, "kg", 3),
+            variation = pct(car.dm_pct),
+            min = si(s.min, "", 3),
+            max = si(s.max, "", 3),
+            nominal = si(s.nominal, "", 3),
+            linear_min = si(s.linear_min, "", 3),
+            linear_max = si(s.linear_max, "", 3)
         ),
-        None => "The damping-ratio range is undefined for this design.".to_string(),
+        None => t!("quarter-car-sensitivity-undefined"),
     };
-    if let (Some(o), Some(s)) = (r.optimum, r.mass_spread) {
-        let z = o.zeta;
-        description.push_str(&if s.min < z && z < s.max {
-            format!(
-                " The fastest-settling ζ = {} lies inside this range: loads that push ζ below \
-                 it settle markedly later.",
-                si(z, "", 3)
-            )
-        } else {
-            format!(
-                " The fastest-settling ζ = {} lies outside this range.",
-                si(z, "", 3)
-            )
-        });
+    match (r.optimum, r.mass_spread) {
+        (Some(o), Some(s)) => {
+            let z = o.zeta;
+            let optimum = if s.min < z && z < s.max {
+                t!("quarter-car-sensitivity-inside", zeta = si(z, "", 3))
+            } else {
+                t!("quarter-car-sensitivity-outside", zeta = si(z, "", 3))
+            };
+            two_sentences(range, optimum)
+        }
+        _ => range,
     }
-    description
 }
 
 /// The animated car in words.
 pub(super) fn describe_schematic(x: f64, t: f64) -> String {
-    format!(
-        "Quarter car at t = {}: the body is {} from rest ({}), road fixed.",
-        si(t, "s", 3),
-        si(x.abs(), "m", 3),
-        if x > 0.0 { "above" } else { "below" }
+    t!(
+        "quarter-car-schematic",
+        time = si(t, "s", 3),
+        displacement = si(x.abs(), "m", 3),
+        side = if x > 0.0 { "above" } else { "below" }
     )
 }

@@ -5,6 +5,7 @@ use super::run::{Run, FRF_RANGE};
 use super::{text, RoadKind};
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
 use crate::plot::Ink;
+use crate::t;
 use std::f64::consts::TAU;
 use zeta_solver::two_dof::{TwoDof, G};
 use zeta_solver::two_dof_exact::ExactMetrics;
@@ -64,13 +65,25 @@ pub(super) fn motion(run: &Run, t_end: f64, kind: RoadKind) -> Figure {
     let y = range_with_legend(all, 0.05, 0.35);
     let description = text::describe_motion(kind, peak(&road).1, peak(&body), peak(&wheel));
     Figure::plot(
-        MOTION_TITLE,
-        Axis::linear("time t", "s", (0.0, t_end)),
-        Axis::linear("height from equilibrium", "m", y),
+        t!("quarter-car-2dof-plot-motion"),
+        Axis::linear(t!("axis-time"), "s", (0.0, t_end)),
+        Axis::linear(t!("quarter-car-2dof-axis-height"), "m", y),
     )
-    .with_line("road u", road, LineStyle::dotted(Ink::Black, 2.0))
-    .with_line("wheel z_u", wheel, LineStyle::dashed(Ink::Vermillion, 1.8))
-    .with_line("body z_s", body, LineStyle::solid(Ink::Blue, 2.5))
+    .with_line(
+        t!("quarter-car-2dof-series-road"),
+        road,
+        LineStyle::dotted(Ink::Black, 2.0),
+    )
+    .with_line(
+        t!("quarter-car-2dof-series-wheel"),
+        wheel,
+        LineStyle::dashed(Ink::Vermillion, 1.8),
+    )
+    .with_line(
+        t!("quarter-car-2dof-series-body"),
+        body,
+        LineStyle::solid(Ink::Blue, 2.5),
+    )
     .with_origin_lines()
     .described(description)
 }
@@ -92,15 +105,23 @@ pub(super) fn acceleration(
     let rms = m.map(|m| m.rms_body_acceleration);
     let description = text::describe_acceleration(peak, peak / G, m);
     let mut fig = Figure::plot(
-        ACCEL_TITLE,
-        Axis::linear("time t", "s", (0.0, t_end)),
-        Axis::linear("acceleration z_s″", "m/s²", y),
+        t!("quarter-car-2dof-plot-accel"),
+        Axis::linear(t!("axis-time"), "s", (0.0, t_end)),
+        Axis::linear(t!("quarter-car-2dof-axis-acceleration"), "m/s²", y),
     )
-    .with_line("body acceleration", acc, LineStyle::solid(Ink::Blue, 2.0));
+    .with_line(
+        t!("quarter-car-2dof-series-body-acceleration"),
+        acc,
+        LineStyle::solid(Ink::Blue, 2.0),
+    );
     if let Some(r) = rms {
         let style = LineStyle::dashed(Ink::Purple, 1.5);
         fig = fig
-            .with_line("± RMS", vec![(0.0, r), (t_end, r)], style)
+            .with_line(
+                t!("quarter-car-2dof-series-rms"),
+                vec![(0.0, r), (t_end, r)],
+                style,
+            )
             .with_line("", vec![(0.0, -r), (t_end, -r)], style);
     }
     fig.with_origin_lines().described(description)
@@ -136,20 +157,24 @@ pub(super) fn tyre(run: &Run, t_end: f64, static_tyre: f64, m: Option<ExactMetri
     let mut y = padded((lo, top.max(lo + 1e-6)), 0.08);
     y.1 += 0.3 * (y.1 - y.0);
     let mut fig = Figure::plot(
-        TYRE_TITLE,
-        Axis::linear("time t", "s", (0.0, t_end)),
-        Axis::linear("tyre deflection z_u − u", "m", y),
+        t!("quarter-car-2dof-plot-tyre"),
+        Axis::linear(t!("axis-time"), "s", (0.0, t_end)),
+        Axis::linear(t!("quarter-car-2dof-axis-tyre-deflection"), "m", y),
     )
     .with_line("z_u − u", defl, LineStyle::solid(Ink::Blue, 2.0));
     if shows_limit {
         fig = fig.with_line(
-            "lift-off (static deflection)",
+            t!("quarter-car-2dof-series-lift-off"),
             vec![(0.0, static_tyre), (t_end, static_tyre)],
             LineStyle::dashed(Ink::Vermillion, 1.5),
         );
     }
     for (i, (from, to)) in airborne(run).into_iter().enumerate() {
-        let label = if i == 0 { "off the road" } else { "" };
+        let label = if i == 0 {
+            t!("quarter-car-2dof-series-off-road")
+        } else {
+            String::new()
+        };
         fig = fig.with_line(
             label,
             vec![(from, static_tyre), (to, static_tyre)],
@@ -208,13 +233,17 @@ pub(super) fn frf(run: &Run, f_body: f64, f_wheel: f64, sine: Option<f64>) -> Fi
         peak_near(&tyre, f_wheel),
     );
     let mut fig = Figure::plot(
-        FRF_TITLE,
-        Axis::log("frequency f", "Hz", FRF_RANGE),
-        Axis::log("magnitude per unit road height", "", y),
+        t!("quarter-car-2dof-plot-frf"),
+        Axis::log(t!("quarter-car-2dof-axis-frequency"), "Hz", FRF_RANGE),
+        Axis::log(t!("quarter-car-2dof-axis-magnitude"), "", y),
     )
-    .with_line("body/road", body, LineStyle::solid(Ink::Blue, 2.5))
     .with_line(
-        "tyre defl./road",
+        t!("quarter-car-2dof-series-body-gain"),
+        body,
+        LineStyle::solid(Ink::Blue, 2.5),
+    )
+    .with_line(
+        t!("quarter-car-2dof-series-tyre-gain"),
         tyre,
         LineStyle::dashed(Ink::Vermillion, 2.0),
     );
@@ -230,7 +259,11 @@ pub(super) fn frf(run: &Run, f_body: f64, f_wheel: f64, sine: Option<f64>) -> Fi
     }
     if let Some(f) = sine {
         let g = nearest(f).map_or(1.0, |r| clamp_magnitude(r.body.abs()));
-        fig = fig.with_marker(Marker::dot("road", (f, g), Ink::Black));
+        fig = fig.with_marker(Marker::dot(
+            t!("quarter-car-2dof-marker-road"),
+            (f, g),
+            Ink::Black,
+        ));
     }
     fig.described(description)
 }

@@ -6,6 +6,7 @@ use crate::figure::{Axis, Figure, LineStyle, Marker};
 use crate::format::si;
 use crate::plot::{curve, Ink};
 use crate::schematic::{damper, rect, spring};
+use crate::t;
 
 /// Half the drawn travel of a part moved by `reach` \[drawing units\].
 const AMP: f64 = 0.45;
@@ -38,7 +39,7 @@ pub(super) fn car(
     // Road profile: 1 drawing unit per metre along the road, the car moving right.
     let profile = curve((-1.8, 1.8), 61, |x| ground + norm(road(x / speed.max(0.1))));
     let mut fig = Figure::schematic(
-        "Schematic",
+        t!("quarter-car-2dof-schematic-title"),
         Axis::linear("", "", (-1.9, 1.9)),
         Axis::linear("", "", (-0.8, 4.4)),
     )

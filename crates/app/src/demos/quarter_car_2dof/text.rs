@@ -3,6 +3,7 @@
 use super::RoadKind;
 use crate::format::si;
 use crate::spec::Preset;
+use crate::t;
 use zeta_solver::two_dof_exact::ExactMetrics;
 
 pub(super) const SUMMARY: &str =
@@ -45,76 +46,71 @@ pub(super) fn describe_motion(
     (tb, zb): (f64, f64),
     (tw, zw): (f64, f64),
 ) -> String {
-    let road_name = match kind {
-        RoadKind::Bump => "a bump",
-        RoadKind::Step => "a step",
-        RoadKind::Sine => "a sinusoidal road",
-        RoadKind::Random => "a random road",
+    let road = match kind {
+        RoadKind::Bump => "bump",
+        RoadKind::Step => "step",
+        RoadKind::Sine => "sine",
+        RoadKind::Random => "random",
     };
-    format!(
-        "Over {} (largest road height {}), the body moves at most {} (at {}) and the wheel \
-         {} (at {}).",
-        road_name,
-        si(road_peak, "m", 3),
-        si(zb, "m", 3),
-        si(tb, "s", 3),
-        si(zw, "m", 3),
-        si(tw, "s", 3)
+    t!(
+        "quarter-car-2dof-describe-motion",
+        road = road,
+        road_peak = si(road_peak, "m", 3),
+        body = si(zb, "m", 3),
+        body_time = si(tb, "s", 3),
+        wheel = si(zw, "m", 3),
+        wheel_time = si(tw, "s", 3)
     )
 }
 
 /// The acceleration plot in words: peak \[m/s²\], the same in g, and the RMS over the
 /// window.
 pub(super) fn describe_acceleration(peak: f64, peak_g: f64, m: Option<ExactMetrics>) -> String {
-    format!(
-        "Body acceleration peaks at {} ({} g); over the run from rest, 0 to {}, its RMS is {}.",
-        si(peak, "m/s²", 3),
-        si(peak_g, "", 2),
-        si(m.map_or(f64::NAN, |m| m.window), "s", 3),
-        si(m.map_or(f64::NAN, |m| m.rms_body_acceleration), "m/s²", 3)
+    t!(
+        "quarter-car-2dof-describe-acceleration",
+        peak = si(peak, "m/s²", 3),
+        peak_g = si(peak_g, "", 2),
+        window = si(m.map_or(f64::NAN, |m| m.window), "s", 3),
+        rms = si(m.map_or(f64::NAN, |m| m.rms_body_acceleration), "m/s²", 3)
     )
 }
 
 /// The tyre plot in words: range `lo … hi` of the deflection \[m\], its RMS, and when and
 /// for how long the wheel leaves the road.
 pub(super) fn describe_tyre(lo: f64, hi: f64, static_tyre: f64, m: Option<ExactMetrics>) -> String {
-    let rms = m.map_or(f64::NAN, |m| m.rms_tyre_deflection);
-    let lift = match m.and_then(|m| m.first_lift_off.map(|t| (t, m))) {
-        Some((t, m)) => format!(
-            "; it reaches the static deflection {} first at {}, where the tyre force falls to \
-             zero and the wheel leaves the road: lift-offs {}; time off the road {}",
-            si(static_tyre, "m", 3),
-            si(t, "s", 3),
-            m.lift_offs,
-            si(m.airborne_time, "s", 3)
+    let rms = si(m.map_or(f64::NAN, |m| m.rms_tyre_deflection), "m", 3);
+    let (lo, hi, limit) = (si(lo, "m", 3), si(hi, "m", 3), si(static_tyre, "m", 3));
+    match m.and_then(|m| m.first_lift_off.map(|t| (t, m))) {
+        Some((t, m)) => t!(
+            "quarter-car-2dof-describe-tyre-lift-off",
+            low = lo,
+            high = hi,
+            rms = rms,
+            limit = limit,
+            time = si(t, "s", 3),
+            lift_offs = m.lift_offs,
+            airborne = si(m.airborne_time, "s", 3)
         ),
-        None => format!(
-            "; it stays below the static deflection {}, so the tyre keeps contact",
-            si(static_tyre, "m", 3)
+        None => t!(
+            "quarter-car-2dof-describe-tyre-contact",
+            low = lo,
+            high = hi,
+            rms = rms,
+            limit = limit
         ),
-    };
-    format!(
-        "Tyre deflection (wheel above road, positive = tyre unloading) ranges from {} to \
-         {}, RMS {}{}.",
-        si(lo, "m", 3),
-        si(hi, "m", 3),
-        si(rms, "m", 3),
-        lift
-    )
+    }
 }
 
 /// The frequency responses in words: the body's peak `(f, gain)` near body bounce, its
 /// gain at 20 Hz, and the tyre deflection's peak near wheel hop.
 pub(super) fn describe_frf((fb, gb): (f64, f64), at20: f64, (fw, gw): (f64, f64)) -> String {
-    format!(
-        "Frequency response per unit road height, on log axes. The body follows slow road \
-         waves (ratio 1), peaks at {} near body bounce {}, and is isolated above: {} at \
-         20 Hz. The tyre deflection peaks at {} near wheel hop {}.",
-        si(gb, "", 3),
-        si(fb, "Hz", 3),
-        si(at20, "", 2),
-        si(gw, "", 3),
-        si(fw, "Hz", 3)
+    t!(
+        "quarter-car-2dof-describe-frf",
+        body_peak = si(gb, "", 3),
+        body_frequency = si(fb, "Hz", 3),
+        at_20 = si(at20, "", 2),
+        tyre_peak = si(gw, "", 3),
+        tyre_frequency = si(fw, "Hz", 3)
     )
 }
 
@@ -125,12 +121,12 @@ pub(super) fn frequency_label(name: &str, f: f64) -> String {
 
 /// The schematic in words.
 pub(super) fn describe_car(t: f64, body: f64, wheel: f64, road: f64) -> String {
-    format!(
-        "Quarter car at t = {}: body {}, wheel {}, road {} (drawn to a common scale).",
-        si(t, "s", 3),
-        si(body, "m", 3),
-        si(wheel, "m", 3),
-        si(road, "m", 3)
+    t!(
+        "quarter-car-2dof-schematic",
+        time = si(t, "s", 3),
+        body = si(body, "m", 3),
+        wheel = si(wheel, "m", 3),
+        road = si(road, "m", 3)
     )
 }
 
