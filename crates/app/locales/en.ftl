@@ -308,6 +308,50 @@ quarter-car-2dof-series-off-road = off the road
 quarter-car-2dof-series-body-gain = body/road
 quarter-car-2dof-series-tyre-gain = tyre defl./road
 quarter-car-2dof-marker-road = road
+### paper
+
+paper-unavailable = this figure's demo is not available
+paper-figure = Figure { $number }
+paper-section = Section { $number }
+paper-section-figure = Section { $section }, Figure { $figure }
+paper-near-agrees = The demo computes { $computed }, within the rounding of the paper's { $claimed } (tolerance ±{ $tolerance }).
+paper-near-differs = The demo computes { $computed }, not the paper's { $claimed } (tolerance ±{ $tolerance }).
+paper-below-agrees = The demo computes { $computed }, which is below the paper's bound of { $bound }.
+paper-below-differs = The demo computes { $computed }, which is above the paper's bound of { $bound }.
+paper-range = { $low } to { $high }
+paper-range-agrees = The demo computes { $low } to { $high }, as the paper says.
+paper-range-differs = The demo computes { $low } to { $high }, not the paper's range.
+paper-peak = The maximum of |H(r)| found by search lies at r = { $found }, where the formula gives { $formula }.
+paper-slope = Over the paper's step h = { $step } and five halvings (down to { $smallest }), the fitted slope is { $slope }.
+paper-reason-context = { $verdict } { $context }
+paper-exhibit-fig1a = Free response of the quarter car (m = 300 kg, k = 24 kN/m, x₀ = 60 mm) for comfort, performance, critical and overdamped settings.
+paper-exhibit-fig1b = Settling time against damping ratio, with its minimum.
+paper-exhibit-fig2a = Current in the series RLC loop (L = 0.5 H, C = 20 mF, V₀ = 12 V) as the resistance spans the regimes.
+paper-exhibit-fig2b = Capacitor voltage of the same loop.
+paper-exhibit-fig3a = Magnitude of the frequency response for a family of damping ratios.
+paper-exhibit-fig3b = Phase of the frequency response.
+paper-exhibit-fig4a = Euler and RK4 against the exact response of a lightly damped oscillator (ζ = 0.05, ωₙ = 2 rad/s) at h = 0.3 s.
+paper-exhibit-fig4b = Maximum error against step size on log–log axes, with slopes.
+paper-exhibit-fig5 = One equation in many machines: mechanical, electrical and other systems with the same a·y'' + b·y' + c·y = f(t).
+paper-exhibit-table1 = The mechanical–electrical analogy: mass ↔ inductance, damper ↔ resistance, spring ↔ 1/capacitance.
+paper-exhibit-table2 = The damping regimes: condition, roots, behaviour and examples.
+paper-exhibit-table3 = The integration methods compared: error, order and stability at one step size.
+paper-claim-fig1-zeta-optimum = A damping ratio of about 0.7 gives the shortest settling time (5 % band).
+paper-claim-sec3-natural-frequency = The quarter car's natural frequency is about 8.9 rad/s (about 1.4 Hz).
+paper-claim-sec4-critical-resistance = The loop is critically damped at R = 2√(L/C) = 10 Ω.
+paper-claim-fig3-q-factor = Q = 10 at ζ = 0.05.
+paper-claim-fig3-q-factor-light = Q = 50 at ζ = 0.01.
+paper-claim-sec5-peak-frequency = The response peaks at ω = ωₙ√(1 − 2ζ²), just below ωₙ (checked at ζ = 0.1).
+paper-claim-fig4-euler-error = At h = 0.3 s Euler's maximum error is about 0.08.
+paper-claim-fig4-rk4-error = At h = 0.3 s RK4's maximum error is below 0.001.
+paper-claim-fig4-euler-slope = Euler's error falls with slope ≈ 1 on the log–log plot.
+paper-claim-sec7-mass-tolerance = A ±10 % uncertainty in the sprung mass moves ζ = 1.0 to between 0.91 and 1.10.
+paper-claim-fig1-zeta-optimum-context = For a 2 % band the fastest-settling ζ is { $value } instead.
+paper-claim-sec3-natural-frequency-context = In hertz: fₙ = { $value }.
+paper-claim-fig4-euler-error-context = Euler is unstable at this step: |1 + hλ| = { $value } per step, so its error grows without bound.
+paper-claim-fig4-rk4-error-context = RK4 is stable at this step (|R(hλ)| = { $value } per step), yet over the whole window its error exceeds the bound.
+paper-claim-fig4-euler-slope-context = The order fitted over small steps, where the error is asymptotic, is { $value }.
+paper-claim-sec7-mass-tolerance-context = ζ = c/(2√(km)) varies as 1/√m, so a ±10 % mass moves it by only about ±5 % (ωₙ drops to { $value } at +10 %).
 
 ## Declared strings (generated from the demo declarations)
 

@@ -300,6 +300,50 @@ quarter-car-2dof-series-off-road = en el aire
 quarter-car-2dof-series-body-gain = carrocería/carretera
 quarter-car-2dof-series-tyre-gain = defl. neumático/carretera
 quarter-car-2dof-marker-road = carretera
+### paper
+
+paper-unavailable = la demostración de esta figura no está disponible
+paper-figure = Figura { $number }
+paper-section = Sección { $number }
+paper-section-figure = Sección { $section }, figura { $figure }
+paper-near-agrees = La demostración calcula { $computed }, que coincide con el valor del artículo, { $claimed }, dentro del redondeo (tolerancia ±{ $tolerance }).
+paper-near-differs = La demostración calcula { $computed }, y no el valor del artículo, { $claimed } (tolerancia ±{ $tolerance }).
+paper-below-agrees = La demostración calcula { $computed }, por debajo de la cota de { $bound } del artículo.
+paper-below-differs = La demostración calcula { $computed }, por encima de la cota de { $bound } del artículo.
+paper-range = { $low } a { $high }
+paper-range-agrees = La demostración calcula de { $low } a { $high }, como dice el artículo.
+paper-range-differs = La demostración calcula de { $low } a { $high }, y no el intervalo del artículo.
+paper-peak = El máximo de |H(r)| hallado por búsqueda está en r = { $found }, donde la fórmula da { $formula }.
+paper-slope = Con el paso del artículo, h = { $step }, y cinco reducciones a la mitad (hasta { $smallest }), la pendiente ajustada es { $slope }.
+paper-reason-context = { $verdict } { $context }
+paper-exhibit-fig1a = Respuesta libre del cuarto de vehículo (m = 300 kg, k = 24 kN/m, x₀ = 60 mm) con los ajustes de confort, prestaciones, crítico y sobreamortiguado.
+paper-exhibit-fig1b = Tiempo de establecimiento frente al coeficiente de amortiguamiento, con su mínimo.
+paper-exhibit-fig2a = Corriente en el circuito RLC en serie (L = 0,5 H, C = 20 mF, V₀ = 12 V) mientras la resistencia recorre los regímenes.
+paper-exhibit-fig2b = Tensión del condensador del mismo circuito.
+paper-exhibit-fig3a = Módulo de la respuesta en frecuencia para una familia de coeficientes de amortiguamiento.
+paper-exhibit-fig3b = Fase de la respuesta en frecuencia.
+paper-exhibit-fig4a = Euler y RK4 frente a la respuesta exacta de un oscilador poco amortiguado (ζ = 0,05, ωₙ = 2 rad/s) con h = 0,3 s.
+paper-exhibit-fig4b = Error máximo frente al paso en ejes log–log, con las pendientes.
+paper-exhibit-fig5 = Una ecuación en muchas máquinas: sistemas mecánicos, eléctricos y de otros tipos con la misma ecuación a·y'' + b·y' + c·y = f(t).
+paper-exhibit-table1 = La analogía mecánico–eléctrica: masa ↔ inductancia, amortiguador ↔ resistencia, resorte ↔ 1/capacidad.
+paper-exhibit-table2 = Los regímenes de amortiguamiento: condición, raíces, comportamiento y ejemplos.
+paper-exhibit-table3 = Los métodos de integración comparados: error, orden y estabilidad con un mismo paso.
+paper-claim-fig1-zeta-optimum = Un coeficiente de amortiguamiento de alrededor de 0,7 da el menor tiempo de establecimiento (banda del 5 %).
+paper-claim-sec3-natural-frequency = La frecuencia natural del cuarto de vehículo es de unos 8,9 rad/s (unos 1,4 Hz).
+paper-claim-sec4-critical-resistance = El circuito tiene amortiguamiento crítico con R = 2√(L/C) = 10 Ω.
+paper-claim-fig3-q-factor = Q = 10 con ζ = 0,05.
+paper-claim-fig3-q-factor-light = Q = 50 con ζ = 0,01.
+paper-claim-sec5-peak-frequency = La respuesta tiene su pico en ω = ωₙ√(1 − 2ζ²), justo por debajo de ωₙ (comprobado con ζ = 0,1).
+paper-claim-fig4-euler-error = Con h = 0,3 s, el error máximo de Euler es de unos 0,08.
+paper-claim-fig4-rk4-error = Con h = 0,3 s, el error máximo de RK4 es menor que 0,001.
+paper-claim-fig4-euler-slope = El error de Euler cae con pendiente ≈ 1 en el gráfico log–log.
+paper-claim-sec7-mass-tolerance = Una incertidumbre de ±10 % en la masa suspendida lleva ζ = 1,0 a un valor entre 0,91 y 1,10.
+paper-claim-fig1-zeta-optimum-context = Con una banda del 2 %, el ζ que se establece más rápido es, en cambio, { $value }.
+paper-claim-sec3-natural-frequency-context = En hercios: fₙ = { $value }.
+paper-claim-fig4-euler-error-context = Euler es inestable con este paso: |1 + hλ| = { $value } por paso, así que su error crece sin límite.
+paper-claim-fig4-rk4-error-context = RK4 es estable con este paso (|R(hλ)| = { $value } por paso), pero en toda la ventana su error supera la cota.
+paper-claim-fig4-euler-slope-context = El orden ajustado con pasos pequeños, donde el error es asintótico, es { $value }.
+paper-claim-sec7-mass-tolerance-context = ζ = c/(2√(km)) varía como 1/√m, así que una variación de ±10 % en la masa lo mueve solo alrededor de un ±5 % (ωₙ baja a { $value } con +10 %).
 
 ## Declared strings (generated from the demo declarations)
 

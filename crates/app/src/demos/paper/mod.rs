@@ -45,9 +45,9 @@ impl Results {
     }
 }
 
-/// A count as a readout: the number and its plain text.
+/// A count as a readout: the number and its text in the interface language's digits.
 fn count(n: usize) -> Option<(f64, String)> {
-    Some((n as f64, n.to_string()))
+    Some((n as f64, crate::i18n::number::fixed(n as f64, 0)))
 }
 
 /// The thumbnail of exhibit `id`: its demo's plot, or the demo's primary plot.
@@ -65,12 +65,12 @@ fn thumbnail(e: &tour::Exhibit, runs: &mut verdict::Runs) -> Figure {
     match drawn {
         Some(fig) => fig,
         None => Figure::schematic(
-            e.place,
+            verdict::place(e),
             Axis::linear("", "", (0.0, 1.0)),
             Axis::linear("", "", (0.0, 1.0)),
         )
-        .with_marker(Marker::text(text::UNAVAILABLE, (0.5, 0.5), Ink::Black))
-        .described(text::UNAVAILABLE),
+        .with_marker(Marker::text(text::unavailable(), (0.5, 0.5), Ink::Black))
+        .described(text::unavailable()),
     }
 }
 

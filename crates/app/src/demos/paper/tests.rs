@@ -93,10 +93,69 @@ fn every_link_opens_a_registered_demo_without_notices() {
     assert_eq!(t.exhibits.len(), EXHIBITS.len());
 }
 
+/// The tour in language `tag` (its catalogue loaded from `ftl`), English restored
+/// afterwards; with the ids that catalogue lacked while the tour was built.
+fn tour_in(tag: &str, ftl: &str) -> (Tour, Vec<String>) {
+    // A syntax error elsewhere in the file shows here as missing ids of ours, if any.
+    let _ = crate::i18n::load(tag, ftl);
+    crate::i18n::set_language(&[tag]);
+    crate::i18n::take_missing();
+    let t = tour();
+    let missing = crate::i18n::take_missing();
+    crate::i18n::set_language(&["en"]);
+    (t, missing)
+}
+
+fn spanish_tour() -> (Tour, Vec<String>) {
+    tour_in("es", include_str!("../../../locales/es.ftl"))
+}
+
 #[test]
-fn the_tour_translates_into_spanish_without_english_left() {
-    use crate::i18n::{tr, Lang};
-    let es = tour().translated(|s| tr(Lang::Es, s).into_owned());
+fn every_language_builds_the_whole_tour_from_its_own_catalogue() {
+    let en = tour();
+    for (tag, ftl) in [
+        ("fr", include_str!("../../../locales/fr.ftl")),
+        ("pt-BR", include_str!("../../../locales/pt-BR.ftl")),
+        ("zh-CN", include_str!("../../../locales/zh-CN.ftl")),
+    ] {
+        let (t, missing) = tour_in(tag, ftl);
+        let ours: Vec<_> = missing
+            .iter()
+            .filter(|id| id.starts_with("paper-"))
+            .collect();
+        assert!(ours.is_empty(), "{tag}.ftl lacks {ours:?}");
+        for (e, s) in en.exhibits.iter().zip(&t.exhibits) {
+            assert_ne!(e.shows, s.shows, "{tag}: {}", e.id);
+        }
+        for (e, s) in en.claims.iter().zip(&t.claims) {
+            assert_eq!((e.id, &e.link, e.verdict), (s.id, &s.link, s.verdict));
+            assert_ne!(e.says, s.says, "{tag}: {}", e.id);
+            assert_ne!(e.reason, s.reason, "{tag}: {}", e.id);
+        }
+    }
+}
+
+#[test]
+fn the_tour_is_built_in_spanish_with_no_english_left() {
+    let (es, missing) = spanish_tour();
+    let en = tour();
+    let ours: Vec<_> = missing
+        .iter()
+        .filter(|id| id.starts_with("paper-"))
+        .collect();
+    assert!(ours.is_empty(), "es.ftl lacks {ours:?}");
+    // Every sentence of the tour is the catalogue's, not the English one.
+    for (e, s) in en.exhibits.iter().zip(&es.exhibits) {
+        assert_eq!((e.id, &e.link), (s.id, &s.link));
+        assert_ne!(e.place, s.place, "{}", e.id);
+        assert_ne!(e.shows, s.shows, "{}", e.id);
+    }
+    for (e, s) in en.claims.iter().zip(&es.claims) {
+        assert_eq!((e.id, &e.link, e.verdict), (s.id, &s.link, s.verdict));
+        assert_ne!(e.place, s.place, "{}", e.id);
+        assert_ne!(e.says, s.says, "{}", e.id);
+        assert_ne!(e.reason, s.reason, "{}", e.id);
+    }
     let english = [
         "The demo",
         "paper's",
@@ -112,29 +171,34 @@ fn the_tour_translates_into_spanish_without_english_left() {
         "instead",
         "within the",
         "found by",
+        " to ",
     ];
     let texts = es.exhibits.iter().flat_map(|e| [&e.place, &e.shows]).chain(
         es.claims
             .iter()
-            .flat_map(|c| [&c.place, &c.says, &c.reason]),
+            .flat_map(|c| [&c.place, &c.says, &c.claimed, &c.computed, &c.reason]),
     );
     for text in texts {
         for word in english {
             assert!(!text.contains(word), "untranslated {word:?} in {text:?}");
         }
     }
-    // Numbers take the decimal comma; ids and links stay as they are.
-    let euler = es
-        .claims
-        .iter()
-        .find(|c| c.id == "fig4-euler-error")
-        .unwrap();
+    // A few known places, word for word.
+    assert_eq!(es.exhibits[0].place, "Figura 1(a)");
+    let euler = claim(&es, "fig4-euler-error");
+    assert_eq!(euler.place, "Sección 6.5, figura 4(a)");
     let g = testing::run("integrators", "zeta=0.05&wn=2&h=0.3");
-    let growth = testing::text(&g, "growth_euler").replace('.', ",");
+    let growth = testing::text(&g, "growth_euler");
     assert!(
-        euler.reason.contains(&growth),
-        "{growth} in {}",
+        euler.reason.starts_with("La demostración calcula")
+            && euler.reason.contains(&format!(
+                "Euler es inestable con este paso: |1 + hλ| = {growth} por paso"
+            )),
+        "{}",
         euler.reason
     );
-    assert!(euler.link.contains("h=0.3"), "{}", euler.link);
+    let mass = claim(&es, "sec7-mass-tolerance");
+    assert!(mass.claimed.contains(" a "), "{}", mass.claimed);
+    // English again once the language is restored.
+    assert_eq!(tour(), en);
 }

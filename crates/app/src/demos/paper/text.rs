@@ -1,5 +1,7 @@
 //! The tour's prose.
 
+use crate::t;
+
 pub(super) const SUMMARY: &str = "Zeta Lab was built from one paper on second-order differential \
 equations in mechanical and electrical systems (Ihenacho, Samuel, Okechukwu et al., Science \
 Publishing Group, 2026). Here is every figure and \
@@ -7,4 +9,7 @@ table of it, drawn live by the demo that reproduces it, and every number it stat
 each claim shows the paper's value, the value the app computes, and a verdict. Follow a link \
 to open the demo in exactly that state.";
 
-pub(super) const UNAVAILABLE: &str = "this figure's demo is not available";
+/// The thumbnail's text when its demo is not registered.
+pub(super) fn unavailable() -> String {
+    t!("paper-unavailable")
+}

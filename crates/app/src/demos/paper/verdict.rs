@@ -1,11 +1,14 @@
 //! Checks each claim against the demo that reproduces it. The computed value is the
 //! linked demo's own readout (so the link shows exactly the number the tour states), or a
-//! solver computation where the claim is about a formula or a slope.
+//! solver computation where the claim is about a formula or a slope. Every sentence is a
+//! message of the catalogues, built in the interface language.
 
 use super::tour::{Check, ClaimDef, Exhibit};
 use crate::demos::{create, Frame};
 use crate::format::si;
+use crate::i18n::declared::{self, slug};
 use crate::params::resolve_query;
+use crate::t;
 use serde::Serialize;
 use zeta_solver::integrate::analysis::{fit_order, max_error};
 use zeta_solver::integrate::{Euler, FixedStep, Linear2};
@@ -68,8 +71,9 @@ pub struct Tour {
 }
 
 impl Tour {
-    /// The tour with every human string passed through `tr` (the page's language); ids,
-    /// links and verdicts unchanged.
+    /// The tour with every human string passed through `tr`; ids, links and verdicts
+    /// unchanged. The tour is already built in the interface language; this remains
+    /// only for callers that still pass strings through the old text-matched catalogue.
     pub fn translated(&self, tr: impl Fn(&str) -> String) -> Tour {
         Tour {
             exhibits: self
@@ -134,12 +138,17 @@ fn readout(frame: &Frame, key: &str) -> Option<(f64, String)> {
     Some((r.data_value.parse().ok()?, r.text.clone()))
 }
 
+/// The exhibit's place in the interface language: its thumbnail's declared plot title.
+pub(super) fn place(e: &Exhibit) -> String {
+    declared::tr(&format!("paper-plot-{}", slug(e.id)), e.place)
+}
+
 /// The exhibit's entry in the tour.
 pub(super) fn exhibit(e: &Exhibit) -> ExhibitView {
     ExhibitView {
         id: e.id,
-        place: e.place.to_string(),
-        shows: e.shows.to_string(),
+        place: place(e),
+        shows: (e.shows)(),
         link: link(e.demo, e.query),
     }
 }
@@ -174,7 +183,7 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
     let frame = runs.get(def.demo, def.query)?;
     // The paper's numbers carry two or three digits.
     let fmt = |v: f64| si(v, def.unit, 3);
-    let (claimed, computed, agrees, mut reason) = match def.check {
+    let (claimed, computed, agrees, why) = match def.check {
         Check::Near {
             readout: key,
             claimed,
@@ -182,17 +191,23 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
         } => {
             let (v, shown) = readout(frame, key)?;
             let agrees = (v - claimed).abs() <= tol;
-            let relation = if agrees {
-                "within the rounding of"
+            let (paper, tolerance) = (fmt(claimed), si(tol, def.unit, 2));
+            let why = if agrees {
+                t!(
+                    "paper-near-agrees",
+                    computed = &shown,
+                    claimed = &paper,
+                    tolerance = tolerance
+                )
             } else {
-                "not"
+                t!(
+                    "paper-near-differs",
+                    computed = &shown,
+                    claimed = &paper,
+                    tolerance = tolerance
+                )
             };
-            let why = format!(
-                "The demo computes {shown}, {relation} the paper's {} (tolerance ±{}).",
-                fmt(claimed),
-                si(tol, def.unit, 2)
-            );
-            (fmt(claimed), shown, agrees, why)
+            (paper, shown, agrees, why)
         }
         Check::Below {
             readout: key,
@@ -200,11 +215,11 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
         } => {
             let (v, shown) = readout(frame, key)?;
             let agrees = v < bound;
-            let relation = if agrees { "below" } else { "above" };
-            let why = format!(
-                "The demo computes {shown}, which is {relation} the paper's bound of {}.",
-                fmt(bound)
-            );
+            let why = if agrees {
+                t!("paper-below-agrees", computed = &shown, bound = fmt(bound))
+            } else {
+                t!("paper-below-differs", computed = &shown, bound = fmt(bound))
+            };
             (format!("< {}", fmt(bound)), shown, agrees, why)
         }
         Check::Range {
@@ -215,39 +230,39 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
         } => {
             let ((a, a_text), (b, b_text)) = (readout(frame, lo)?, readout(frame, hi)?);
             let agrees = (a - claimed.0).abs() <= tol && (b - claimed.1).abs() <= tol;
-            let computed = format!("{a_text} to {b_text}");
-            let relation = if agrees {
-                ", as the paper says"
+            let computed = t!("paper-range", low = &a_text, high = &b_text);
+            let why = if agrees {
+                t!("paper-range-agrees", low = a_text, high = b_text)
             } else {
-                ", not the paper's range"
+                t!("paper-range-differs", low = a_text, high = b_text)
             };
-            let why = format!("The demo computes {computed}{relation}.");
-            let claimed = format!("{} to {}", fmt(claimed.0), fmt(claimed.1));
+            let claimed = t!("paper-range", low = fmt(claimed.0), high = fmt(claimed.1));
             (claimed, computed, agrees, why)
         }
         Check::PeakFormula { zeta, tol } => {
             let formula = frf::peak(zeta)?.ratio;
             let (found, _) = maximise(|r| frf::magnitude(r, zeta), 0.0, 2.0)?;
             let agrees = (found - formula).abs() <= tol;
-            let why = format!(
-                "The maximum of |H(r)| found by search lies at r = {}, where the formula gives {}.",
-                si(found, "", 6),
-                si(formula, "", 6)
+            let why = t!(
+                "paper-peak",
+                found = si(found, "", 6),
+                formula = si(formula, "", 6)
             );
             (si(formula, "", 6), si(found, "", 6), agrees, why)
         }
         Check::Slope { claimed, tol } => {
             let (slope, h_min, h_max) = euler_slope(def.query)?;
             let agrees = (slope - claimed).abs() <= tol;
-            let why = format!(
-                "Over the paper's step h = {} and five halvings (down to {}), the fitted slope is {}.",
-                si(h_max, "s", 3),
-                si(h_min, "s", 3),
-                si(slope, "", 3)
+            let why = t!(
+                "paper-slope",
+                step = si(h_max, "s", 3),
+                smallest = si(h_min, "s", 3),
+                slope = si(slope, "", 3)
             );
             (fmt(claimed), si(slope, "", 3), agrees, why)
         }
     };
+    let mut reason = why;
     if let Some(ctx) = &def.context {
         let query = if ctx.query.is_empty() {
             def.query
@@ -255,15 +270,19 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
             ctx.query
         };
         if let Some((_, shown)) = readout(runs.get(def.demo, query)?, ctx.readout) {
-            reason.push(' ');
-            reason.push_str(&ctx.sentence.replacen("{}", &shown, 1));
+            // Two sentences: the catalogue decides how they join (a space, or none).
+            reason = t!(
+                "paper-reason-context",
+                verdict = &reason,
+                context = (ctx.sentence)(shown)
+            );
         }
     }
     Some(ClaimView {
         id: def.id,
-        place: def.place.to_string(),
+        place: def.place.text(),
         beside: def.beside,
-        says: def.says.to_string(),
+        says: (def.says)(),
         link: link(def.demo, def.query),
         claimed,
         computed,
