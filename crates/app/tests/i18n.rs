@@ -1,344 +1,18 @@
-//! Every string a demo shows has a Spanish translation.
-//!
-//! * Static strings of a spec (title, summary, labels, choice options, readout labels, plot
-//!   titles, presets, table caption, columns and cells) must be whole entries of the
-//!   catalogue, so they are translated exactly; strings of symbols and units only (`N·s/m`,
-//!   `ζ = 1`) are exempt and must come out unchanged.
-//! * Generated strings (figure titles, axes, legends, markers, descriptions, text readouts)
-//!   are computed for the defaults, every preset, every choice option and toggle state and
-//!   both ends of every slider; after translation they must contain no English word from
-//!   [`ENGLISH`].
-//!
-//! When a test fails, its message lists every missing string: add them to
-//! `crates/app/src/i18n/es.rs` (whole entries for fixed strings, phrases for the fixed
-//! fragments of `format!`-built ones). `ZETA_I18N_DUMP=1 cargo test -p zeta-app --test i18n
-//! -- --nocapture` prints every generated string with its translation.
+//! Every string a demo shows is a message of every language, checked by id: each
+//! catalogue is loaded from `crates/app/locales/`, every demo is run at its defaults,
+//! every preset, every option and toggle and both ends of every slider, and the ids the
+//! catalogue lacked ([`zeta_app::i18n::take_missing`]) must be none. In the accented
+//! pseudo-locale `en-XA`, which changes every letter of every message, a run of four
+//! plain ASCII letters in a generated string is text that bypassed the catalogues.
 #![cfg(not(target_arch = "wasm32"))]
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use std::collections::BTreeSet;
 use zeta_app::demos::{self, Demo};
 use zeta_app::figure::Figure;
-use zeta_app::i18n::{has_whole, tr, Lang};
+use zeta_app::i18n::{self, LOCALES};
 use zeta_app::params::Params;
 use zeta_app::spec::{DemoSpec, Kind};
 
-/// English words that must not survive translation: a maximal run of ASCII letters of
-/// length ≥ 4 found here (case-insensitive) is a leftover. Symbols (`x(t)`, `ωₙ`), units
-/// and numbers are never in this list, so they pass.
-const ENGLISH: &[&str] = &[
-    // Function words.
-    "about",
-    "above",
-    "after",
-    "again",
-    "against",
-    "along",
-    "also",
-    "around",
-    "away",
-    "because",
-    "been",
-    "before",
-    "behind",
-    "below",
-    "beside",
-    "between",
-    "beyond",
-    "both",
-    "each",
-    "every",
-    "from",
-    "have",
-    "here",
-    "into",
-    "less",
-    "more",
-    "most",
-    "much",
-    "near",
-    "never",
-    "none",
-    "once",
-    "only",
-    "over",
-    "past",
-    "same",
-    "than",
-    "that",
-    "their",
-    "them",
-    "then",
-    "there",
-    "these",
-    "they",
-    "this",
-    "those",
-    "through",
-    "till",
-    "times",
-    "twice",
-    "under",
-    "until",
-    "upon",
-    "very",
-    "when",
-    "where",
-    "which",
-    "while",
-    "whose",
-    "will",
-    "with",
-    "within",
-    "without",
-    "would",
-    "your",
-    // Verbs.
-    "does",
-    "drops",
-    "falls",
-    "grows",
-    "keeps",
-    "leaves",
-    "lies",
-    "lift",
-    "lifts",
-    "makes",
-    "moves",
-    "reaches",
-    "rises",
-    "settle",
-    "settles",
-    "settling",
-    "shows",
-    "stays",
-    "starts",
-    "swing",
-    "swings",
-    "takes",
-    "using",
-    "decays",
-    "decaying",
-    "growing",
-    "oscillates",
-    "oscillating",
-    "follows",
-    "crosses",
-    "peaks",
-    "driven",
-    "drive",
-    "drives",
-    "holds",
-    "loses",
-    "gains",
-    "shown",
-    "means",
-    "gives",
-    // Nouns and adjectives of the domain.
-    "acceleration",
-    "amplitude",
-    "analogy",
-    "axis",
-    "axes",
-    "band",
-    "bandwidth",
-    "body",
-    "bump",
-    "capacitor",
-    "charge",
-    "circuit",
-    "clipped",
-    "coefficient",
-    "comfort",
-    "contact",
-    "critical",
-    "critically",
-    "current",
-    "curve",
-    "damped",
-    "damper",
-    "damping",
-    "decay",
-    "default",
-    "deflection",
-    "design",
-    "displacement",
-    "divergent",
-    "effect",
-    "electrical",
-    "energy",
-    "envelope",
-    "equilibrium",
-    "excitation",
-    "flutter",
-    "force",
-    "free",
-    "frequency",
-    "gain",
-    "half",
-    "hardening",
-    "height",
-    "imaginary",
-    "inductor",
-    "initial",
-    "input",
-    "left",
-    "length",
-    "level",
-    "limit",
-    "line",
-    "linear",
-    "load",
-    "loss",
-    "magnitude",
-    "mass",
-    "mechanical",
-    "mode",
-    "model",
-    "negative",
-    "negatively",
-    "nonlinear",
-    "number",
-    "output",
-    "overdamped",
-    "overshoot",
-    "peak",
-    "phase",
-    "plane",
-    "pole",
-    "poles",
-    "position",
-    "power",
-    "quality",
-    "random",
-    "ratio",
-    "rebound",
-    "regime",
-    "resistor",
-    "resonance",
-    "response",
-    "rest",
-    "right",
-    "ride",
-    "road",
-    "roots",
-    "schematic",
-    "settling",
-    "sine",
-    "slow",
-    "softening",
-    "speed",
-    "spring",
-    "stable",
-    "static",
-    "step",
-    "stiffness",
-    "suspension",
-    "system",
-    "time",
-    "tire",
-    "transmissibility",
-    "travel",
-    "tyre",
-    "undamped",
-    "underdamped",
-    "unstable",
-    "unsprung",
-    "sprung",
-    "value",
-    "velocity",
-    "voltage",
-    "wheel",
-    "wing",
-    "zero",
-    "forced",
-    "steady",
-    "state",
-    "transient",
-    "shift",
-    "point",
-    "region",
-    "first",
-    "second",
-    "upper",
-    "lower",
-    "high",
-    "highest",
-    "largest",
-    "smallest",
-    "lowest",
-    "fast",
-    "faster",
-    "slower",
-    "small",
-    "large",
-    "both",
-    "case",
-    "mean",
-    "root",
-    "square",
-    "pitch",
-    "plunge",
-    "torsion",
-    "bending",
-    "airspeed",
-    "onset",
-    "stiff",
-    "soft",
-    "trace",
-    "marker",
-    "sweep",
-    "frame",
-    "drawn",
-    "equal",
-    "twice",
-    "half",
-    "exact",
-    "numerical",
-    "simulation",
-    "approximation",
-    "backbone",
-    "jump",
-    "jumps",
-    "branch",
-    "branches",
-    "cubic",
-    "duffing",
-    "hysteresis",
-    "still",
-    "grow",
-    "above",
-    "hits",
-    "crossing",
-    "crossings",
-    "reaching",
-    "since",
-    "same",
-    "yes",
-];
-
-/// Every static string of the spec that the page shows.
-fn static_strings(spec: &DemoSpec) -> Vec<&'static str> {
-    let mut out = vec![spec.title, spec.summary];
-    for p in &spec.params {
-        out.push(p.label);
-        out.extend(p.options.iter().map(|o| o.label));
-    }
-    out.extend(spec.readouts.iter().map(|r| r.label));
-    out.extend(spec.plots.iter().map(|p| p.title));
-    out.extend(spec.presets.iter().map(|p| p.label));
-    if let Some(t) = &spec.table {
-        out.push(t.caption);
-        out.extend(t.columns.iter().copied());
-        for (_, cells) in &t.rows {
-            out.extend(cells.iter().copied());
-        }
-    }
-    out.retain(|s| !s.trim().is_empty());
-    out
-}
-
-/// The parameter sets a demo is checked with, each with a name for failure messages.
 fn cases(spec: &DemoSpec) -> Vec<(String, Params)> {
     let defaults = Params::defaults(spec);
     let mut out = vec![("defaults".to_string(), defaults.clone())];
@@ -415,144 +89,65 @@ fn generated_strings(
     out
 }
 
-/// The English words left in `s`: maximal runs of ASCII letters of length ≥ 4 that are in
-/// [`ENGLISH`], not counting subscripts (`f_wheel`, `T_linear`).
-fn english_words(s: &str) -> Vec<String> {
+/// Every generated string of every demo in every case, in the active language.
+fn every_generated_string() -> Vec<(String, &'static str, String)> {
     let mut out = Vec::new();
-    let mut prev = ' ';
-    let mut run = String::new();
-    let mut subscript = false;
-    for c in s.chars().chain([' ']) {
-        if c.is_ascii_alphabetic() {
-            if run.is_empty() {
-                subscript = prev == '_';
-            }
-            run.push(c);
-        } else {
-            let w = run.to_ascii_lowercase();
-            if w.len() >= 4 && !subscript && ENGLISH.contains(&w.as_str()) {
-                out.push(w);
-            }
-            run.clear();
-        }
-        prev = c;
-    }
-    out
-}
-
-/// Letter runs that are symbols or units, not words (`rad/s`, `sgn`, `log₁₀`).
-const SYMBOLS: &[&str] = &[
-    "rad", "sgn", "log", "max", "min", "mph", "gap", "cos", "sin", "Hz", "Re", "Im", "dB",
-];
-
-/// Whether `s` is made of symbols, units and numbers only: no word, i.e. no run of three
-/// or more ASCII letters and no capitalised pair (`At`, `No`), except [`SYMBOLS`] and
-/// subscripts (`U_crit`, `ζ_eff`). Such strings (`N·s/m`, `ζ = 1`, `F_c·sgn(x′)`) need no
-/// translation.
-fn is_symbolic(s: &str) -> bool {
-    let mut prev = ' ';
-    let mut run = String::new();
-    let mut subscript = false;
-    for c in s.chars().chain([' ']) {
-        if c.is_ascii_alphabetic() {
-            if run.is_empty() {
-                subscript = prev == '_';
-            }
-            run.push(c);
-        } else {
-            let capitalised_pair = run.len() == 2
-                && run.starts_with(|c: char| c.is_ascii_uppercase())
-                && run.ends_with(|c: char| c.is_ascii_lowercase());
-            let word = run.len() >= 3 || capitalised_pair;
-            if word && !subscript && !SYMBOLS.contains(&run.as_str()) {
-                return false;
-            }
-            run.clear();
-        }
-        prev = c;
-    }
-    true
-}
-
-#[test]
-fn every_static_spec_string_has_a_whole_spanish_entry() {
-    let mut missing = BTreeSet::new();
-    for id in demos::ids() {
-        let spec = demos::create(id).unwrap().spec();
-        for s in static_strings(&spec) {
-            if has_whole(Lang::Es, s) {
-                continue;
-            }
-            if is_symbolic(s) {
-                // Symbols pass through untouched (apart from decimal commas).
-                let es = tr(Lang::Es, s);
-                assert_eq!(es.replace(',', "."), s.replace(',', "."), "[{id}] {s:?}");
-            } else {
-                missing.insert(format!("[{id}] {s:?}"));
-            }
-        }
-    }
-    assert!(
-        missing.is_empty(),
-        "{} static strings have no whole Spanish entry in crates/app/src/i18n/es.rs:\n{}",
-        missing.len(),
-        missing.into_iter().collect::<Vec<_>>().join("\n")
-    );
-}
-
-#[test]
-fn every_generated_string_translates_without_english_left() {
-    let dump = std::env::var_os("ZETA_I18N_DUMP").is_some();
-    let mut problems = BTreeSet::new();
-    let mut seen = BTreeSet::new();
     for id in demos::ids() {
         let mut demo = demos::create(id).unwrap();
         let spec = demo.spec();
         for (case, params) in cases(&spec) {
-            for (what, s) in generated_strings(demo.as_mut(), &spec, &params) {
-                let es = tr(Lang::Es, &s);
-                if dump && seen.insert(s.clone()) {
-                    println!("[{id}] {what}: {s}\n    -> {es}");
-                }
-                let left = english_words(&es);
-                if !left.is_empty() {
-                    problems.insert(format!(
-                        "[{id}, {case}] {what} {s:?}\n    -> {es:?}\n    English left: {}",
-                        left.join(", ")
-                    ));
-                }
+            for (what, text) in generated_strings(demo.as_mut(), &spec, &params) {
+                out.push((format!("{id}, {case}"), what, text));
             }
         }
     }
-    assert!(
-        problems.is_empty(),
-        "{} generated strings keep English words in Spanish (add whole entries or phrases \
-         to crates/app/src/i18n/es.rs):\n{}",
-        problems.len(),
-        problems.into_iter().collect::<Vec<_>>().join("\n")
-    );
+    out
 }
 
 #[test]
-fn spanish_whole_values_survive_a_second_translation() {
-    // The page may translate a string twice (e.g. a label reused inside a figure); a
-    // Spanish value must come back unchanged, not be corrupted by an English phrase.
-    let mut changed = BTreeSet::new();
-    for id in demos::ids() {
-        let spec = demos::create(id).unwrap().spec();
-        for s in static_strings(&spec) {
-            let es = tr(Lang::Es, s);
-            assert!(!es.trim().is_empty(), "[{id}] {s:?} translates to nothing");
-            let again = tr(Lang::Es, &es);
-            if again != es {
-                changed.insert(format!("[{id}] {es:?}\n    -> {again:?}"));
-            }
-        }
+fn every_language_has_every_message_the_demos_show() {
+    for l in LOCALES.iter().filter(|l| l.file().is_some()) {
+        let path = format!("{}/locales/{}.ftl", env!("CARGO_MANIFEST_DIR"), l.tag);
+        let ftl = std::fs::read_to_string(&path).unwrap();
+        assert_eq!(i18n::load(l.tag, &ftl), Ok(()), "{path} has syntax errors");
+        assert_eq!(i18n::set_language(&[l.tag]).tag, l.tag);
+        i18n::take_missing();
+        let shown = every_generated_string();
+        let missing = i18n::take_missing();
+        i18n::set_language(&["en"]);
+        assert!(!shown.is_empty());
+        assert!(
+            missing.is_empty(),
+            "{}: {} messages shown in English: {missing:?}",
+            l.tag,
+            missing.len()
+        );
     }
+}
+
+/// Maximal runs of ASCII letters, four or longer.
+fn ascii_words(s: &str) -> Vec<&str> {
+    s.split(|c: char| !c.is_ascii_alphabetic())
+        .filter(|w| w.len() >= 4)
+        .collect()
+}
+
+#[test]
+fn no_generated_string_bypasses_the_catalogues() {
+    i18n::set_language(&["en-XA"]);
+    let shown = every_generated_string();
+    i18n::set_language(&["en"]);
+    let mut escaped: Vec<String> = shown
+        .iter()
+        .filter(|(_, _, text)| !ascii_words(text).is_empty())
+        .map(|(case, what, text)| format!("{case}: {what} {text:?}"))
+        .collect();
+    escaped.sort();
+    escaped.dedup();
     assert!(
-        changed.is_empty(),
-        "{} Spanish strings change when translated again:\n{}",
-        changed.len(),
-        changed.into_iter().collect::<Vec<_>>().join("\n")
+        escaped.is_empty(),
+        "{} strings bypass the catalogues, e.g. {:#?}",
+        escaped.len(),
+        &escaped[..escaped.len().min(20)]
     );
 }
