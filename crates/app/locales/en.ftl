@@ -106,6 +106,48 @@ regimes-poles = Poles at { $re1 } { $sign1 } { $im1 }i and { $re2 } { $sign2 } {
     } half-plane.
 regimes-schematic = Mass on a spring and damper at t = { $time }: displaced { $displacement } from rest.
 
+### resonance
+
+resonance-axis-ratio = frequency ratio r = ω/ωₙ
+resonance-axis-amplification = amplification |H| = X/(F₀/k)
+resonance-axis-magnitude-db = magnitude 20·log₁₀|H|
+resonance-axis-phase = phase ∠H (lag of x behind F)
+resonance-plot-magnitude-db = Amplification |H(r)| in dB
+resonance-family = family ζ = { $from } … { $to }
+resonance-current = current ζ = { $zeta }
+resonance-drive = drive r = { $ratio }
+resonance-peak = peak
+resonance-quadrature = −90° at r = 1
+resonance-legend-width = half-power width r₂ − r₁ = { $width }
+resonance-legend-broad = |H| ≥ |H|max/√2 up to r = { $upper }
+resonance-legend-cutoff = −3 dB cut-off r = { $upper }
+resonance-band-width = half-power points (|H| = |H|max/√2) at r = { $lower } and { $upper }: peak width r₂ − r₁ = { $width }
+resonance-band-broad = |H| stays above |H|max/√2 from r = 0 up to r = { $upper }: the peak has no lower half-power point, so its half-power width is undefined
+resonance-band-cutoff = |H| falls to 1/√2 of its static value (−3 dB) at the cut-off r = { $upper }; without a peak there is no half-power width
+resonance-peak-at = resonant peak { $gain } at r = { $ratio }
+resonance-no-peak = no resonant peak (ζ ≥ 1/√2): |H| only falls from 1 at r = 0
+resonance-describe-magnitude = { $view ->
+        [db] Magnitude in dB for ζ = { $zeta }: { $peak }; { $band }. At the drive r = { $drive } the amplification is { $gain }.
+       *[linear] Magnitude for ζ = { $zeta }: { $peak }; { $band }. At the drive r = { $drive } the amplification is { $gain }.
+    }
+resonance-describe-phase = Phase of the displacement behind the force for ζ = { $zeta }: 0° at low frequency, −90° at r = 1 for every damping ratio, towards −180° above resonance; the smaller ζ, the sharper the switch. At the drive r = { $drive } the lag is { $degrees } ({ $radians } rad).
+resonance-envelope = envelope ±E(t)
+resonance-steady-amplitude = steady amplitude ±X
+resonance-describe-time-growing = Driven from rest at r = { $ratio } (ω = { $omega }) for { $span }: no steady state; the amplitude grows, reaching { $largest }.
+resonance-describe-time = { $case ->
+        [beats] Driven from rest at r = { $ratio } (ω = { $omega }) for { $span }: the free and forced motions beat with period { $period } (time constant of the decay { $tau }), towards the steady amplitude { $amplitude }, lagging the force by { $lag }. Largest excursion shown { $largest }.
+        [build-up] Driven from rest at r = { $ratio } (ω = { $omega }) for { $span }: at resonance the amplitude builds up towards the steady amplitude { $amplitude } with time constant 1/(ζωₙ) = { $tau }, lagging the force by { $lag }. Largest excursion shown { $largest }.
+       *[transient] Driven from rest at r = { $ratio } (ω = { $omega }) for { $span }: after a transient (time constant { $tau }) it settles to the steady amplitude { $amplitude }, lagging the force by { $lag }. Largest excursion shown { $largest }.
+    }
+resonance-fixed-base = fixed base
+resonance-schematic = Mass on a spring and damper over a fixed base, pushed by the force F(t) = { $force } (arrow above the mass) at t = { $time }: displaced { $displacement } from rest.
+resonance-beats-visible = visible
+resonance-beats-no-free-oscillation = none (no free oscillation, ζ ≥ 1)
+resonance-beats-no-drive = none (constant force)
+resonance-beats-same-frequency = none (driven at ω_d)
+resonance-beats-too-fast = none (as fast as the oscillation)
+resonance-beats-dies-out = none (the free motion dies out first)
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

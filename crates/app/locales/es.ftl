@@ -98,6 +98,48 @@ regimes-poles = Polos en { $re1 } { $sign1 } { $im1 }i y { $re2 } { $sign2 } { $
     }.
 regimes-schematic = Masa sobre resorte y amortiguador en t = { $time }: desplazada { $displacement } del reposo.
 
+### resonance
+
+resonance-axis-ratio = razón de frecuencias r = ω/ωₙ
+resonance-axis-amplification = amplificación |H| = X/(F₀/k)
+resonance-axis-magnitude-db = magnitud 20·log₁₀|H|
+resonance-axis-phase = fase ∠H (retraso de x respecto de F)
+resonance-plot-magnitude-db = Amplificación |H(r)| en dB
+resonance-family = familia ζ = { $from } … { $to }
+resonance-current = ζ actual = { $zeta }
+resonance-drive = excitación r = { $ratio }
+resonance-peak = pico
+resonance-quadrature = −90° en r = 1
+resonance-legend-width = anchura de media potencia r₂ − r₁ = { $width }
+resonance-legend-broad = |H| ≥ |H|max/√2 hasta r = { $upper }
+resonance-legend-cutoff = corte a −3 dB r = { $upper }
+resonance-band-width = puntos de media potencia (|H| = |H|max/√2) en r = { $lower } y { $upper }: anchura del pico r₂ − r₁ = { $width }
+resonance-band-broad = |H| queda por encima de |H|max/√2 desde r = 0 hasta r = { $upper }: el pico no tiene punto inferior de media potencia, así que su anchura de media potencia no está definida
+resonance-band-cutoff = |H| cae a 1/√2 de su valor estático (−3 dB) en la frecuencia de corte r = { $upper }; sin pico no hay anchura de media potencia
+resonance-peak-at = pico de resonancia { $gain } en r = { $ratio }
+resonance-no-peak = sin pico de resonancia (ζ ≥ 1/√2): |H| solo decrece desde 1 en r = 0
+resonance-describe-magnitude = { $view ->
+        [db] Magnitud en dB para ζ = { $zeta }: { $peak }; { $band }. A la frecuencia de excitación, r = { $drive }, la amplificación es { $gain }.
+       *[linear] Magnitud para ζ = { $zeta }: { $peak }; { $band }. A la frecuencia de excitación, r = { $drive }, la amplificación es { $gain }.
+    }
+resonance-describe-phase = Fase del desplazamiento respecto de la fuerza para ζ = { $zeta }: 0° a baja frecuencia, −90° en r = 1 para cualquier coeficiente de amortiguamiento, hacia −180° por encima de la resonancia; cuanto menor es ζ, más brusco es el cambio. A la frecuencia de excitación, r = { $drive }, el retraso es { $degrees } ({ $radians } rad).
+resonance-envelope = envolvente ±E(t)
+resonance-steady-amplitude = amplitud permanente ±X
+resonance-describe-time-growing = Excitado desde el reposo en r = { $ratio } (ω = { $omega }) durante { $span }: sin régimen permanente; la amplitud crece hasta alcanzar { $largest }.
+resonance-describe-time = { $case ->
+        [beats] Excitado desde el reposo en r = { $ratio } (ω = { $omega }) durante { $span }: los movimientos libre y forzado baten con periodo { $period } (constante de tiempo del decaimiento { $tau }), hacia la amplitud permanente { $amplitude }, con un retraso respecto de la fuerza de { $lag }. Máxima excursión representada: { $largest }.
+        [build-up] Excitado desde el reposo en r = { $ratio } (ω = { $omega }) durante { $span }: en resonancia la amplitud crece hacia la amplitud permanente { $amplitude } con constante de tiempo 1/(ζωₙ) = { $tau }, con un retraso respecto de la fuerza de { $lag }. Máxima excursión representada: { $largest }.
+       *[transient] Excitado desde el reposo en r = { $ratio } (ω = { $omega }) durante { $span }: tras un transitorio (constante de tiempo { $tau }) se establece en la amplitud permanente { $amplitude }, con un retraso respecto de la fuerza de { $lag }. Máxima excursión representada: { $largest }.
+    }
+resonance-fixed-base = base fija
+resonance-schematic = Masa sobre resorte y amortiguador sobre una base fija, empujada por la fuerza F(t) = { $force } (flecha sobre la masa) en t = { $time }: desplazada { $displacement } del reposo.
+resonance-beats-visible = visibles
+resonance-beats-no-free-oscillation = ninguno (sin oscilación libre, ζ ≥ 1)
+resonance-beats-no-drive = ninguno (fuerza constante)
+resonance-beats-same-frequency = ninguno (excitado a ω_d)
+resonance-beats-too-fast = ninguno (tan rápido como la oscilación)
+resonance-beats-dies-out = ninguno (el movimiento libre se extingue antes)
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes
