@@ -148,6 +148,72 @@ resonance-beats-same-frequency = none (driven at ω_d)
 resonance-beats-too-fast = none (as fast as the oscillation)
 resonance-beats-dies-out = none (the free motion dies out first)
 
+### flutter
+
+flutter-no-oscillation = no oscillation
+flutter-series-h-section = 1940 H-section (teaching approx.)
+flutter-series-box = streamlined box (teaching approx.)
+flutter-series-simplest = A₂* the simplest picture amounts to
+flutter-series-simplest-line = simplest picture ζ_s − g·U
+flutter-axis-reduced-velocity = reduced velocity U/(f·B) = 2π/K
+flutter-axis-wind-speed = wind speed U
+flutter-axis-effective-damping = effective damping ratio ζ_eff
+flutter-axis-twist = twist θ
+flutter-threshold = threshold 4Iζ_s/(ρB⁴) = { $value }
+flutter-upper-pole = upper pole
+flutter-lower-pole = lower pole
+flutter-amplitude = amplitude ±a(t)
+flutter-limit-cycle = limit cycle ±{ $amplitude }
+flutter-describe-derivative = A₂* against reduced velocity for { $model ->
+        [h] the 1940 H-section
+        [box] the streamlined box
+       *[simplest] the simplest picture
+    } (teaching approximation, not measured values): the twist grows where A₂* rises above 4Iζ_s/(ρB⁴).
+flutter-describe-derivative-now = { $description } At U = { $speed } (K = { $k }, U/(fB) = { $reduced_velocity }) A₂* = { $a2 }, { $side ->
+        [above] above
+       *[below] below
+    } the threshold { $threshold }.
+flutter-describe-damping = Effective damping ratio of { $model ->
+        [h] the 1940 H-section
+        [box] the streamlined box
+       *[simplest] the simplest picture
+    } from ζ_s = { $zeta_s } in calm air; it { $crossing ->
+        [inside] crosses zero at the critical speed { $speed }
+        [beyond] would cross zero only at { $speed }, beyond the plotted { $limit }
+       *[never] never crosses zero up to 100 m/s: the wind only adds damping
+    }.
+flutter-describe-damping-now = { $description } At U = { $speed } it is { $zeta }, { $sign ->
+        [positive] positive (stable)
+        [negative] negative (flutter)
+       *[zero] zero
+    }.
+flutter-describe-damping-still = { $description } At this wind the deck does not oscillate.
+flutter-describe-locus = Pole pair as the wind rises: { $re_calm } ± { $im_calm }i 1/s in calm air, { $re_end } ± { $im_end }i 1/s at { $limit }, { $crosses ->
+        [yes] crossing the imaginary axis at U_crit
+       *[no] never crossing the imaginary axis
+    }.
+flutter-describe-locus-now = { $description } At U = { $speed } the poles are { $re } ± { $im }i 1/s, in the { $side ->
+        [right] right (unstable)
+       *[left] left (stable)
+    } half-plane.
+flutter-oscillation = the oscillation
+flutter-oscillation-at = the oscillation at { $frequency } Hz
+flutter-describe-response = { $regime }: from an initial twist of { $twist }, { $oscillation } { $case ->
+        [settling] grows to { $end } by the end of the plot ({ $window }), settling near the limit cycle of { $limit } (90 % of it after { $time })
+        [slow] grows only to { $end } by the end of the plot ({ $window }); it would take { $time } to reach 90 % of the limit cycle of { $limit }
+        [settled] settles onto the limit cycle of { $limit } by the end of the plot ({ $window })
+        [grows] grows to { $end } by the end of the plot ({ $window })
+       *[dies] dies down to { $end } by the end of the plot ({ $window })
+    }.
+flutter-describe-response-torn = { $description } A twist this large would have torn any deck apart long before; the bound is only a teaching assumption.
+flutter-schematic-title = Deck cross-section
+flutter-drawn-clipped = drawn clipped at { $angle }
+flutter-drawn-true-scale = drawn true to scale
+flutter-drawn-larger = drawn { $factor } times larger
+flutter-drawn-note = ({ $drawn })
+flutter-schematic = Bridge deck cross-section at t = { $time }: twisted { $twist } ({ $drawn }), wind { $wind } from the left.
+flutter-wind = wind U = { $speed }
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

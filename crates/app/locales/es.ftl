@@ -140,6 +140,72 @@ resonance-beats-same-frequency = ninguno (excitado a ω_d)
 resonance-beats-too-fast = ninguno (tan rápido como la oscilación)
 resonance-beats-dies-out = ninguno (el movimiento libre se extingue antes)
 
+### flutter
+
+flutter-no-oscillation = sin oscilación
+flutter-series-h-section = sección en H de 1940 (aprox. didáctica)
+flutter-series-box = cajón aerodinámico (aprox. didáctica)
+flutter-series-simplest = A₂* equivalente a la imagen más simple
+flutter-series-simplest-line = imagen más simple ζ_s − g·U
+flutter-axis-reduced-velocity = velocidad reducida U/(f·B) = 2π/K
+flutter-axis-wind-speed = velocidad del viento U
+flutter-axis-effective-damping = coeficiente de amortiguamiento efectivo ζ_eff
+flutter-axis-twist = giro θ
+flutter-threshold = umbral 4Iζ_s/(ρB⁴) = { $value }
+flutter-upper-pole = polo superior
+flutter-lower-pole = polo inferior
+flutter-amplitude = amplitud ±a(t)
+flutter-limit-cycle = ciclo límite ±{ $amplitude }
+flutter-describe-derivative = A₂* frente a la velocidad reducida para { $model ->
+        [h] la sección en H de 1940
+        [box] el cajón aerodinámico
+       *[simplest] la imagen más simple
+    } (aproximación didáctica, no valores medidos): el giro crece donde A₂* supera 4Iζ_s/(ρB⁴).
+flutter-describe-derivative-now = { $description } Con U = { $speed } (K = { $k }, U/(fB) = { $reduced_velocity }), A₂* = { $a2 }, { $side ->
+        [above] por encima del
+       *[below] por debajo del
+    } umbral { $threshold }.
+flutter-describe-damping = Coeficiente de amortiguamiento efectivo de { $model ->
+        [h] la sección en H de 1940
+        [box] el cajón aerodinámico
+       *[simplest] la imagen más simple
+    } desde ζ_s = { $zeta_s } con aire en calma; { $crossing ->
+        [inside] se anula a la velocidad crítica { $speed }
+        [beyond] solo se anularía a { $speed }, más allá del máximo representado, { $limit }
+       *[never] nunca se anula hasta 100 m/s: el viento solo añade amortiguamiento
+    }.
+flutter-describe-damping-now = { $description } Con U = { $speed } vale { $zeta }, { $sign ->
+        [positive] positivo (estable)
+        [negative] negativo (flameo)
+       *[zero] cero
+    }.
+flutter-describe-damping-still = { $description } Con este viento el tablero no oscila.
+flutter-describe-locus = Par de polos al aumentar el viento: { $re_calm } ± { $im_calm }i 1/s con aire en calma, { $re_end } ± { $im_end }i 1/s a { $limit }, { $crosses ->
+        [yes] cruzando el eje imaginario en U_crit
+       *[no] sin cruzar nunca el eje imaginario
+    }.
+flutter-describe-locus-now = { $description } Con U = { $speed } los polos son { $re } ± { $im }i 1/s, en el semiplano { $side ->
+        [right] derecho (inestable)
+       *[left] izquierdo (estable)
+    }.
+flutter-oscillation = la oscilación
+flutter-oscillation-at = la oscilación a { $frequency } Hz
+flutter-describe-response = { $regime }: desde un giro inicial de { $twist }, { $oscillation } { $case ->
+        [settling] crece hasta { $end } al final de la gráfica ({ $window }), y se estabiliza cerca del ciclo límite de { $limit } (el 90 % a los { $time })
+        [slow] solo crece hasta { $end } al final de la gráfica ({ $window }); tardaría { $time } en alcanzar el 90 % del ciclo límite de { $limit }
+        [settled] se estabiliza en el ciclo límite de { $limit } al final de la gráfica ({ $window })
+        [grows] crece hasta { $end } al final de la gráfica ({ $window })
+       *[dies] se reduce a { $end } al final de la gráfica ({ $window })
+    }.
+flutter-describe-response-torn = { $description } Un giro tan grande habría roto cualquier tablero mucho antes; la cota es solo un supuesto didáctico.
+flutter-schematic-title = Sección del tablero
+flutter-drawn-clipped = dibujado recortado a { $angle }
+flutter-drawn-true-scale = dibujado a escala real
+flutter-drawn-larger = dibujado { $factor } veces mayor
+flutter-drawn-note = ({ $drawn })
+flutter-schematic = Sección del tablero del puente en t = { $time }: girado { $twist } ({ $drawn }), viento de { $wind } desde la izquierda.
+flutter-wind = viento U = { $speed }
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes
