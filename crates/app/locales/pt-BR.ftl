@@ -116,7 +116,7 @@ flutter-describe-locus-now = { $description } Com U = { $speed }, os polos são 
        *[left] esquerdo (estável)
     }.
 flutter-oscillation = a oscilação
-flutter-oscillation-at = a oscilação a { $frequency } Hz
+flutter-oscillation-at = a oscilação de { $frequency } Hz
 flutter-describe-response = { $regime }: a partir de uma torção inicial de { $twist }, { $oscillation } { $case ->
         [settling] cresce até { $end } no fim do gráfico ({ $window }), estabilizando-se perto do ciclo limite de { $limit } (90 % dele após { $time })
         [slow] cresce apenas até { $end } no fim do gráfico ({ $window }); levaria { $time } para atingir 90 % do ciclo limite de { $limit }
