@@ -118,8 +118,8 @@ flutter-describe-locus-now = { $description }在 U = { $speed } 时，极点为 
 flutter-oscillation = 振荡
 flutter-oscillation-at = { $frequency } Hz 的振荡
 flutter-describe-response = { $regime }：从初始扭转角 { $twist } 开始，{ $oscillation }{ $case ->
-        [settling] 在图末（{ $window }）增大到 { $end }，接近 { $limit } 的极限环（{ $time } 后达到其 90 %）
-        [slow] 在图末（{ $window }）只增大到 { $end }；要达到 { $limit } 极限环的 90 % 需要 { $time }
+        [settling] 在图末（{ $window }）增大到 { $end }，接近 { $limit } 的极限环（{ $time } 后达到其 90%）
+        [slow] 在图末（{ $window }）只增大到 { $end }；要达到 { $limit } 极限环的 90% 需要 { $time }
         [settled] 在图末（{ $window }）稳定在 { $limit } 的极限环上
         [grows] 在图末（{ $window }）增大到 { $end }
        *[dies] 在图末（{ $window }）衰减到 { $end }
@@ -159,7 +159,7 @@ flutter-readout-reduced-velocity = 折减风速 U/(f·B) = 2π/K
 flutter-readout-A2 = 颤振导数 A₂*(K)
 flutter-readout-A3 = 颤振导数 A₃*(K)
 flutter-readout-limit-deg = 极限环扭转振幅（采用假设界限 θ_s）
-flutter-readout-time-to-large = 从 θ₀ 到极限环 90 % 的时间
+flutter-readout-time-to-large = 从 θ₀ 到极限环 90% 的时间
 flutter-readout-amplitude-end-deg = 图末的扭转振幅
 flutter-plot-derivative = 颤振导数 A₂* 与颤振阈值
 flutter-plot-damping = 有效阻尼随风速的变化
