@@ -352,6 +352,113 @@ paper-claim-fig4-euler-error-context = Euler is unstable at this step: |1 + hλ|
 paper-claim-fig4-rk4-error-context = RK4 is stable at this step (|R(hλ)| = { $value } per step), yet over the whole window its error exceeds the bound.
 paper-claim-fig4-euler-slope-context = The order fitted over small steps, where the error is asymptotic, is { $value }.
 paper-claim-sec7-mass-tolerance-context = ζ = c/(2√(km)) varies as 1/√m, so a ±10 % mass moves it by only about ±5 % (ωₙ drops to { $value } at +10 %).
+### resonance
+
+resonance-axis-ratio = frequency ratio r = ω/ωₙ
+resonance-axis-amplification = amplification |H| = X/(F₀/k)
+resonance-axis-magnitude-db = magnitude 20·log₁₀|H|
+resonance-axis-phase = phase ∠H (lag of x behind F)
+resonance-plot-magnitude-db = Amplification |H(r)| in dB
+resonance-family = family ζ = { $from } … { $to }
+resonance-current = current ζ = { $zeta }
+resonance-drive = drive r = { $ratio }
+resonance-peak = peak
+resonance-quadrature = −90° at r = 1
+resonance-legend-width = half-power width r₂ − r₁ = { $width }
+resonance-legend-broad = |H| ≥ |H|max/√2 up to r = { $upper }
+resonance-legend-cutoff = −3 dB cut-off r = { $upper }
+resonance-band-width = half-power points (|H| = |H|max/√2) at r = { $lower } and { $upper }: peak width r₂ − r₁ = { $width }
+resonance-band-broad = |H| stays above |H|max/√2 from r = 0 up to r = { $upper }: the peak has no lower half-power point, so its half-power width is undefined
+resonance-band-cutoff = |H| falls to 1/√2 of its static value (−3 dB) at the cut-off r = { $upper }; without a peak there is no half-power width
+resonance-peak-at = resonant peak { $gain } at r = { $ratio }
+resonance-no-peak = no resonant peak (ζ ≥ 1/√2): |H| only falls from 1 at r = 0
+resonance-describe-magnitude = { $view ->
+        [db] Magnitude in dB for ζ = { $zeta }: { $peak }; { $band }. At the drive r = { $drive } the amplification is { $gain }.
+       *[linear] Magnitude for ζ = { $zeta }: { $peak }; { $band }. At the drive r = { $drive } the amplification is { $gain }.
+    }
+resonance-describe-phase = Phase of the displacement behind the force for ζ = { $zeta }: 0° at low frequency, −90° at r = 1 for every damping ratio, towards −180° above resonance; the smaller ζ, the sharper the switch. At the drive r = { $drive } the lag is { $degrees } ({ $radians } rad).
+resonance-envelope = envelope ±E(t)
+resonance-steady-amplitude = steady amplitude ±X
+resonance-describe-time-growing = Driven from rest at r = { $ratio } (ω = { $omega }) for { $span }: no steady state; the amplitude grows, reaching { $largest }.
+resonance-describe-time = { $case ->
+        [beats] Driven from rest at r = { $ratio } (ω = { $omega }) for { $span }: the free and forced motions beat with period { $period } (time constant of the decay { $tau }), towards the steady amplitude { $amplitude }, lagging the force by { $lag }. Largest excursion shown { $largest }.
+        [build-up] Driven from rest at r = { $ratio } (ω = { $omega }) for { $span }: at resonance the amplitude builds up towards the steady amplitude { $amplitude } with time constant 1/(ζωₙ) = { $tau }, lagging the force by { $lag }. Largest excursion shown { $largest }.
+       *[transient] Driven from rest at r = { $ratio } (ω = { $omega }) for { $span }: after a transient (time constant { $tau }) it settles to the steady amplitude { $amplitude }, lagging the force by { $lag }. Largest excursion shown { $largest }.
+    }
+resonance-fixed-base = fixed base
+resonance-schematic = Mass on a spring and damper over a fixed base, pushed by the force F(t) = { $force } (arrow above the mass) at t = { $time }: displaced { $displacement } from rest.
+resonance-beats-visible = visible
+resonance-beats-no-free-oscillation = none (no free oscillation, ζ ≥ 1)
+resonance-beats-no-drive = none (constant force)
+resonance-beats-same-frequency = none (driven at ω_d)
+resonance-beats-too-fast = none (as fast as the oscillation)
+resonance-beats-dies-out = none (the free motion dies out first)
+
+### flutter
+
+flutter-no-oscillation = no oscillation
+flutter-series-h-section = 1940 H-section (teaching approx.)
+flutter-series-box = streamlined box (teaching approx.)
+flutter-series-simplest = A₂* the simplest picture amounts to
+flutter-series-simplest-line = simplest picture ζ_s − g·U
+flutter-axis-reduced-velocity = reduced velocity U/(f·B) = 2π/K
+flutter-axis-wind-speed = wind speed U
+flutter-axis-effective-damping = effective damping ratio ζ_eff
+flutter-axis-twist = twist θ
+flutter-threshold = threshold 4Iζ_s/(ρB⁴) = { $value }
+flutter-upper-pole = upper pole
+flutter-lower-pole = lower pole
+flutter-amplitude = amplitude ±a(t)
+flutter-limit-cycle = limit cycle ±{ $amplitude }
+flutter-describe-derivative = A₂* against reduced velocity for { $model ->
+        [h] the 1940 H-section
+        [box] the streamlined box
+       *[simplest] the simplest picture
+    } (teaching approximation, not measured values): the twist grows where A₂* rises above 4Iζ_s/(ρB⁴).
+flutter-describe-derivative-now = { $description } At U = { $speed } (K = { $k }, U/(fB) = { $reduced_velocity }) A₂* = { $a2 }, { $side ->
+        [above] above
+       *[below] below
+    } the threshold { $threshold }.
+flutter-describe-damping = Effective damping ratio of { $model ->
+        [h] the 1940 H-section
+        [box] the streamlined box
+       *[simplest] the simplest picture
+    } from ζ_s = { $zeta_s } in calm air; it { $crossing ->
+        [inside] crosses zero at the critical speed { $speed }
+        [beyond] would cross zero only at { $speed }, beyond the plotted { $limit }
+       *[never] never crosses zero up to 100 m/s: the wind only adds damping
+    }.
+flutter-describe-damping-now = { $description } At U = { $speed } it is { $zeta }, { $sign ->
+        [positive] positive (stable)
+        [negative] negative (flutter)
+       *[zero] zero
+    }.
+flutter-describe-damping-still = { $description } At this wind the deck does not oscillate.
+flutter-describe-locus = Pole pair as the wind rises: { $re_calm } ± { $im_calm }i 1/s in calm air, { $re_end } ± { $im_end }i 1/s at { $limit }, { $crosses ->
+        [yes] crossing the imaginary axis at U_crit
+       *[no] never crossing the imaginary axis
+    }.
+flutter-describe-locus-now = { $description } At U = { $speed } the poles are { $re } ± { $im }i 1/s, in the { $side ->
+        [right] right (unstable)
+       *[left] left (stable)
+    } half-plane.
+flutter-oscillation = the oscillation
+flutter-oscillation-at = the oscillation at { $frequency } Hz
+flutter-describe-response = { $regime }: from an initial twist of { $twist }, { $oscillation } { $case ->
+        [settling] grows to { $end } by the end of the plot ({ $window }), settling near the limit cycle of { $limit } (90 % of it after { $time })
+        [slow] grows only to { $end } by the end of the plot ({ $window }); it would take { $time } to reach 90 % of the limit cycle of { $limit }
+        [settled] settles onto the limit cycle of { $limit } by the end of the plot ({ $window })
+        [grows] grows to { $end } by the end of the plot ({ $window })
+       *[dies] dies down to { $end } by the end of the plot ({ $window })
+    }.
+flutter-describe-response-torn = { $description } A twist this large would have torn any deck apart long before; the bound is only a teaching assumption.
+flutter-schematic-title = Deck cross-section
+flutter-drawn-clipped = drawn clipped at { $angle }
+flutter-drawn-true-scale = drawn true to scale
+flutter-drawn-larger = drawn { $factor } times larger
+flutter-drawn-note = ({ $drawn })
+flutter-schematic = Bridge deck cross-section at t = { $time }: twisted { $twist } ({ $drawn }), wind { $wind } from the left.
+flutter-wind = wind U = { $speed }
 
 ## Declared strings (generated from the demo declarations)
 

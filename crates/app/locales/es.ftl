@@ -344,6 +344,113 @@ paper-claim-fig4-euler-error-context = Euler es inestable con este paso: |1 + h�
 paper-claim-fig4-rk4-error-context = RK4 es estable con este paso (|R(hλ)| = { $value } por paso), pero en toda la ventana su error supera la cota.
 paper-claim-fig4-euler-slope-context = El orden ajustado con pasos pequeños, donde el error es asintótico, es { $value }.
 paper-claim-sec7-mass-tolerance-context = ζ = c/(2√(km)) varía como 1/√m, así que una variación de ±10 % en la masa lo mueve solo alrededor de un ±5 % (ωₙ baja a { $value } con +10 %).
+### resonance
+
+resonance-axis-ratio = razón de frecuencias r = ω/ωₙ
+resonance-axis-amplification = amplificación |H| = X/(F₀/k)
+resonance-axis-magnitude-db = magnitud 20·log₁₀|H|
+resonance-axis-phase = fase ∠H (retraso de x respecto de F)
+resonance-plot-magnitude-db = Amplificación |H(r)| en dB
+resonance-family = familia ζ = { $from } … { $to }
+resonance-current = ζ actual = { $zeta }
+resonance-drive = excitación r = { $ratio }
+resonance-peak = pico
+resonance-quadrature = −90° en r = 1
+resonance-legend-width = anchura de media potencia r₂ − r₁ = { $width }
+resonance-legend-broad = |H| ≥ |H|max/√2 hasta r = { $upper }
+resonance-legend-cutoff = corte a −3 dB r = { $upper }
+resonance-band-width = puntos de media potencia (|H| = |H|max/√2) en r = { $lower } y { $upper }: anchura del pico r₂ − r₁ = { $width }
+resonance-band-broad = |H| queda por encima de |H|max/√2 desde r = 0 hasta r = { $upper }: el pico no tiene punto inferior de media potencia, así que su anchura de media potencia no está definida
+resonance-band-cutoff = |H| cae a 1/√2 de su valor estático (−3 dB) en la frecuencia de corte r = { $upper }; sin pico no hay anchura de media potencia
+resonance-peak-at = pico de resonancia { $gain } en r = { $ratio }
+resonance-no-peak = sin pico de resonancia (ζ ≥ 1/√2): |H| solo decrece desde 1 en r = 0
+resonance-describe-magnitude = { $view ->
+        [db] Magnitud en dB para ζ = { $zeta }: { $peak }; { $band }. A la frecuencia de excitación, r = { $drive }, la amplificación es { $gain }.
+       *[linear] Magnitud para ζ = { $zeta }: { $peak }; { $band }. A la frecuencia de excitación, r = { $drive }, la amplificación es { $gain }.
+    }
+resonance-describe-phase = Fase del desplazamiento respecto de la fuerza para ζ = { $zeta }: 0° a baja frecuencia, −90° en r = 1 para cualquier coeficiente de amortiguamiento, hacia −180° por encima de la resonancia; cuanto menor es ζ, más brusco es el cambio. A la frecuencia de excitación, r = { $drive }, el retraso es { $degrees } ({ $radians } rad).
+resonance-envelope = envolvente ±E(t)
+resonance-steady-amplitude = amplitud permanente ±X
+resonance-describe-time-growing = Excitado desde el reposo en r = { $ratio } (ω = { $omega }) durante { $span }: sin régimen permanente; la amplitud crece hasta alcanzar { $largest }.
+resonance-describe-time = { $case ->
+        [beats] Excitado desde el reposo en r = { $ratio } (ω = { $omega }) durante { $span }: los movimientos libre y forzado baten con periodo { $period } (constante de tiempo del decaimiento { $tau }), hacia la amplitud permanente { $amplitude }, con un retraso respecto de la fuerza de { $lag }. Máxima excursión representada: { $largest }.
+        [build-up] Excitado desde el reposo en r = { $ratio } (ω = { $omega }) durante { $span }: en resonancia la amplitud crece hacia la amplitud permanente { $amplitude } con constante de tiempo 1/(ζωₙ) = { $tau }, con un retraso respecto de la fuerza de { $lag }. Máxima excursión representada: { $largest }.
+       *[transient] Excitado desde el reposo en r = { $ratio } (ω = { $omega }) durante { $span }: tras un transitorio (constante de tiempo { $tau }) se establece en la amplitud permanente { $amplitude }, con un retraso respecto de la fuerza de { $lag }. Máxima excursión representada: { $largest }.
+    }
+resonance-fixed-base = base fija
+resonance-schematic = Masa sobre resorte y amortiguador sobre una base fija, empujada por la fuerza F(t) = { $force } (flecha sobre la masa) en t = { $time }: desplazada { $displacement } del reposo.
+resonance-beats-visible = visibles
+resonance-beats-no-free-oscillation = ninguno (sin oscilación libre, ζ ≥ 1)
+resonance-beats-no-drive = ninguno (fuerza constante)
+resonance-beats-same-frequency = ninguno (excitado a ω_d)
+resonance-beats-too-fast = ninguno (tan rápido como la oscilación)
+resonance-beats-dies-out = ninguno (el movimiento libre se extingue antes)
+
+### flutter
+
+flutter-no-oscillation = sin oscilación
+flutter-series-h-section = sección en H de 1940 (aprox. didáctica)
+flutter-series-box = cajón aerodinámico (aprox. didáctica)
+flutter-series-simplest = A₂* equivalente a la imagen más simple
+flutter-series-simplest-line = imagen más simple ζ_s − g·U
+flutter-axis-reduced-velocity = velocidad reducida U/(f·B) = 2π/K
+flutter-axis-wind-speed = velocidad del viento U
+flutter-axis-effective-damping = coeficiente de amortiguamiento efectivo ζ_eff
+flutter-axis-twist = giro θ
+flutter-threshold = umbral 4Iζ_s/(ρB⁴) = { $value }
+flutter-upper-pole = polo superior
+flutter-lower-pole = polo inferior
+flutter-amplitude = amplitud ±a(t)
+flutter-limit-cycle = ciclo límite ±{ $amplitude }
+flutter-describe-derivative = A₂* frente a la velocidad reducida para { $model ->
+        [h] la sección en H de 1940
+        [box] el cajón aerodinámico
+       *[simplest] la imagen más simple
+    } (aproximación didáctica, no valores medidos): el giro crece donde A₂* supera 4Iζ_s/(ρB⁴).
+flutter-describe-derivative-now = { $description } Con U = { $speed } (K = { $k }, U/(fB) = { $reduced_velocity }), A₂* = { $a2 }, { $side ->
+        [above] por encima del
+       *[below] por debajo del
+    } umbral { $threshold }.
+flutter-describe-damping = Coeficiente de amortiguamiento efectivo de { $model ->
+        [h] la sección en H de 1940
+        [box] el cajón aerodinámico
+       *[simplest] la imagen más simple
+    } desde ζ_s = { $zeta_s } con aire en calma; { $crossing ->
+        [inside] se anula a la velocidad crítica { $speed }
+        [beyond] solo se anularía a { $speed }, más allá del máximo representado, { $limit }
+       *[never] nunca se anula hasta 100 m/s: el viento solo añade amortiguamiento
+    }.
+flutter-describe-damping-now = { $description } Con U = { $speed } vale { $zeta }, { $sign ->
+        [positive] positivo (estable)
+        [negative] negativo (flameo)
+       *[zero] cero
+    }.
+flutter-describe-damping-still = { $description } Con este viento el tablero no oscila.
+flutter-describe-locus = Par de polos al aumentar el viento: { $re_calm } ± { $im_calm }i 1/s con aire en calma, { $re_end } ± { $im_end }i 1/s a { $limit }, { $crosses ->
+        [yes] cruzando el eje imaginario en U_crit
+       *[no] sin cruzar nunca el eje imaginario
+    }.
+flutter-describe-locus-now = { $description } Con U = { $speed } los polos son { $re } ± { $im }i 1/s, en el semiplano { $side ->
+        [right] derecho (inestable)
+       *[left] izquierdo (estable)
+    }.
+flutter-oscillation = la oscilación
+flutter-oscillation-at = la oscilación a { $frequency } Hz
+flutter-describe-response = { $regime }: desde un giro inicial de { $twist }, { $oscillation } { $case ->
+        [settling] crece hasta { $end } al final de la gráfica ({ $window }), y se estabiliza cerca del ciclo límite de { $limit } (el 90 % a los { $time })
+        [slow] solo crece hasta { $end } al final de la gráfica ({ $window }); tardaría { $time } en alcanzar el 90 % del ciclo límite de { $limit }
+        [settled] se estabiliza en el ciclo límite de { $limit } al final de la gráfica ({ $window })
+        [grows] crece hasta { $end } al final de la gráfica ({ $window })
+       *[dies] se reduce a { $end } al final de la gráfica ({ $window })
+    }.
+flutter-describe-response-torn = { $description } Un giro tan grande habría roto cualquier tablero mucho antes; la cota es solo un supuesto didáctico.
+flutter-schematic-title = Sección del tablero
+flutter-drawn-clipped = dibujado recortado a { $angle }
+flutter-drawn-true-scale = dibujado a escala real
+flutter-drawn-larger = dibujado { $factor } veces mayor
+flutter-drawn-note = ({ $drawn })
+flutter-schematic = Sección del tablero del puente en t = { $time }: girado { $twist } ({ $drawn }), viento de { $wind } desde la izquierda.
+flutter-wind = viento U = { $speed }
 
 ## Declared strings (generated from the demo declarations)
 

@@ -5,6 +5,7 @@ use super::{text, Aero, Results, Section, U_MAX};
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
 use crate::format::si;
 use crate::plot::{fit_range, thin, zip, Ink};
+use crate::t;
 use zeta_solver::flutter::{degrees, DeckSection};
 
 pub(super) const DERIVATIVE_TITLE: &str = "Flutter derivative A₂* and the flutter threshold";
@@ -25,22 +26,17 @@ pub(super) fn threshold(r: &Results) -> f64 {
 /// to), the other section for comparison, the threshold and the current point.
 pub(super) fn derivative(r: &Results) -> Figure {
     let along: Vec<(f64, f64)> = r.locus.iter().map(|s| (s.reduced_velocity, s.a2)).collect();
+    let h_section = || t!("flutter-series-h-section");
+    let streamlined = || t!("flutter-series-box");
     let (label, other) = match (r.p.aero, r.p.section) {
         (Aero::Simplest, _) => (
-            "A₂* the simplest picture amounts to",
-            (DeckSection::HSection, "1940 H-section (teaching approx.)"),
+            t!("flutter-series-simplest"),
+            (DeckSection::HSection, h_section()),
         ),
-        (Aero::Derivatives, Section::H) => (
-            "1940 H-section (teaching approx.)",
-            (
-                DeckSection::StreamlinedBox,
-                "streamlined box (teaching approx.)",
-            ),
-        ),
-        (Aero::Derivatives, Section::Box) => (
-            "streamlined box (teaching approx.)",
-            (DeckSection::HSection, "1940 H-section (teaching approx.)"),
-        ),
+        (Aero::Derivatives, Section::H) => {
+            (h_section(), (DeckSection::StreamlinedBox, streamlined()))
+        }
+        (Aero::Derivatives, Section::Box) => (streamlined(), (DeckSection::HSection, h_section())),
     };
     let table = other.0.table();
     let x_hi = along.iter().map(|p| p.0).fold(16.0, f64::max) * 1.05;
@@ -60,13 +56,13 @@ pub(super) fn derivative(r: &Results) -> Figure {
     );
     let y = (y.0, y.1 + 0.25 * (y.1 - y.0)); // room for the legend
     let mut fig = Figure::plot(
-        DERIVATIVE_TITLE,
-        Axis::linear("reduced velocity U/(f·B) = 2π/K", "", (0.0, x_hi)),
+        t!("flutter-plot-derivative"),
+        Axis::linear(t!("flutter-axis-reduced-velocity"), "", (0.0, x_hi)),
         Axis::linear("A₂*", "", y),
     )
     .with_line(other.1, others, LineStyle::dashed(Ink::Green, 1.5))
     .with_line(
-        format!("threshold 4Iζ_s/(ρB⁴) = {}", si(a2_crit, "", 3)),
+        t!("flutter-threshold", value = si(a2_crit, "", 3)),
         vec![(0.0, a2_crit), (x_hi, a2_crit)],
         LineStyle::dotted(Ink::Purple, 1.5),
     )
@@ -110,13 +106,13 @@ pub(super) fn damping(r: &Results) -> Figure {
     let mut y = padded((lo, hi.max(lo + 1e-2)), 0.1);
     y.1 += 0.3 * (y.1 - y.0); // room for the legend
     let mut fig = Figure::plot(
-        DAMPING_TITLE,
-        Axis::linear("wind speed U", "m/s", (0.0, U_MAX)),
-        Axis::linear("effective damping ratio ζ_eff", "%", y),
+        t!("flutter-plot-damping"),
+        Axis::linear(t!("flutter-axis-wind-speed"), "m/s", (0.0, U_MAX)),
+        Axis::linear(t!("flutter-axis-effective-damping"), "%", y),
     );
     if let Some(s) = simplest {
         fig = fig.with_line(
-            "simplest picture ζ_s − g·U",
+            t!("flutter-series-simplest-line"),
             s,
             LineStyle::dashed(Ink::Green, 1.5),
         );
@@ -153,16 +149,24 @@ pub(super) fn locus(r: &Results) -> Figure {
     // Taller above than below, so the legend in the upper right clears the upper branch.
     let y = (-1.5 * w, 2.2 * w);
     let mut fig = Figure::plot(
-        LOCUS_TITLE,
-        Axis::linear("real part Re s", "1/s", x),
-        Axis::linear("imaginary part Im s", "rad/s", y),
+        t!("flutter-plot-locus"),
+        Axis::linear(t!("axis-real-part"), "1/s", x),
+        Axis::linear(t!("axis-imaginary-part"), "rad/s", y),
     );
     if let Some(&start) = upper.first() {
         fig = fig.with_marker(Marker::dot("U = 0", start, Ink::Green));
     }
     fig = fig
-        .with_line("upper pole", upper, LineStyle::solid(Ink::Blue, 2.5))
-        .with_line("lower pole", lower, LineStyle::dashed(Ink::Blue, 2.5));
+        .with_line(
+            t!("flutter-upper-pole"),
+            upper,
+            LineStyle::solid(Ink::Blue, 2.5),
+        )
+        .with_line(
+            t!("flutter-lower-pole"),
+            lower,
+            LineStyle::dashed(Ink::Blue, 2.5),
+        );
     if let Some(s) = r.state {
         let [p1, p2] = s.poles();
         fig = fig
@@ -201,20 +205,20 @@ pub(super) fn response(r: &Results) -> Figure {
     let y = (-1.15 * reach, 1.9 * reach);
     let envelope = LineStyle::dashed(Ink::Vermillion, 1.5);
     let mut fig = Figure::plot(
-        RESPONSE_TITLE,
-        Axis::linear("time t", "min", (0.0, t_end)),
-        Axis::linear("twist θ", "°", y),
+        t!("flutter-plot-response"),
+        Axis::linear(t!("axis-time"), "min", (0.0, t_end)),
+        Axis::linear(t!("flutter-axis-twist"), "°", y),
     )
     .with_line(
         format!("θ(t), U = {}", si(r.p.u, "m/s", 3)),
         theta,
         LineStyle::solid(Ink::Blue, 1.0),
     )
-    .with_line("amplitude ±a(t)", upper, envelope)
+    .with_line(t!("flutter-amplitude"), upper, envelope)
     .with_line("", lower, envelope);
     if let Some(lc) = limit {
         fig = fig.with_line(
-            format!("limit cycle ±{}", si(lc, "°", 3)),
+            t!("flutter-limit-cycle", amplitude = si(lc, "°", 3)),
             vec![(0.0, lc), (t_end, lc)],
             LineStyle::dotted(Ink::Purple, 1.5),
         );

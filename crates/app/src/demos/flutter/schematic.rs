@@ -4,6 +4,7 @@ use super::U_MAX;
 use crate::figure::{Axis, Figure, LineStyle, Marker};
 use crate::format::si;
 use crate::plot::Ink;
+use crate::t;
 use zeta_solver::flutter::{degrees, radians, rotate};
 
 /// How large a small twist is drawn \[deg\].
@@ -34,7 +35,7 @@ pub(super) fn deck(theta: f64, peak: f64, u: f64, t: f64) -> Figure {
     let girder = LineStyle::solid(Ink::Blue, 5.0);
     let wind = LineStyle::solid(Ink::Sky, 2.5);
     let mut fig = Figure::schematic(
-        "Deck cross-section",
+        t!("flutter-schematic-title"),
         Axis::linear("", "", (-12.0, 9.0)),
         Axis::linear("", "", (-4.5, 4.5)),
     )
@@ -77,20 +78,21 @@ pub(super) fn deck(theta: f64, peak: f64, u: f64, t: f64) -> Figure {
         .collect();
     fig = fig.with_line("", arc, LineStyle::solid(Ink::Vermillion, 2.0));
     let drawn_as = if (theta * gain).abs() > CLIP {
-        format!("drawn clipped at {}", si(degrees(CLIP), "°", 2))
+        t!("flutter-drawn-clipped", angle = si(degrees(CLIP), "°", 2))
     } else if gain == 1.0 {
-        "drawn true to scale".to_string()
+        t!("flutter-drawn-true-scale")
     } else {
-        format!("drawn {} times larger", si(gain, "", 2))
+        t!("flutter-drawn-larger", factor = si(gain, "", 2))
     };
-    let description = format!(
-        "Bridge deck cross-section at t = {}: twisted {} ({drawn_as}), wind {} from the left.",
-        super::text::duration(t),
-        si(degrees(theta), "°", 3),
-        si(u, "m/s", 3)
+    let description = t!(
+        "flutter-schematic",
+        time = super::text::duration(t),
+        twist = si(degrees(theta), "°", 3),
+        drawn = &drawn_as,
+        wind = si(u, "m/s", 3)
     );
     fig.with_marker(Marker::text(
-        format!("wind U = {}", si(u, "m/s", 3)),
+        t!("flutter-wind", speed = si(u, "m/s", 3)),
         (-11.5, 3.6),
         Ink::Black,
     ))
@@ -100,7 +102,7 @@ pub(super) fn deck(theta: f64, peak: f64, u: f64, t: f64) -> Figure {
         Ink::Black,
     ))
     .with_marker(Marker::text(
-        format!("({drawn_as})"),
+        t!("flutter-drawn-note", drawn = drawn_as),
         (3.5, -3.7),
         Ink::Black,
     ))

@@ -4,7 +4,6 @@ use super::{text, Aero, Results, Section, P, SIMPLEST_SLOPE, U_MAX};
 use crate::declare::{Param, ReadoutDef};
 use zeta_solver::flutter::scanlan::{SATURATION_DEG, TACOMA_INERTIA, TACOMA_WIDTH};
 use zeta_solver::flutter::{degrees, TACOMA_STRUCTURAL_DAMPING, TACOMA_TORSION_HZ};
-use zeta_solver::Regime;
 
 /// The parameter table.
 pub(super) fn params() -> Vec<Param<P>> {
@@ -96,11 +95,7 @@ pub(super) fn params() -> Vec<Param<P>> {
 /// The readout table.
 pub(super) fn readouts() -> Vec<ReadoutDef<Results>> {
     vec![
-        ReadoutDef::text("regime", "regime of a small twist", |r| {
-            r.regime
-                .map_or("no oscillation", |g: Regime| g.key())
-                .to_string()
-        }),
+        ReadoutDef::text("regime", "regime of a small twist", text::regime),
         ReadoutDef::number(
             "U_crit",
             "critical (flutter) speed U_crit, searched up to 100 m/s",

@@ -1,11 +1,11 @@
-//! The flutter demo's prose: summary, equation, the flutter-versus-resonance table and the
-//! figures' text alternatives.
+//! The flutter demo's prose: summary, equation, the flutter-versus-resonance table, the
+//! figures' text alternatives and the regime readout.
 
 use super::{Aero, Results, U_MAX};
-use crate::format::{si, significant};
+use crate::format::{self, si, significant};
 use crate::spec::Table;
+use crate::t;
 use zeta_solver::flutter::{degrees, FlutterState};
-use zeta_solver::Regime;
 
 /// Metres per second in one mile per hour.
 const MPH: f64 = 0.447_04;
@@ -139,153 +139,143 @@ pub(super) fn crossing_frequency(r: &Results) -> Option<f64> {
     Some(r.model.state(uc)?.omega)
 }
 
-fn model_name(r: &Results) -> &'static str {
+/// Which model of the wind's moment, as a selector key of the messages that name it.
+fn model_key(r: &Results) -> &'static str {
     match (r.p.aero, r.p.section) {
-        (Aero::Simplest, _) => "the simplest picture",
-        (_, super::Section::H) => "the 1940 H-section",
-        (_, super::Section::Box) => "the streamlined box",
+        (Aero::Simplest, _) => "simplest",
+        (_, super::Section::H) => "h",
+        (_, super::Section::Box) => "box",
     }
+}
+
+/// The regime of a small twist in words ("no oscillation" where the wind leaves none).
+pub(super) fn regime(r: &Results) -> String {
+    r.regime
+        .map_or_else(|| t!("flutter-no-oscillation"), format::regime)
 }
 
 /// The A₂* plot in words.
 pub(super) fn describe_derivative(r: &Results, threshold: f64) -> String {
-    let now = match r.state {
-        Some(s) => format!(
-            "At U = {} (K = {}, U/(fB) = {}) A₂* = {}, {} the threshold {}.",
-            si(r.p.u, "m/s", 3),
-            reduced_frequency(&s),
-            si(s.reduced_velocity, "", 3),
-            si(s.a2, "", 3),
-            if s.a2 > threshold { "above" } else { "below" },
-            si(threshold, "", 3)
+    let description = t!("flutter-describe-derivative", model = model_key(r));
+    match r.state {
+        Some(s) => t!(
+            "flutter-describe-derivative-now",
+            description = description,
+            speed = si(r.p.u, "m/s", 3),
+            k = reduced_frequency(&s),
+            reduced_velocity = si(s.reduced_velocity, "", 3),
+            a2 = si(s.a2, "", 3),
+            side = if s.a2 > threshold { "above" } else { "below" },
+            threshold = si(threshold, "", 3)
         ),
-        None => String::new(),
-    };
-    format!(
-        "A₂* against reduced velocity for {} (teaching approximation, not measured values): \
-         the twist grows where A₂* rises above 4Iζ_s/(ρB⁴). {now}",
-        model_name(r)
-    )
+        None => description,
+    }
 }
 
 /// The damping curve in words.
 pub(super) fn describe_damping(r: &Results) -> String {
-    let crit = match r.u_crit {
-        Some(uc) if uc <= U_MAX => {
-            format!("crosses zero at the critical speed {}", speed_text(uc))
-        }
-        Some(uc) => format!(
-            "would cross zero only at {}, beyond the plotted {}",
-            si(uc, "m/s", 3),
-            si(U_MAX, "m/s", 3)
-        ),
-        None => "never crosses zero up to 100 m/s: the wind only adds damping".to_string(),
+    let (crossing, speed) = match r.u_crit {
+        Some(uc) if uc <= U_MAX => ("inside", speed_text(uc)),
+        Some(uc) => ("beyond", si(uc, "m/s", 3)),
+        None => ("never", String::new()),
     };
-    let now = match r.state {
+    let description = t!(
+        "flutter-describe-damping",
+        model = model_key(r),
+        zeta_s = si(r.p.zeta_s, "", 3),
+        crossing = crossing,
+        speed = speed,
+        limit = si(U_MAX, "m/s", 3)
+    );
+    match r.state {
         Some(s) => {
             let z = s.damping_ratio();
-            let side = if z > 0.0 {
-                "positive (stable)"
+            let sign = if z > 0.0 {
+                "positive"
             } else if z < 0.0 {
-                "negative (flutter)"
+                "negative"
             } else {
                 "zero"
             };
-            format!(
-                " At U = {} it is {}, {}.",
-                si(r.p.u, "m/s", 3),
-                si(z, "", 3),
-                side
+            t!(
+                "flutter-describe-damping-now",
+                description = description,
+                speed = si(r.p.u, "m/s", 3),
+                zeta = si(z, "", 3),
+                sign = sign
             )
         }
-        None => " At this wind the deck does not oscillate.".to_string(),
-    };
-    format!(
-        "Effective damping ratio of {} from ζ_s = {} in calm air; it {}.{now}",
-        model_name(r),
-        si(r.p.zeta_s, "", 3),
-        crit
-    )
+        None => t!("flutter-describe-damping-still", description = description),
+    }
 }
 
 /// The root locus in words.
 pub(super) fn describe_locus(r: &Results) -> String {
-    let now = match r.state {
-        Some(s) => format!(
-            " At U = {} the poles are {} ± {}i 1/s, in the {} half-plane.",
-            si(r.p.u, "m/s", 3),
-            si(s.growth_rate(), "", 3),
-            si(s.omega, "", 4),
-            if s.growth_rate() > 0.0 {
-                "right (unstable)"
-            } else {
-                "left (stable)"
-            }
-        ),
-        None => String::new(),
-    };
     let first = r.locus.first();
     let last = r.locus.last();
-    format!(
-        "Pole pair as the wind rises: {} ± {}i 1/s in calm air, {} ± {}i 1/s at {}{}.{now}",
-        si(first.map_or(f64::NAN, |s| s.growth_rate()), "", 3),
-        si(first.map_or(f64::NAN, |s| s.omega), "", 4),
-        si(last.map_or(f64::NAN, |s| s.growth_rate()), "", 3),
-        si(last.map_or(f64::NAN, |s| s.omega), "", 4),
-        si(U_MAX, "m/s", 3),
-        match crossing_frequency(r) {
-            Some(_) => ", crossing the imaginary axis at U_crit",
-            None => ", never crossing the imaginary axis",
-        },
-    )
+    let description = t!(
+        "flutter-describe-locus",
+        re_calm = si(first.map_or(f64::NAN, |s| s.growth_rate()), "", 3),
+        im_calm = si(first.map_or(f64::NAN, |s| s.omega), "", 4),
+        re_end = si(last.map_or(f64::NAN, |s| s.growth_rate()), "", 3),
+        im_end = si(last.map_or(f64::NAN, |s| s.omega), "", 4),
+        limit = si(U_MAX, "m/s", 3),
+        crosses = if crossing_frequency(r).is_some() {
+            "yes"
+        } else {
+            "no"
+        }
+    );
+    match r.state {
+        Some(s) => t!(
+            "flutter-describe-locus-now",
+            description = description,
+            speed = si(r.p.u, "m/s", 3),
+            re = si(s.growth_rate(), "", 3),
+            im = si(s.omega, "", 4),
+            side = if s.growth_rate() > 0.0 {
+                "right"
+            } else {
+                "left"
+            }
+        ),
+        None => description,
+    }
 }
 
 /// The twist in words.
 pub(super) fn describe_response(r: &Results) -> String {
-    let regime = r.regime.map_or("no oscillation", |g: Regime| g.key());
     let end = r.history.amplitude.last().map_or(0.0, |&a| degrees(a));
-    let window = duration(r.window);
-    let change = match (r.limit, r.t_large) {
-        (Some(lc), Some(t)) if t <= r.window => format!(
-            "grows to {} by the end of the plot ({window}), settling near the limit cycle of {} \
-             (90 % of it after {})",
-            si(end, "°", 3),
-            si(degrees(lc), "°", 3),
-            duration(t)
-        ),
-        (Some(lc), Some(t)) => format!(
-            "grows only to {} by the end of the plot ({window}); it would take {} to reach 90 % \
-             of the limit cycle of {}",
-            si(end, "°", 3),
-            duration(t),
-            si(degrees(lc), "°", 3)
-        ),
-        (Some(lc), None) => format!(
-            "settles onto the limit cycle of {} by the end of the plot ({window})",
-            si(degrees(lc), "°", 3)
-        ),
-        (None, _) if end > r.p.theta0_deg => {
-            format!(
-                "grows to {} by the end of the plot ({window})",
-                si(end, "°", 3)
+    let (case, limit, time) = match (r.limit, r.t_large) {
+        (Some(lc), Some(t)) if t <= r.window => ("settling", Some(lc), Some(t)),
+        (Some(lc), Some(t)) => ("slow", Some(lc), Some(t)),
+        (Some(lc), None) => ("settled", Some(lc), None),
+        (None, _) if end > r.p.theta0_deg => ("grows", None, None),
+        (None, _) => ("dies", None, None),
+    };
+    let oscillation = r.state.map_or_else(
+        || t!("flutter-oscillation"),
+        |s| {
+            t!(
+                "flutter-oscillation-at",
+                frequency = si(s.frequency_hz(), "", 3)
             )
-        }
-        (None, _) => format!(
-            "dies down to {} by the end of the plot ({window})",
-            si(end, "°", 3)
-        ),
-    };
-    let survive = if r.limit.is_some_and(|lc| degrees(lc) > 45.0) {
-        " A twist this large would have torn any deck apart long before; the bound is only \
-         a teaching assumption."
+        },
+    );
+    let description = t!(
+        "flutter-describe-response",
+        regime = regime(r),
+        twist = si(r.p.theta0_deg, "°", 3),
+        oscillation = oscillation,
+        case = case,
+        end = si(end, "°", 3),
+        window = duration(r.window),
+        limit = si(limit.map_or(f64::NAN, degrees), "°", 3),
+        time = time.map_or_else(String::new, duration)
+    );
+    if r.limit.is_some_and(|lc| degrees(lc) > 45.0) {
+        t!("flutter-describe-response-torn", description = description)
     } else {
-        ""
-    };
-    let freq = r.state.map_or(String::new(), |s| {
-        format!(" at {} Hz", si(s.frequency_hz(), "", 3))
-    });
-    format!(
-        "{regime}: from an initial twist of {}, the oscillation{freq} {change}.{survive}",
-        si(r.p.theta0_deg, "°", 3),
-    )
+        description
+    }
 }

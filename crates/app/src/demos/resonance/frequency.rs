@@ -4,6 +4,7 @@
 use super::{text, Results, View, R_RANGE};
 use crate::figure::{Axis, Figure, LineStyle, Marker, Series};
 use crate::plot::{sampled, Ink};
+use crate::t;
 use std::f64::consts::FRAC_1_SQRT_2;
 use zeta_solver::frf;
 use zeta_solver::grid::decibels;
@@ -21,7 +22,7 @@ const DB_RANGE: (f64, f64) = (-45.0, 40.0);
 const PHASE_RANGE: (f64, f64) = (-190.0, 10.0);
 
 fn ratio_axis() -> Axis {
-    Axis::log("frequency ratio r = ω/ωₙ", "", R_RANGE)
+    Axis::log(t!("resonance-axis-ratio"), "", R_RANGE)
 }
 
 /// `|H|` in the current view (plain ratio or dB).
@@ -59,6 +60,15 @@ fn clip_above(points: &mut [(f64, f64)], top: f64) {
     }
 }
 
+/// The legend entry of the family of damping ratios.
+fn family_label() -> String {
+    t!(
+        "resonance-family",
+        from = text::fmt_ratio(FAMILY[0]),
+        to = text::fmt_ratio(FAMILY[FAMILY.len() - 1])
+    )
+}
+
 /// |H(r)| for the family and the current ζ, with the peak, the half-power band and the drive.
 pub(super) fn magnitude(res: &Results, grid: &[f64]) -> Figure {
     let (z, view) = (res.p.zeta, res.p.view);
@@ -75,7 +85,11 @@ pub(super) fn magnitude(res: &Results, grid: &[f64]) -> Figure {
     for (i, &zf) in FAMILY.iter().enumerate() {
         let mut pts = sampled(grid, |r| gain(r, zf, view));
         clip_above(&mut pts, top);
-        let label = if i == 0 { "family ζ = 0.01 … 1" } else { "" };
+        let label = if i == 0 {
+            family_label()
+        } else {
+            String::new()
+        };
         series.push(Series::new(label, pts, LineStyle::dotted(Ink::Black, 1.2)));
         if LABELLED.contains(&zf) {
             // Beside the peaks, level with |H(1)| = 1/(2ζ); in the linear view only where
@@ -86,7 +100,11 @@ pub(super) fn magnitude(res: &Results, grid: &[f64]) -> Figure {
                 View::Linear => 0.12 * top,
             };
             if at.1 < 0.93 * top && at.1 > floor {
-                markers.push(Marker::text(format!("ζ = {zf}"), at, Ink::Black));
+                markers.push(Marker::text(
+                    format!("ζ = {}", text::fmt_ratio(zf)),
+                    at,
+                    Ink::Black,
+                ));
             }
         }
     }
@@ -112,13 +130,13 @@ pub(super) fn magnitude(res: &Results, grid: &[f64]) -> Figure {
     let mut cur = sampled(grid, |r| gain(r, z, view));
     clip_above(&mut cur, top);
     series.push(Series::new(
-        format!("current ζ = {}", text::fmt_ratio(z)),
+        t!("resonance-current", zeta = text::fmt_ratio(z)),
         cur,
         LineStyle::solid(Ink::Blue, 3.0),
     ));
     let drive = res.p.r;
     series.push(Series::new(
-        format!("drive r = {}", text::fmt_ratio(drive)),
+        t!("resonance-drive", ratio = text::fmt_ratio(drive)),
         vec![(drive, y_range.0), (drive, y_range.1)],
         LineStyle::dashed(Ink::Vermillion, 1.5),
     ));
@@ -129,19 +147,19 @@ pub(super) fn magnitude(res: &Results, grid: &[f64]) -> Figure {
     ));
     if let Some(p) = res.peak {
         markers.push(Marker::cross(
-            "peak",
+            t!("resonance-peak"),
             (p.ratio.max(R_RANGE.0), level(p.gain, view).min(top)),
             Ink::Green,
         ));
     }
     let (title, y) = match view {
         View::Db => (
-            "Amplification |H(r)| in dB",
-            Axis::linear("magnitude 20·log₁₀|H|", "dB", y_range),
+            t!("resonance-plot-magnitude-db"),
+            Axis::linear(t!("resonance-axis-magnitude-db"), "dB", y_range),
         ),
         View::Linear => (
-            MAGNITUDE_TITLE,
-            Axis::linear("amplification |H| = X/(F₀/k)", "", y_range),
+            t!("resonance-plot-magnitude"),
+            Axis::linear(t!("resonance-axis-amplification"), "", y_range),
         ),
     };
     Figure {
@@ -157,28 +175,36 @@ pub(super) fn phase(res: &Results, grid: &[f64]) -> Figure {
     let z = res.p.zeta;
     let degrees = |zeta: f64| sampled(grid, |r| frf::phase(r, zeta).to_degrees());
     let mut fig = Figure::plot(
-        PHASE_TITLE,
+        t!("resonance-plot-phase"),
         ratio_axis(),
-        Axis::linear("phase ∠H (lag of x behind F)", "°", PHASE_RANGE),
+        Axis::linear(t!("resonance-axis-phase"), "°", PHASE_RANGE),
     );
     for (i, &zf) in FAMILY.iter().enumerate() {
-        let label = if i == 0 { "family ζ = 0.01 … 1" } else { "" };
+        let label = if i == 0 {
+            family_label()
+        } else {
+            String::new()
+        };
         fig = fig.with_line(label, degrees(zf), LineStyle::dotted(Ink::Black, 1.2));
     }
     let drive = res.p.r;
     let ph = frf::phase(drive, z);
     fig.with_line(
-        format!("current ζ = {}", text::fmt_ratio(z)),
+        t!("resonance-current", zeta = text::fmt_ratio(z)),
         degrees(z),
         LineStyle::solid(Ink::Blue, 3.0),
     )
     .with_line(
-        format!("drive r = {}", text::fmt_ratio(drive)),
+        t!("resonance-drive", ratio = text::fmt_ratio(drive)),
         vec![(drive, PHASE_RANGE.0), (drive, PHASE_RANGE.1)],
         LineStyle::dashed(Ink::Vermillion, 1.5),
     )
     .with_marker(Marker::dot("", (drive, ph.to_degrees()), Ink::Vermillion))
-    .with_marker(Marker::cross("−90° at r = 1", (1.0, -90.0), Ink::Green))
+    .with_marker(Marker::cross(
+        t!("resonance-quadrature"),
+        (1.0, -90.0),
+        Ink::Green,
+    ))
     .described(text::describe_phase(res, ph))
 }
 

@@ -278,9 +278,7 @@ fn readouts() -> Vec<ReadoutDef<Results>> {
             4,
             |r| r.resp.beats().period(),
         ),
-        ReadoutDef::text("beats", "beats in x(t)", |r| {
-            text::beats(r.resp.beats()).to_string()
-        }),
+        ReadoutDef::text("beats", "beats in x(t)", |r| text::beats(r.resp.beats())),
     ]
 }
 

@@ -1,7 +1,10 @@
-//! The resonance demo's prose: summary, equation and the figures' text alternatives.
+//! The resonance demo's prose: summary, equation, the figures' text alternatives and
+//! legend entries, and the beats readout.
 
 use super::{Results, View, P};
-use crate::format::si;
+use crate::format::{si, significant_plain};
+use crate::i18n::number;
+use crate::t;
 use zeta_solver::forced::{Beats, HarmonicResponse};
 use zeta_solver::frf::{self, HalfPowerPoints};
 use zeta_solver::grid::decibels;
@@ -27,57 +30,51 @@ pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 <msup><mi>r</mi><mn>2</mn></msup><mo>+</mo><mn>2</mn><mi>i</mi><mi>ζ</mi><mi>r</mi></mrow></mfrac>\
 </mrow></math>";
 
-/// A dimensionless number with 3 significant digits and no trailing zeros (`0.05`, `1.05`).
+/// A dimensionless number with 3 significant digits and no trailing zeros (`0.05`, `1.05`),
+/// in the interface language's digits and decimal separator.
 pub(super) fn fmt_ratio(r: f64) -> String {
-    let s = si(r, "", 3);
-    if s.contains('.') && !s.contains('e') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
+    let plain = significant_plain(r, 3);
+    if !plain.contains('.') || plain.contains('e') {
+        return si(r, "", 3);
     }
+    let trimmed = plain.trim_end_matches('0').trim_end_matches('.');
+    let decimals = trimmed.split_once('.').map_or(0, |(_, f)| f.len());
+    number::fixed(trimmed.parse().unwrap_or(r), decimals)
 }
 
 /// The half-power points of the |H| curve in words: the two-sided peak width, the
 /// one-sided band of a broad peak, or the −3 dB cut-off when there is no peak.
 pub(super) fn describe_band(h: &HalfPowerPoints, width: Option<f64>, has_peak: bool) -> String {
     match (h.lower, width) {
-        (Some(l), Some(w)) => format!(
-            "half-power points (|H| = |H|max/√2) at r = {} and {}: peak width r₂ − r₁ = {}",
-            fmt_ratio(l),
-            fmt_ratio(h.upper),
-            fmt_ratio(w)
+        (Some(l), Some(w)) => t!(
+            "resonance-band-width",
+            lower = fmt_ratio(l),
+            upper = fmt_ratio(h.upper),
+            width = fmt_ratio(w)
         ),
-        _ if has_peak => format!(
-            "|H| stays above |H|max/√2 from r = 0 up to r = {}: the peak has no lower \
-             half-power point, so its half-power width is undefined",
-            fmt_ratio(h.upper)
-        ),
-        _ => format!(
-            "|H| falls to 1/√2 of its static value (−3 dB) at the cut-off r = {}; without a \
-             peak there is no half-power width",
-            fmt_ratio(h.upper)
-        ),
+        _ if has_peak => t!("resonance-band-broad", upper = fmt_ratio(h.upper)),
+        _ => t!("resonance-band-cutoff", upper = fmt_ratio(h.upper)),
     }
 }
 
 /// The legend entry of the half-power level line.
 pub(super) fn band_legend(h: &HalfPowerPoints, width: Option<f64>, has_peak: bool) -> String {
     match width {
-        Some(w) => format!("half-power width r₂ − r₁ = {}", fmt_ratio(w)),
-        None if has_peak => format!("|H| ≥ |H|max/√2 up to r = {}", fmt_ratio(h.upper)),
-        None => format!("−3 dB cut-off r = {}", fmt_ratio(h.upper)),
+        Some(w) => t!("resonance-legend-width", width = fmt_ratio(w)),
+        None if has_peak => t!("resonance-legend-broad", upper = fmt_ratio(h.upper)),
+        None => t!("resonance-legend-cutoff", upper = fmt_ratio(h.upper)),
     }
 }
 
 /// Whether beats show in x(t), and if not why (see [`Beats`]).
-pub(super) fn beats(b: Beats) -> &'static str {
+pub(super) fn beats(b: Beats) -> String {
     match b {
-        Beats::Visible { .. } => "visible",
-        Beats::NoFreeOscillation => "none (no free oscillation, ζ ≥ 1)",
-        Beats::NoDrive => "none (constant force)",
-        Beats::SameFrequency => "none (driven at ω_d)",
-        Beats::TooFast { .. } => "none (as fast as the oscillation)",
-        Beats::DiesOut { .. } => "none (the free motion dies out first)",
+        Beats::Visible { .. } => t!("resonance-beats-visible"),
+        Beats::NoFreeOscillation => t!("resonance-beats-no-free-oscillation"),
+        Beats::NoDrive => t!("resonance-beats-no-drive"),
+        Beats::SameFrequency => t!("resonance-beats-same-frequency"),
+        Beats::TooFast { .. } => t!("resonance-beats-too-fast"),
+        Beats::DiesOut { .. } => t!("resonance-beats-dies-out"),
     }
 }
 
@@ -92,89 +89,80 @@ pub(super) fn describe_magnitude(res: &Results, band_text: &str) -> String {
         }
     };
     let peak_text = match res.peak {
-        Some(p) => format!(
-            "resonant peak {} at r = {}",
-            unit_text(p.gain),
-            si(p.ratio, "", 4)
+        Some(p) => t!(
+            "resonance-peak-at",
+            gain = unit_text(p.gain),
+            ratio = si(p.ratio, "", 4)
         ),
-        None => "no resonant peak (ζ ≥ 1/√2): |H| only falls from 1 at r = 0".to_string(),
+        None => t!("resonance-no-peak"),
     };
-    format!(
-        "Magnitude{} for ζ = {}: {}; {}. At the drive r = {} the amplification is {}.",
-        if db { " in dB" } else { "" },
-        fmt_ratio(z),
-        peak_text,
-        band_text,
-        fmt_ratio(res.p.r),
-        unit_text(frf::magnitude(res.p.r, z)),
+    t!(
+        "resonance-describe-magnitude",
+        view = if db { "db" } else { "linear" },
+        zeta = fmt_ratio(z),
+        peak = peak_text,
+        band = band_text,
+        drive = fmt_ratio(res.p.r),
+        gain = unit_text(frf::magnitude(res.p.r, z)),
     )
 }
 
 /// The phase plot in words; `ph` is the phase at the drive \[rad\].
 pub(super) fn describe_phase(res: &Results, ph: f64) -> String {
-    format!(
-        "Phase of the displacement behind the force for ζ = {}: 0° at low frequency, −90° at \
-         r = 1 for every damping ratio, towards −180° above resonance; the smaller ζ, the \
-         sharper the switch. At the drive r = {} the lag is {} ({} rad).",
-        fmt_ratio(res.p.zeta),
-        fmt_ratio(res.p.r),
-        si(ph.to_degrees(), "°", 3),
-        si(ph, "", 4),
+    t!(
+        "resonance-describe-phase",
+        zeta = fmt_ratio(res.p.zeta),
+        drive = fmt_ratio(res.p.r),
+        degrees = si(ph.to_degrees(), "°", 3),
+        radians = si(ph, "", 4),
     )
 }
 
 /// The time response in words.
 pub(super) fn describe_time(p: &P, resp: &HarmonicResponse, t_end: f64, max_x: f64) -> String {
-    let head = format!(
-        "Driven from rest at r = {} (ω = {}) for {}",
+    let (ratio, omega, span) = (
         fmt_ratio(p.r),
         si(p.r * p.wn, "rad/s", 3),
-        si(t_end, "s", 3)
+        si(t_end, "s", 3),
     );
-    let tau = 1.0 / (p.zeta * p.wn);
+    let tau = si(1.0 / (p.zeta * p.wn), "s", 3);
     let Some(s) = resp.steady_state() else {
-        return format!(
-            "{head}: no steady state; the amplitude grows, reaching {}.",
-            si(max_x, "m", 3)
+        return t!(
+            "resonance-describe-time-growing",
+            ratio = ratio,
+            omega = omega,
+            span = span,
+            largest = si(max_x, "m", 3)
         );
     };
-    let amp = si(s.amplitude, "m", 3);
-    let body = if let Some(tb) = resp.beats().period() {
-        format!(
-            "the free and forced motions beat with period {} (time constant of the decay {}), \
-             towards the steady amplitude {}",
-            si(tb, "s", 3),
-            si(tau, "s", 3),
-            amp
-        )
+    let period = resp.beats().period();
+    let case = if period.is_some() {
+        "beats"
     } else if (p.r - 1.0).abs() < p.zeta.max(0.02) && p.zeta < 0.5 {
-        format!(
-            "at resonance the amplitude builds up towards the steady amplitude {} with time \
-             constant 1/(ζωₙ) = {}",
-            amp,
-            si(tau, "s", 3)
-        )
+        "build-up"
     } else {
-        format!(
-            "after a transient (time constant {}) it settles to the steady amplitude {}",
-            si(tau, "s", 3),
-            amp
-        )
+        "transient"
     };
-    format!(
-        "{head}: {body}, lagging the force by {}. Largest excursion shown {}.",
-        si(s.phase.to_degrees().abs(), "°", 3),
-        si(max_x, "m", 3)
+    t!(
+        "resonance-describe-time",
+        case = case,
+        ratio = ratio,
+        omega = omega,
+        span = span,
+        period = si(period.unwrap_or(f64::NAN), "s", 3),
+        tau = tau,
+        amplitude = si(s.amplitude, "m", 3),
+        lag = si(s.phase.to_degrees().abs(), "°", 3),
+        largest = si(max_x, "m", 3)
     )
 }
 
 /// The animated mass in words.
 pub(super) fn describe_schematic(force: f64, x: f64, t: f64) -> String {
-    format!(
-        "Mass on a spring and damper over a fixed base, pushed by the force F(t) = {} \
-         (arrow above the mass) at t = {}: displaced {} from rest.",
-        si(force, "N", 3),
-        si(t, "s", 3),
-        si(x, "m", 3)
+    t!(
+        "resonance-schematic",
+        force = si(force, "N", 3),
+        time = si(t, "s", 3),
+        displacement = si(x, "m", 3)
     )
 }

@@ -5,6 +5,7 @@ use super::{text, Results, P};
 use crate::figure::{Axis, Figure, LineStyle, Marker, Series};
 use crate::plot::{sampled, Ink};
 use crate::schematic::{mass_spring_damper, MassLabels};
+use crate::t;
 use std::f64::consts::TAU;
 use zeta_solver::forced::HarmonicResponse;
 use zeta_solver::grid::times;
@@ -42,12 +43,15 @@ pub(super) fn response(res: &Results) -> Figure {
         reach = largest(env.iter().map(|q| q.1), reach);
         let lower = env.iter().map(|&(t, e)| (t, -e)).collect();
         let style = LineStyle::dotted(Ink::Green, 2.0);
-        series.push(Series::new("envelope ±E(t)", env, style));
+        series.push(Series::new(t!("resonance-envelope"), env, style));
         series.push(Series::new("", lower, style));
     }
     if let Some(s) = resp.steady_state() {
         reach = reach.max(s.amplitude);
-        for (sign, label) in [(1.0, "steady amplitude ±X"), (-1.0, "")] {
+        for (sign, label) in [
+            (1.0, t!("resonance-steady-amplitude")),
+            (-1.0, String::new()),
+        ] {
             series.push(Series::new(
                 label,
                 vec![(0.0, sign * s.amplitude), (t_end, sign * s.amplitude)],
@@ -64,9 +68,9 @@ pub(super) fn response(res: &Results) -> Figure {
     Figure {
         series,
         ..Figure::plot(
-            TIME_TITLE,
-            Axis::linear("time t", "s", (0.0, t_end)),
-            Axis::linear("displacement x", "m", (-1.12 * m, 1.9 * m)),
+            t!("resonance-plot-time"),
+            Axis::linear(t!("axis-time"), "s", (0.0, t_end)),
+            Axis::linear(t!("axis-displacement"), "m", (-1.12 * m, 1.9 * m)),
         )
     }
     .with_origin_lines()
@@ -84,11 +88,12 @@ pub(super) fn schematic(p: &P, resp: &HarmonicResponse, t_end: f64, t: f64) -> F
     );
     let x = resp.displacement(t);
     let force = resp.force().at(t);
+    let base = t!("resonance-fixed-base");
     let labels = MassLabels {
         mass: "m",
         spring: "k",
         damper: "c",
-        base: "fixed base",
+        base: &base,
     };
     let mut fig = mass_spring_damper(
         x / reach,
