@@ -96,7 +96,10 @@ fn inline_vars(i: &ast::InlineExpression<&str>, vars: &mut BTreeSet<String>) {
 }
 
 fn english() -> BTreeMap<String, BTreeSet<String>> {
-    messages(&std::fs::read_to_string(catalogue_path("en")).unwrap(), "en")
+    messages(
+        &std::fs::read_to_string(catalogue_path("en")).unwrap(),
+        "en",
+    )
 }
 
 #[test]

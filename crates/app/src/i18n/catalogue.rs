@@ -220,7 +220,10 @@ mod tests {
         set_active(locale::by_tag("en-XA").unwrap_or(locale::english()));
         let pseudo = format("regimes-plot-response", None);
         set_active(locale::english());
-        assert!(pseudo.starts_with('[') && pseudo.contains("ŕéšþöñšé"), "{pseudo}");
+        assert!(
+            pseudo.starts_with('[') && pseudo.contains("ŕéšþöñšé"),
+            "{pseudo}"
+        );
         assert_eq!(format("no-such-message", None), "no-such-message");
     }
 

@@ -16,13 +16,11 @@
 
 mod catalogue;
 pub mod declared;
-mod legacy;
 pub mod locale;
 pub mod number;
 pub mod pseudo;
 
 pub use catalogue::{active, is_loaded, load, take_missing, ENGLISH_FTL};
-pub use legacy::{has_whole, tr, Lang};
 pub use locale::{Dir, Locale, LOCALES};
 
 use fluent_bundle::{FluentArgs, FluentValue};

@@ -14,7 +14,6 @@ mod translate;
 pub use session::Session;
 
 use crate::demos;
-use crate::i18n::Lang;
 use crate::theme::Theme;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
@@ -31,10 +30,6 @@ pub fn start() {
 
 thread_local! {
     static LAST_PANIC: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
-}
-
-fn lang() -> Lang {
-    Lang::from_tag(crate::i18n::active().tag)
 }
 
 #[derive(Serialize)]

@@ -1,12 +1,11 @@
 //! [`Session`]: one open demo, its parameters, canvases and last figures.
 
 use super::result::{Description, SetResult, UpdateResult};
-use super::translate::{translate_figure, translate_spec};
-use super::{js_err, lang, theme, to_js};
+use super::translate::translate_spec;
+use super::{js_err, theme, to_js};
 use crate::canvas::{Canvas, Measured};
 use crate::demos::{self, Demo, Frame};
 use crate::export;
-use crate::i18n::{tr, Lang};
 use crate::params::{resolve_query, Params};
 use crate::render::{ease_axes, hold_axes, render, render_with, AxisRanges, PlotGeometry, Raster};
 use crate::spec::DemoSpec;
@@ -110,15 +109,6 @@ impl Session {
     /// devicePixelRatio) and returns `{readouts, descriptions, time_span}`.
     pub fn update(&mut self, scale: f64, dark: bool) -> Result<JsValue, JsError> {
         let mut frame = self.demo.update(&self.params);
-        let l = lang();
-        if l != Lang::En {
-            for r in &mut frame.readouts {
-                r.text = tr(l, &r.text).into_owned();
-            }
-            for f in &mut frame.figures {
-                translate_figure(f, l);
-            }
-        }
         let mut derived = Vec::new();
         for (key, value) in self.demo.derived_params() {
             if let Some((v, _)) = self.params.set_raw(&self.spec, key, &format!("{value}")) {
@@ -173,10 +163,7 @@ impl Session {
             time_span: frame.time_span,
             derived,
             provisional: self.demo.provisional(),
-            tour: self
-                .demo
-                .tour()
-                .map(|t| t.translated(|s| tr(l, s).into_owned())),
+            tour: self.demo.tour(),
         });
         self.frame = Some(frame);
         out
@@ -191,14 +178,13 @@ impl Session {
     /// Draws the schematic at time `t` \[s\]; returns its text alternative.
     #[wasm_bindgen(js_name = drawSchematic)]
     pub fn draw_schematic(&self, t: f64, scale: f64, dark: bool) -> Result<String, JsError> {
-        let (Some(canvas), Some(mut fig)) = (
+        let (Some(canvas), Some(fig)) = (
             &self.schematic_canvas,
             self.demo
                 .schematic(&self.params, if t.is_finite() { t } else { 0.0 }),
         ) else {
             return Ok(String::new());
         };
-        translate_figure(&mut fig, lang());
         if let Some(backend) = Canvas::new(canvas) {
             let scale = if scale.is_finite() {
                 scale.clamp(0.5, 4.0)

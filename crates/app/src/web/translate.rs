@@ -1,30 +1,8 @@
 //! The spec, figures and notices in the page's language (keys, symbols and units unchanged).
 
 use crate::i18n::declared::{self, slug};
-use crate::i18n::{tr, Lang};
 use crate::spec::DemoSpec;
 use serde::Serialize;
-
-/// Translates, in place, every string of a figure that the page shows.
-pub(super) fn translate_figure(fig: &mut crate::figure::Figure, l: Lang) {
-    if l == Lang::En {
-        return;
-    }
-    let t = |s: &mut String| *s = tr(l, s).into_owned();
-    t(&mut fig.title);
-    t(&mut fig.description);
-    t(&mut fig.x.label);
-    t(&mut fig.y.label);
-    for s in &mut fig.series {
-        t(&mut s.label);
-    }
-    for m in &mut fig.markers {
-        t(&mut m.label);
-    }
-    if let Some(h) = &mut fig.heatmap {
-        t(&mut h.label);
-    }
-}
 
 /// The spec with its declared strings in the active language (keys, symbols and units
 /// unchanged), each looked up by its structural id ([`crate::i18n::declared`]).

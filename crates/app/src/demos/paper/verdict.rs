@@ -70,36 +70,7 @@ pub struct Tour {
     pub claims: Vec<ClaimView>,
 }
 
-impl Tour {
-    /// The tour with every human string passed through `tr`; ids, links and verdicts
-    /// unchanged. The tour is already built in the interface language; this remains
-    /// only for callers that still pass strings through the old text-matched catalogue.
-    pub fn translated(&self, tr: impl Fn(&str) -> String) -> Tour {
-        Tour {
-            exhibits: self
-                .exhibits
-                .iter()
-                .map(|e| ExhibitView {
-                    place: tr(&e.place),
-                    shows: tr(&e.shows),
-                    ..e.clone()
-                })
-                .collect(),
-            claims: self
-                .claims
-                .iter()
-                .map(|c| ClaimView {
-                    place: tr(&c.place),
-                    says: tr(&c.says),
-                    claimed: tr(&c.claimed),
-                    computed: tr(&c.computed),
-                    reason: tr(&c.reason),
-                    ..c.clone()
-                })
-                .collect(),
-        }
-    }
-}
+impl Tour {}
 
 /// `?demo=<demo>&<query>`.
 pub(super) fn link(demo: &str, query: &str) -> String {
