@@ -7,23 +7,18 @@ import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import { fileURLToPath } from 'node:url';
 import { serve } from './support/server.mjs';
-import { launch, open, SHOTS } from './support/browser.mjs';
+import { open, SHOTS } from './support/browser.mjs';
+import { useSession, server as app, browser } from './support/session.mjs';
 
 const DOCS = fileURLToPath(new URL('../docs', import.meta.url));
-let app;
 let docs;
-let browser;
 
+useSession();
 before(async () => {
-  app = await serve();
   docs = await serve({ root: DOCS });
-  browser = await launch();
 });
-
 after(async () => {
-  await browser?.close();
   await docs?.close();
-  await app?.close();
 });
 
 /** Opens the docs' host page embedding the app view `q`; returns {page, context, errors, …}. */
