@@ -5,8 +5,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
-import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { sidewaysOverflow } from './support/page.mjs';
+import { golden, goldenState, assertReadoutsMatch, assertFiguresMatch } from './support/golden.mjs';
+import { assertFitsPhone } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -34,13 +34,9 @@ test('defaults and every preset show the readouts and text alternatives computed
     const { page, errors, context } = await open(browser, `${server.url}?demo=analogy&${state.query}`);
     await assertReadoutsMatch(page, state);
     await assertTwinsAgree(page);
-    for (const [i, plot] of ['responses', 'energy'].entries()) {
-      assert.equal(await page.textContent(`#desc-${plot}`), state.figures[i].description, `${state.name}: ${plot}`);
-    }
-    for (const plot of ['responses', 'energy', 'schematic']) {
-      const [ink] = await canvasFingerprint(page, plot);
-      assert.ok(ink > 2000, `${state.name}: ${plot} has ink (${ink} px)`);
-    }
+    await assertFiguresMatch(page, state, ['responses', 'energy'], 2000);
+    const [ink] = await canvasFingerprint(page, 'schematic');
+    assert.ok(ink > 2000, `${state.name}: schematic has ink (${ink} px)`);
     const slug = state.name.split(/[ :(]/)[0].toLowerCase();
     await page.screenshot({ path: `${SHOTS}analogy-${slug}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);
@@ -153,12 +149,7 @@ test('a phone-sized screen shows both machines', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=analogy`, {
     viewport: { width: 360, height: 740 },
   });
-  const [ink] = await canvasFingerprint(page, 'schematic');
-  assert.ok(ink > 1000);
-  // Nothing of the demo sticks out sideways (the equation and the table scroll in their own boxes).
-  const overflow = await sidewaysOverflow(page);
-  assert.ok(overflow <= 0.5, `nothing wider than the screen (${overflow} px)`);
-  await page.screenshot({ path: `${SHOTS}analogy-360.png`, fullPage: true });
+  await assertFitsPhone(page, 'schematic', 'analogy-360.png');
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForReadout, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { waitForChange, allReadouts, assertSameReadouts } from './support/page.mjs';
+import { waitForChange, allReadouts, assertLinkReproduces } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 const ID = 'quarter-car';
@@ -97,14 +97,7 @@ for (const [key, readouts, plots] of SLIDERS) {
     for (const p of plots) {
       assert.notDeepEqual(await canvasFingerprint(page, p), pixels[p], `${p} redrawn after moving ${key}`);
     }
-    // The link now on the address bar reproduces what the page shows.
-    await page.waitForTimeout(400);
-    const after = await allReadouts(page);
-    const link = await page.evaluate(() => location.href);
-    const again = await open(browser, link);
-    assertSameReadouts(await allReadouts(again.page), after, `${key}: the link reproduces the state`);
-    assert.deepEqual(again.errors, []);
-    await again.context.close();
+    await assertLinkReproduces(page, key);
     assert.deepEqual(errors, []);
     await context.close();
   });

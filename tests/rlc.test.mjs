@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
-import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
+import { golden, goldenState, assertReadoutsMatch, assertFiguresMatch } from './support/golden.mjs';
 import { waitForChange } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
@@ -22,11 +22,7 @@ test('defaults and every preset show the readouts and text alternatives computed
   for (const state of golden('rlc').states) {
     const { page, errors, context } = await open(browser, `${server.url}?demo=rlc&${state.query}`);
     await assertReadoutsMatch(page, state);
-    for (const [i, plot] of PLOTS.entries()) {
-      const [ink] = await canvasFingerprint(page, plot);
-      assert.ok(ink > 2000, `${state.name}: ${plot} has ink (${ink} px)`);
-      assert.equal(await page.textContent(`#desc-${plot}`), state.figures[i].description, `${state.name}: ${plot}`);
-    }
+    await assertFiguresMatch(page, state, PLOTS, 2000);
     const slug = state.name.split(',')[0].toLowerCase().replace(/[^a-z]+/g, '-');
     await page.screenshot({ path: `${SHOTS}rlc-${slug}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);

@@ -1,6 +1,6 @@
 // Helpers the end-to-end tests share for reading readouts and moving sliders.
 import assert from 'node:assert/strict';
-import { readout } from './browser.mjs';
+import { open, canvasFingerprint, readout, SHOTS } from './browser.mjs';
 
 /** Waits until readout `key` differs from `old` (a data-value string). */
 export async function waitForChange(page, key, old) {
@@ -30,6 +30,20 @@ export function assertSameReadouts(got, want, what) {
   }
 }
 
+/**
+ * Once the address bar has caught up (400 ms), opens its link in a fresh page of the same
+ * browser and asserts that page shows the same readouts, with a clean console.
+ */
+export async function assertLinkReproduces(page, what) {
+  await page.waitForTimeout(400);
+  const after = await allReadouts(page);
+  const link = await page.evaluate(() => location.href);
+  const again = await open(page.context().browser(), link);
+  assertSameReadouts(await allReadouts(again.page), after, `${what}: the link reproduces the state`);
+  assert.deepEqual(again.errors, []);
+  await again.context.close();
+}
+
 /** Presses ArrowRight on slider `key` and waits until readout `watch` changes. */
 export async function nudge(page, key, watch) {
   const old = await readout(page, watch);
@@ -51,4 +65,16 @@ export function sidewaysOverflow(page) {
     }
     return worst;
   });
+}
+
+/**
+ * On a phone-sized page: plot `plot` is drawn, nothing of the demo sticks out sideways
+ * (the equation and the table scroll in their own boxes); saves screenshot `shot`.
+ */
+export async function assertFitsPhone(page, plot, shot) {
+  const [ink] = await canvasFingerprint(page, plot);
+  assert.ok(ink > 1000, `${plot} has ink (${ink} px)`);
+  const overflow = await sidewaysOverflow(page);
+  assert.ok(overflow <= 0.5, `nothing wider than the screen (${overflow} px)`);
+  await page.screenshot({ path: `${SHOTS}${shot}`, fullPage: true });
 }
