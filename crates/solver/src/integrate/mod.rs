@@ -364,8 +364,8 @@ fn finite_at<const N: usize>(y: &[f64; N], t: f64) -> Result<(), IntegrationErro
 }
 
 /// One step of a fixed-step driver: advances `y` from `t` by `h` (s) with `method`, adds
-/// the work to `stats`, and checks the new state, which belongs to `t_next` (s). The
-/// drivers pass `t_next` rather than `t + h` so that it is the grid's own end time.
+/// the work to `stats`, and checks the new state at `t_next` (s), the step's end as the
+/// driver's grid gives it (which may differ from `t + h` by rounding).
 fn counted_step<M: FixedStep + ?Sized, const N: usize, S: System<N>>(
     method: &M,
     sys: &S,
