@@ -61,31 +61,17 @@ macro_rules! fixed_step {
 /// `$body` evaluated with `$m` bound to the one-step method (a unit struct) that
 /// `$method: &Method` names: how [`Method`] forwards each trait to the methods themselves.
 macro_rules! with_method {
-    ($method:expr, |$m:ident| $body:expr) => {{
-        use $crate::integrate::{Euler, Heun, Method, Rk4, SymplecticEuler, Trapezoid};
+    ($method:expr, |$m:ident| $body:expr) => {
+        with_method!(@each $method, $m, $body, Euler, SymplecticEuler, Heun, Rk4, Trapezoid)
+    };
+    (@each $method:expr, $m:ident, $body:expr, $($variant:ident),+) => {
         match $method {
-            Method::Euler => {
-                let $m = Euler;
+            $($crate::integrate::Method::$variant => {
+                let $m = $crate::integrate::$variant;
                 $body
-            }
-            Method::SymplecticEuler => {
-                let $m = SymplecticEuler;
-                $body
-            }
-            Method::Heun => {
-                let $m = Heun;
-                $body
-            }
-            Method::Rk4 => {
-                let $m = Rk4;
-                $body
-            }
-            Method::Trapezoid => {
-                let $m = Trapezoid;
-                $body
-            }
+            })+
         }
-    }};
+    };
 }
 
 pub mod analysis;
