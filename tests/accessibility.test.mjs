@@ -2,7 +2,7 @@
 // light and dark themes; a keyboard-only session completes a task in every demo (change a
 // parameter, play, export) with focus moving in a logical order; the phone layout has no
 // horizontal scroll. Screenshots land in target/screenshots/.
-import { test, before } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
 import { open, SHOTS } from './support/browser.mjs';
@@ -13,9 +13,10 @@ const AXE = require.resolve('axe-core/axe.min.js');
 
 let ids;
 
-useSession();
-before(async () => {
-  ids = await demoIds();
+useSession({
+  setup: async () => {
+    ids = await demoIds();
+  },
 });
 
 test('axe-core finds no violations on any demo, light and dark', async () => {

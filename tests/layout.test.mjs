@@ -5,7 +5,7 @@
 // the same in the embed view, where one plot and two sliders fit a 400 × 600 frame without
 // scrolling. Screenshots of every demo mid-drag at 1280 × 800 and 360 × 740 land in
 // target/screenshots/. One browser; one page per window size, switching demos in place.
-import { test, before } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, waitForReadouts, SHOTS } from './support/browser.mjs';
 import { useSession, server, browser, demoIds } from './support/session.mjs';
@@ -15,9 +15,10 @@ const EMBED_SIZES = [[800, 720], [400, 600]];
 
 let ids;
 
-useSession();
-before(async () => {
-  ids = await demoIds();
+useSession({
+  setup: async () => {
+    ids = await demoIds();
+  },
 });
 
 /** Opens demo `id` in place (as the menu does) and waits until it has drawn and settled. */

@@ -9,7 +9,7 @@ import { useSession, server, browser, demoIds } from './support/session.mjs';
 
 const SOAK_EVENTS = 10_000;
 
-useSession(['--js-flags=--expose-gc', '--enable-precise-memory-info']);
+useSession({ launchArgs: ['--js-flags=--expose-gc', '--enable-precise-memory-info'] });
 
 /**
  * Every demo's controls as the page builds them from its spec: `[{id, keys, ranges}]` with

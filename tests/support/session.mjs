@@ -9,13 +9,15 @@ export let server;
 export let browser;
 
 /**
- * Registers the before/after hooks that start and close `server` and `browser`;
- * `launchArgs` are extra Chromium flags.
+ * Registers the before/after hooks that start and close `server` and `browser`.
+ * `launchArgs` are extra Chromium flags; `setup` runs once both are up, in the same hook
+ * (a second top-level `before` is not ordered after this one by Node 20's runner).
  */
-export function useSession(launchArgs = []) {
+export function useSession({ launchArgs = [], setup } = {}) {
   before(async () => {
     server = await serve();
     browser = await launch(launchArgs);
+    await setup?.();
   });
   after(async () => {
     await browser?.close();
