@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch, assertFiguresMatch } from './support/golden.mjs';
-import { assertFitsPhone } from './support/page.mjs';
+import { assertFitsPhone, pressOn, typeValue, waitForChange } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -113,13 +113,8 @@ for (const [key, readouts, plot] of SLIDERS) {
     for (const r of readouts) before[r] = await readout(page, r);
     const pixels = await canvasFingerprint(page, plot);
     const table = await liveCells(page);
-    await page.focus(`#p-${key}`);
-    await page.keyboard.press('ArrowRight');
-    await page.keyboard.press('PageUp');
-    await page.waitForFunction(
-      ([r, v]) => document.querySelector(`[data-readout="${r}"]`).dataset.value !== v,
-      [readouts[0], before[readouts[0]]],
-    );
+    await pressOn(page, key, 'ArrowRight', 'PageUp');
+    await waitForChange(page, readouts[0], before[readouts[0]]);
     for (const r of readouts) assert.notEqual(await readout(page, r), before[r], `${r} changed`);
     await assertTwinsAgree(page);
     assert.notDeepEqual(await canvasFingerprint(page, plot), pixels, `${plot} redrawn`);
@@ -136,8 +131,7 @@ for (const [key, readouts, plot] of SLIDERS) {
 
 test('typing a mass changes the inductance to the same number', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=analogy`);
-  await page.fill('input[type=number][data-key="m"]', '2.5');
-  await page.press('input[type=number][data-key="m"]', 'Enter');
+  await typeValue(page, 'm', '2.5');
   await waitForUrlParam(page, 'm', '2.5');
   await page.waitForFunction(() => document.querySelector('[data-readout="L"]').dataset.value === '2.5');
   await assertTwinsAgree(page);

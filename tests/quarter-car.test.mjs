@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForReadout, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { waitForChange, allReadouts, assertLinkReproduces } from './support/page.mjs';
+import { waitForChange, allReadouts, assertLinkReproduces, pressOn, assertDrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 const ID = 'quarter-car';
@@ -82,9 +82,7 @@ for (const [key, readouts, plots] of SLIDERS) {
     const before = await allReadouts(page);
     const pixels = {};
     for (const p of plots) pixels[p] = await canvasFingerprint(page, p);
-    await page.focus(`#p-${key}`);
-    await page.keyboard.press('PageUp');
-    await page.keyboard.press('ArrowRight');
+    await pressOn(page, key, 'PageUp', 'ArrowRight');
     if (readouts.length) {
       for (const r of readouts) await waitForChange(page, r, before[r]);
     } else {
@@ -138,7 +136,7 @@ test('undamped and extreme settings keep a working page', async () => {
   await waitForChange(page, 'zeta', zeta);
   await page.waitForTimeout(200);
   assert.equal(await readout(page, 'regime'), 'overdamped');
-  for (const plot of PLOTS) assert.ok((await canvasFingerprint(page, plot))[0] > 1000);
+  await assertDrawn(page, PLOTS, 1000);
   const all = await page.$$eval('[data-readout]', (els) => els.map((e) => e.dataset.value + e.textContent));
   assert.ok(all.every((s) => !/NaN|Infinity/.test(s)), all.join(' | '));
   assert.deepEqual(errors, []);
@@ -149,7 +147,7 @@ test('narrow screen (360 × 740)', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=${ID}`, {
     viewport: { width: 360, height: 740 },
   });
-  for (const plot of PLOTS) assert.ok((await canvasFingerprint(page, plot))[0] > 1000);
+  await assertDrawn(page, PLOTS, 1000);
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
   assert.ok(overflow <= 0, `no horizontal scroll (${overflow} px)`);
   await page.screenshot({ path: `${SHOTS}quarter-car-360.png`, fullPage: true });

@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { allReadouts, assertLinkReproduces, assertFitsPhone } from './support/page.mjs';
+import { allReadouts, assertLinkReproduces, assertFitsPhone, pressOn, waitForChange } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 const ID = 'resonance';
@@ -81,13 +81,8 @@ for (const [key, readouts, plot] of SLIDERS) {
     const before = await allReadouts(page);
     const pixels = await canvasFingerprint(page, plot);
     const start = new URL(page.url()).searchParams.get(key);
-    await page.focus(`#p-${key}`);
-    await page.keyboard.press('ArrowRight');
-    await page.keyboard.press('PageUp');
-    await page.waitForFunction(
-      ([k, v]) => document.querySelector(`[data-readout="${k}"]`).dataset.value !== v,
-      [readouts[0], before[readouts[0]]],
-    );
+    await pressOn(page, key, 'ArrowRight', 'PageUp');
+    await waitForChange(page, readouts[0], before[readouts[0]]);
     for (const k of readouts) assert.notEqual(await readout(page, k), before[k], `${k} changed`);
     await page.waitForFunction(
       ([k, v]) => {

@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch, assertFiguresMatch } from './support/golden.mjs';
-import { waitForChange } from './support/page.mjs';
+import { waitForChange, pressOn, assertDrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -65,9 +65,7 @@ for (const [key, readouts] of SLIDERS) {
     const before = await shownReadouts(page);
     const pixels = {};
     for (const p of PLOTS) pixels[p] = await canvasFingerprint(page, p);
-    await page.focus(`#p-${key}`);
-    await page.keyboard.press('ArrowRight');
-    await page.keyboard.press('PageUp');
+    await pressOn(page, key, 'ArrowRight', 'PageUp');
     if (readouts.length) {
       for (const r of readouts) await waitForChange(page, r, before[r]);
     } else {
@@ -127,7 +125,7 @@ test('narrow screen (360 × 740)', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=rlc`, {
     viewport: { width: 360, height: 740 },
   });
-  for (const plot of PLOTS) assert.ok((await canvasFingerprint(page, plot))[0] > 1000);
+  await assertDrawn(page, PLOTS, 1000);
   await page.screenshot({ path: `${SHOTS}rlc-360.png`, fullPage: true });
   assert.deepEqual(errors, []);
   await context.close();

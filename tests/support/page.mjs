@@ -44,6 +44,19 @@ export async function assertLinkReproduces(page, what) {
   await again.context.close();
 }
 
+/** Focuses slider `key` and presses `keys` on it in turn (e.g. 'ArrowRight', 'PageUp'). */
+export async function pressOn(page, key, ...keys) {
+  await page.focus(`#p-${key}`);
+  for (const k of keys) await page.keyboard.press(k);
+}
+
+/** Types `value` into parameter `key`'s number box and presses Enter. */
+export async function typeValue(page, key, value) {
+  const box = `input[type=number][data-key="${key}"]`;
+  await page.fill(box, value);
+  await page.press(box, 'Enter');
+}
+
 /** Presses ArrowRight on slider `key` and waits until readout `watch` changes. */
 export async function nudge(page, key, watch) {
   const old = await readout(page, watch);
@@ -67,13 +80,26 @@ export function sidewaysOverflow(page) {
   });
 }
 
+/** Asserts that each plot of `plots` has more than `minInk` inked pixels. */
+export async function assertDrawn(page, plots, minInk) {
+  for (const plot of plots) {
+    const [ink] = await canvasFingerprint(page, plot);
+    assert.ok(ink > minInk, `${plot} has ink (${ink} px)`);
+  }
+}
+
+/** Asserts that the table row named by readout `key`'s value is marked as the current one. */
+export async function assertRowCurrent(page, key) {
+  const row = await readout(page, key);
+  assert.equal(await page.getAttribute(`tr[data-row="${row}"]`, 'aria-current'), 'true', `row ${row}`);
+}
+
 /**
  * On a phone-sized page: plot `plot` is drawn, nothing of the demo sticks out sideways
  * (the equation and the table scroll in their own boxes); saves screenshot `shot`.
  */
 export async function assertFitsPhone(page, plot, shot) {
-  const [ink] = await canvasFingerprint(page, plot);
-  assert.ok(ink > 1000, `${plot} has ink (${ink} px)`);
+  await assertDrawn(page, [plot], 1000);
   const overflow = await sidewaysOverflow(page);
   assert.ok(overflow <= 0.5, `nothing wider than the screen (${overflow} px)`);
   await page.screenshot({ path: `${SHOTS}${shot}`, fullPage: true });
