@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForReadout, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { waitForChange, allReadouts, assertLinkReproduces, pressOn, assertDrawn } from './support/page.mjs';
+import { waitForChange, allReadouts, assertLinkReproduces, pressOn, assertDrawn, fingerprints, assertRedrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 const ID = 'quarter-car';
@@ -80,8 +80,7 @@ for (const [key, readouts, plots] of SLIDERS) {
   test(`the keyboard moves ${key}; readouts, pixels and the URL follow`, async () => {
     const { page, errors, context } = await open(browser, `${server.url}?demo=${ID}`);
     const before = await allReadouts(page);
-    const pixels = {};
-    for (const p of plots) pixels[p] = await canvasFingerprint(page, p);
+    const pixels = await fingerprints(page, plots);
     await pressOn(page, key, 'PageUp', 'ArrowRight');
     if (readouts.length) {
       for (const r of readouts) await waitForChange(page, r, before[r]);
@@ -92,9 +91,7 @@ for (const [key, readouts, plots] of SLIDERS) {
         assert.equal(await readout(page, r), before[r], `${r} is relative to x0`);
       }
     }
-    for (const p of plots) {
-      assert.notDeepEqual(await canvasFingerprint(page, p), pixels[p], `${p} redrawn after moving ${key}`);
-    }
+    await assertRedrawn(page, pixels, `after moving ${key}`);
     await assertLinkReproduces(page, key);
     assert.deepEqual(errors, []);
     await context.close();

@@ -80,6 +80,20 @@ export function sidewaysOverflow(page) {
   });
 }
 
+/** The pixel fingerprints of `plots`, by plot key (see `canvasFingerprint`). */
+export async function fingerprints(page, plots) {
+  const out = {};
+  for (const p of plots) out[p] = await canvasFingerprint(page, p);
+  return out;
+}
+
+/** Asserts that every plot of `before` (from `fingerprints`) has been drawn anew since. */
+export async function assertRedrawn(page, before, what) {
+  for (const [p, pixels] of Object.entries(before)) {
+    assert.notDeepEqual(await canvasFingerprint(page, p), pixels, `${p} redrawn ${what}`);
+  }
+}
+
 /** Asserts that each plot of `plots` has more than `minInk` inked pixels. */
 export async function assertDrawn(page, plots, minInk) {
   for (const plot of plots) {
