@@ -2,30 +2,21 @@
 // light and dark themes; a keyboard-only session completes a task in every demo (change a
 // parameter, play, export) with focus moving in a logical order; the phone layout has no
 // horizontal scroll. Screenshots land in target/screenshots/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
-import { serve } from './support/server.mjs';
-import { launch, open, SHOTS } from './support/browser.mjs';
+import { open, SHOTS } from './support/browser.mjs';
+import { useSession, server, browser, demoIds } from './support/session.mjs';
 
 const require = createRequire(import.meta.url);
 const AXE = require.resolve('axe-core/axe.min.js');
 
-let server;
-let browser;
 let ids;
 
-before(async () => {
-  server = await serve();
-  browser = await launch();
-  const { page, context } = await open(browser, server.url);
-  ids = await page.$$eval('#demo-select option', (os) => os.map((o) => o.value));
-  await context.close();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
+useSession({
+  setup: async () => {
+    ids = await demoIds();
+  },
 });
 
 test('axe-core finds no violations on any demo, light and dark', async () => {

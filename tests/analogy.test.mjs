@@ -5,8 +5,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
-import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { sidewaysOverflow } from './support/page.mjs';
+import { golden, goldenState, assertReadoutsMatch, assertFiguresMatch } from './support/golden.mjs';
+import { assertFitsPhone, pressOn, typeValue, waitForChange } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -34,13 +34,9 @@ test('defaults and every preset show the readouts and text alternatives computed
     const { page, errors, context } = await open(browser, `${server.url}?demo=analogy&${state.query}`);
     await assertReadoutsMatch(page, state);
     await assertTwinsAgree(page);
-    for (const [i, plot] of ['responses', 'energy'].entries()) {
-      assert.equal(await page.textContent(`#desc-${plot}`), state.figures[i].description, `${state.name}: ${plot}`);
-    }
-    for (const plot of ['responses', 'energy', 'schematic']) {
-      const [ink] = await canvasFingerprint(page, plot);
-      assert.ok(ink > 2000, `${state.name}: ${plot} has ink (${ink} px)`);
-    }
+    await assertFiguresMatch(page, state, ['responses', 'energy'], 2000);
+    const [ink] = await canvasFingerprint(page, 'schematic');
+    assert.ok(ink > 2000, `${state.name}: schematic has ink (${ink} px)`);
     const slug = state.name.split(/[ :(]/)[0].toLowerCase();
     await page.screenshot({ path: `${SHOTS}analogy-${slug}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);
@@ -117,13 +113,8 @@ for (const [key, readouts, plot] of SLIDERS) {
     for (const r of readouts) before[r] = await readout(page, r);
     const pixels = await canvasFingerprint(page, plot);
     const table = await liveCells(page);
-    await page.focus(`#p-${key}`);
-    await page.keyboard.press('ArrowRight');
-    await page.keyboard.press('PageUp');
-    await page.waitForFunction(
-      ([r, v]) => document.querySelector(`[data-readout="${r}"]`).dataset.value !== v,
-      [readouts[0], before[readouts[0]]],
-    );
+    await pressOn(page, key, 'ArrowRight', 'PageUp');
+    await waitForChange(page, readouts[0], before[readouts[0]]);
     for (const r of readouts) assert.notEqual(await readout(page, r), before[r], `${r} changed`);
     await assertTwinsAgree(page);
     assert.notDeepEqual(await canvasFingerprint(page, plot), pixels, `${plot} redrawn`);
@@ -140,8 +131,7 @@ for (const [key, readouts, plot] of SLIDERS) {
 
 test('typing a mass changes the inductance to the same number', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=analogy`);
-  await page.fill('input[type=number][data-key="m"]', '2.5');
-  await page.press('input[type=number][data-key="m"]', 'Enter');
+  await typeValue(page, 'm', '2.5');
   await waitForUrlParam(page, 'm', '2.5');
   await page.waitForFunction(() => document.querySelector('[data-readout="L"]').dataset.value === '2.5');
   await assertTwinsAgree(page);
@@ -153,12 +143,7 @@ test('a phone-sized screen shows both machines', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=analogy`, {
     viewport: { width: 360, height: 740 },
   });
-  const [ink] = await canvasFingerprint(page, 'schematic');
-  assert.ok(ink > 1000);
-  // Nothing of the demo sticks out sideways (the equation and the table scroll in their own boxes).
-  const overflow = await sidewaysOverflow(page);
-  assert.ok(overflow <= 0.5, `nothing wider than the screen (${overflow} px)`);
-  await page.screenshot({ path: `${SHOTS}analogy-360.png`, fullPage: true });
+  await assertFitsPhone(page, 'schematic', 'analogy-360.png');
   assert.deepEqual(errors, []);
   await context.close();
 });

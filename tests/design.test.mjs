@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
-import { golden, assertReadoutsMatch } from './support/golden.mjs';
+import { golden, assertReadoutsMatch, assertFiguresMatch, stateSlug } from './support/golden.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -23,20 +23,15 @@ async function checkEchoes(page, p) {
   assert.equal(await num(page, 'grid_size'), p.n * p.n);
 }
 
-const shortName = (label) => label.replace(/[^A-Za-z0-9]+/g, '-').replace(/^-|-$/g, '').toLowerCase();
 
 for (const state of golden('design').states) {
   test(`"${state.name}" from the URL: readouts and text alternatives as recorded natively, every plot drawn`, async () => {
     const { page, errors, context } = await open(browser, `${server.url}?demo=design&${state.query}`);
     await assertReadoutsMatch(page, state);
-    for (const [i, plot] of PLOTS.entries()) {
-      const [ink] = await canvasFingerprint(page, plot);
-      assert.ok(ink > 3000, `${plot} has ink (${ink} px)`);
-      assert.equal(await page.textContent(`#desc-${plot}`), state.figures[i].description, `${plot} described as recorded`);
-    }
+    await assertFiguresMatch(page, state, PLOTS, 3000);
     const [mapInk] = await canvasFingerprint(page, 'map');
     assert.ok(mapInk > 60000, `the heat map fills its plot (${mapInk} px)`);
-    await page.screenshot({ path: `${SHOTS}design-${shortName(state.name)}-1280.png`, fullPage: true });
+    await page.screenshot({ path: `${SHOTS}design-${stateSlug(state.name)}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);
     await context.close();
   });

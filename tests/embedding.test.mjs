@@ -1,24 +1,14 @@
 // End to end, for lecturers: embedding in sandboxed iframes on another origin, the host
 // postMessage API, embed options, the strict CSP, a sub-path deployment, offline reload,
 // the share dialog, printing, and screenshots of the embed view.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createServer } from 'node:http';
+import { open, readout, waitForReadout, SHOTS } from './support/browser.mjs';
 import { serve } from './support/server.mjs';
-import { launch, open, readout, waitForReadout, SHOTS } from './support/browser.mjs';
+import { useSession, server as app, browser } from './support/session.mjs';
 
-let app;
-let browser;
-
-before(async () => {
-  app = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await app?.close();
-});
+useSession();
 
 /** A host page on a second origin (another port) embedding two demos. */
 async function hostServer(appUrl) {

@@ -5,6 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import { open, readout, canvasFingerprint, waitForReadout } from './support/browser.mjs';
+import { typeValue } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -115,8 +116,7 @@ test('the text alternative changes when the response changes and is announced', 
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&zeta=0.1`);
   const first = await page.textContent('#desc-response');
   assert.match(first, /underdamped: swings past equilibrium \d+ times before settling/);
-  await page.fill('input[type=number][data-key="zeta"]', '1.5');
-  await page.press('input[type=number][data-key="zeta"]', 'Enter');
+  await typeValue(page, 'zeta', '1.5');
   await page.waitForFunction((f) => document.querySelector('#desc-response').textContent !== f, first);
   assert.match(await page.textContent('#desc-response'), /^overdamped/);
   await page.waitForFunction(() => /^overdamped/.test(document.querySelector('#plot-announcer').textContent));

@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { nudge } from './support/page.mjs';
+import { nudge, assertDrawn, assertRowCurrent } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -18,14 +18,9 @@ for (const state of golden('flutter').states) {
   test(`${state.name}: readouts as computed natively, plots drawn, regime row highlighted`, async () => {
     const { page, errors, context } = await open(browser, `${server.url}?demo=flutter&${state.query}`);
     await assertReadoutsMatch(page, state);
-    const regime = await readout(page, 'regime');
-    assert.equal(await page.getAttribute(`tr[data-row="${regime}"]`, 'aria-current'), 'true');
-    for (const key of PLOTS) {
-      const [ink] = await canvasFingerprint(page, key);
-      assert.ok(ink > 2000, `${key} has ink (${ink} px)`);
-    }
-    const [schematicInk] = await canvasFingerprint(page, 'schematic');
-    assert.ok(schematicInk > 500, `schematic drawn (${schematicInk} px)`);
+    await assertRowCurrent(page, 'regime');
+    await assertDrawn(page, PLOTS, 2000);
+    await assertDrawn(page, ['schematic'], 500);
     // The caption is the one computed natively.
     assert.equal(await page.textContent('#desc-response'), state.figures[3].description);
     assert.deepEqual(errors, []);
@@ -72,10 +67,7 @@ test('a narrow phone screen still shows every plot', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=flutter&${state.query}`, {
     viewport: { width: 360, height: 740 },
   });
-  for (const key of PLOTS) {
-    const [ink] = await canvasFingerprint(page, key);
-    assert.ok(ink > 1000, `${key} has ink (${ink} px)`);
-  }
+  await assertDrawn(page, PLOTS, 1000);
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth - innerWidth);
   assert.ok(overflow <= 0, `no sideways scrolling (${overflow} px)`);
   await page.screenshot({ path: `${SHOTS}flutter-failure-day-360.png`, fullPage: true });

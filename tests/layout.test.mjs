@@ -5,29 +5,20 @@
 // the same in the embed view, where one plot and two sliders fit a 400 × 600 frame without
 // scrolling. Screenshots of every demo mid-drag at 1280 × 800 and 360 × 740 land in
 // target/screenshots/. One browser; one page per window size, switching demos in place.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, waitForReadouts, SHOTS } from './support/browser.mjs';
+import { open, waitForReadouts, SHOTS } from './support/browser.mjs';
+import { useSession, server, browser, demoIds } from './support/session.mjs';
 
 const SIZES = [[1280, 800], [1440, 900], [1920, 1080], [768, 1024], [360, 740], [740, 360]];
 const EMBED_SIZES = [[800, 720], [400, 600]];
 
-let server;
-let browser;
 let ids;
 
-before(async () => {
-  server = await serve();
-  browser = await launch();
-  const { page, context } = await open(browser, server.url);
-  ids = await page.$$eval('#demo-select option', (os) => os.map((o) => o.value));
-  await context.close();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
+useSession({
+  setup: async () => {
+    ids = await demoIds();
+  },
 });
 
 /** Opens demo `id` in place (as the menu does) and waits until it has drawn and settled. */

@@ -2,28 +2,25 @@
 // (docs/host-example.html, served on one port) embeds the app (served on another) and
 // drives it over postMessage — schema, whole state, playback, exports, resize, authoring
 // overrides and a keyboard-only prediction — and exported files reopen their view.
-import { test, before, after } from 'node:test';
+import { test, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import { fileURLToPath } from 'node:url';
 import { serve } from './support/server.mjs';
-import { launch, open, SHOTS } from './support/browser.mjs';
+import { open, SHOTS } from './support/browser.mjs';
+import { typeValue } from './support/page.mjs';
+import { useSession, server as app, browser } from './support/session.mjs';
 
 const DOCS = fileURLToPath(new URL('../docs', import.meta.url));
-let app;
 let docs;
-let browser;
 
-before(async () => {
-  app = await serve();
-  docs = await serve({ root: DOCS });
-  browser = await launch();
+useSession({
+  setup: async () => {
+    docs = await serve({ root: DOCS });
+  },
 });
-
 after(async () => {
-  await browser?.close();
   await docs?.close();
-  await app?.close();
 });
 
 /** Opens the docs' host page embedding the app view `q`; returns {page, context, errors, …}. */
@@ -305,8 +302,7 @@ test('the Share dialog authors ranges, readouts, theme, language, a prediction a
     assert.equal(await page.getAttribute('input[type=range][data-key="zeta"]', 'max'), '0.2');
     assert.equal(await page.getAttribute('html', 'lang'), 'es');
     // The lecturer's preset came along in the token; it sets values through the Rust parser.
-    await page.fill('input[type=number][data-key="zeta"]', '0.15');
-    await page.press('input[type=number][data-key="zeta"]', 'Enter');
+    await typeValue(page, 'zeta', '0.15');
     await page.waitForFunction(() => Math.abs(Number(document.querySelector('[data-readout="zeta"]').dataset.value) - 0.15) < 1e-12);
     await page.click('.lecturer-presets button:has-text("Light damping")');
     await page.waitForFunction(() => Math.abs(Number(document.querySelector('[data-readout="zeta"]').dataset.value) - 0.1) < 1e-12);

@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { nudge } from './support/page.mjs';
+import { nudge, assertDrawn, assertRowCurrent } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -17,13 +17,9 @@ for (const state of golden('nonlinear').states) {
   test(`${state.name}: readouts as computed natively, plots drawn, effect row highlighted`, async () => {
     const { page, errors, context } = await open(browser, `${server.url}?demo=nonlinear&${state.query}`);
     await assertReadoutsMatch(page, state);
-    const effect = await readout(page, 'effect');
-    assert.equal(await page.getAttribute(`tr[data-row="${effect}"]`, 'aria-current'), 'true');
-    for (const key of PLOTS) {
-      const [ink] = await canvasFingerprint(page, key);
-      assert.ok(ink > 2000, `${key} has ink (${ink} px)`);
-    }
-    assert.ok((await canvasFingerprint(page, 'schematic'))[0] > 500, 'schematic drawn');
+    await assertRowCurrent(page, 'effect');
+    await assertDrawn(page, PLOTS, 2000);
+    await assertDrawn(page, ['schematic'], 500);
     const slug = state.name.toLowerCase().replace(/[^a-z]+/g, '-');
     await page.screenshot({ path: `${SHOTS}nonlinear-${slug}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);
@@ -47,10 +43,7 @@ test('a narrow phone screen still shows every plot', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=nonlinear&${state.query}`, {
     viewport: { width: 360, height: 740 },
   });
-  for (const key of PLOTS) {
-    const [ink] = await canvasFingerprint(page, key);
-    assert.ok(ink > 1000, `${key} has ink (${ink} px)`);
-  }
+  await assertDrawn(page, PLOTS, 1000);
   await page.screenshot({ path: `${SHOTS}nonlinear-360.png`, fullPage: true });
   await page.locator('.plots').screenshot({ path: `${SHOTS}nonlinear-360-plots.png` });
   assert.deepEqual(errors, []);

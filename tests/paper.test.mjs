@@ -1,23 +1,12 @@
 // End to end: "The paper, checked". Every claim the issue names is on the page with its
 // verdict; every link opens a demo that shows the state and the value the tour states; the
 // tour reads well on a laptop and a phone, prints, and is accessible.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, SHOTS } from './support/browser.mjs';
+import { open, SHOTS } from './support/browser.mjs';
+import { useSession, server, browser } from './support/session.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+useSession();
 
 const REQUIRED = {
   'fig1-zeta-optimum': 'confirmed',

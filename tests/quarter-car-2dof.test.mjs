@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { nudge } from './support/page.mjs';
+import { nudge, assertDrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -22,11 +22,8 @@ for (const state of golden(ID).states) {
   test(`${state.name}: the readouts computed natively, every plot drawn`, async () => {
     const { page, errors, context } = await open(browser, url(state.query));
     await assertReadoutsMatch(page, state);
-    for (const key of PLOTS) {
-      const [ink] = await canvasFingerprint(page, key);
-      assert.ok(ink > 2000, `${key} has ink (${ink} px)`);
-    }
-    assert.ok((await canvasFingerprint(page, 'schematic'))[0] > 500, 'schematic drawn');
+    await assertDrawn(page, PLOTS, 2000);
+    await assertDrawn(page, ['schematic'], 500);
     const shot = state.name.replace(/[^A-Za-z0-9]+/g, '-').toLowerCase();
     await page.screenshot({ path: `${SHOTS}${ID}-${shot}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);
@@ -89,10 +86,7 @@ test('a narrow phone screen still shows every plot', async () => {
   const { page, errors, context } = await open(browser, url(goldenState(ID, 'Speed bump 5 cm at 10 m/s').query), {
     viewport: { width: 360, height: 740 },
   });
-  for (const key of PLOTS) {
-    const [ink] = await canvasFingerprint(page, key);
-    assert.ok(ink > 1000, `${key} has ink (${ink} px)`);
-  }
+  await assertDrawn(page, PLOTS, 1000);
   await page.screenshot({ path: `${SHOTS}${ID}-360.png`, fullPage: true });
   await page.locator('.plots').screenshot({ path: `${SHOTS}${ID}-360-plots.png` });
   assert.deepEqual(errors, []);

@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForReadout, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { waitForChange, allReadouts, assertSameReadouts } from './support/page.mjs';
+import { waitForChange, allReadouts, assertLinkReproduces, pressOn, assertDrawn, fingerprints, assertRedrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 const ID = 'quarter-car';
@@ -80,11 +80,8 @@ for (const [key, readouts, plots] of SLIDERS) {
   test(`the keyboard moves ${key}; readouts, pixels and the URL follow`, async () => {
     const { page, errors, context } = await open(browser, `${server.url}?demo=${ID}`);
     const before = await allReadouts(page);
-    const pixels = {};
-    for (const p of plots) pixels[p] = await canvasFingerprint(page, p);
-    await page.focus(`#p-${key}`);
-    await page.keyboard.press('PageUp');
-    await page.keyboard.press('ArrowRight');
+    const pixels = await fingerprints(page, plots);
+    await pressOn(page, key, 'PageUp', 'ArrowRight');
     if (readouts.length) {
       for (const r of readouts) await waitForChange(page, r, before[r]);
     } else {
@@ -94,17 +91,8 @@ for (const [key, readouts, plots] of SLIDERS) {
         assert.equal(await readout(page, r), before[r], `${r} is relative to x0`);
       }
     }
-    for (const p of plots) {
-      assert.notDeepEqual(await canvasFingerprint(page, p), pixels[p], `${p} redrawn after moving ${key}`);
-    }
-    // The link now on the address bar reproduces what the page shows.
-    await page.waitForTimeout(400);
-    const after = await allReadouts(page);
-    const link = await page.evaluate(() => location.href);
-    const again = await open(browser, link);
-    assertSameReadouts(await allReadouts(again.page), after, `${key}: the link reproduces the state`);
-    assert.deepEqual(again.errors, []);
-    await again.context.close();
+    await assertRedrawn(page, pixels, `after moving ${key}`);
+    await assertLinkReproduces(page, key);
     assert.deepEqual(errors, []);
     await context.close();
   });
@@ -145,7 +133,7 @@ test('undamped and extreme settings keep a working page', async () => {
   await waitForChange(page, 'zeta', zeta);
   await page.waitForTimeout(200);
   assert.equal(await readout(page, 'regime'), 'overdamped');
-  for (const plot of PLOTS) assert.ok((await canvasFingerprint(page, plot))[0] > 1000);
+  await assertDrawn(page, PLOTS, 1000);
   const all = await page.$$eval('[data-readout]', (els) => els.map((e) => e.dataset.value + e.textContent));
   assert.ok(all.every((s) => !/NaN|Infinity/.test(s)), all.join(' | '));
   assert.deepEqual(errors, []);
@@ -156,7 +144,7 @@ test('narrow screen (360 × 740)', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=${ID}`, {
     viewport: { width: 360, height: 740 },
   });
-  for (const plot of PLOTS) assert.ok((await canvasFingerprint(page, plot))[0] > 1000);
+  await assertDrawn(page, PLOTS, 1000);
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
   assert.ok(overflow <= 0, `no horizontal scroll (${overflow} px)`);
   await page.screenshot({ path: `${SHOTS}quarter-car-360.png`, fullPage: true });

@@ -4,6 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForUrlParam, waitForReadout, SHOTS } from './support/browser.mjs';
 import { golden, assertReadoutsMatch } from './support/golden.mjs';
+import { typeValue } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -79,11 +80,9 @@ test('a mouse drag on the ζ slider changes readouts, URL and pixels', async () 
 
 test('typing in the number box validates through Rust', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes`);
-  await page.fill('input[type=number][data-key="zeta"]', '1');
-  await page.press('input[type=number][data-key="zeta"]', 'Enter');
+  await typeValue(page, 'zeta', '1');
   await page.waitForFunction(() => document.querySelector('[data-readout="regime"]').dataset.value === 'critically damped');
-  await page.fill('input[type=number][data-key="zeta"]', '99');
-  await page.press('input[type=number][data-key="zeta"]', 'Enter');
+  await typeValue(page, 'zeta', '99');
   await waitForReadout(page, 'zeta', 3);
   assert.match(await page.textContent('#notices'), /outside/);
   assert.deepEqual(errors, []);

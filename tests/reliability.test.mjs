@@ -2,37 +2,21 @@
 // the page recovers on the next input in a fresh module instance; a soak of 10 000 slider events across every demo leaves the
 // JS heap and wasm memory flat with a clean console; hostile values in every parameter of
 // every demo are answered with notices and finite readouts.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve } from './support/server.mjs';
-import { launch, open, readout, waitForReadout } from './support/browser.mjs';
+import { open, readout, waitForReadout } from './support/browser.mjs';
+import { useSession, server, browser, demoIds } from './support/session.mjs';
 
 const SOAK_EVENTS = 10_000;
-let server;
-let browser;
 
-before(async () => {
-  server = await serve();
-  browser = await launch(['--js-flags=--expose-gc', '--enable-precise-memory-info']);
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
-
-async function demoIds(page) {
-  return page.$$eval('#demo-select option', (os) => os.map((o) => o.value));
-}
+useSession({ launchArgs: ['--js-flags=--expose-gc', '--enable-precise-memory-info'] });
 
 /**
  * Every demo's controls as the page builds them from its spec: `[{id, keys, ranges}]` with
  * the parameter keys and the number of enabled sliders. Some demos (`paper`) have none.
  */
 async function demoControls() {
-  const { page, context } = await open(browser, server.url);
-  const ids = await demoIds(page);
-  await context.close();
+  const ids = await demoIds();
   const out = [];
   for (const id of ids) {
     const { page: p, context: c } = await open(browser, `${server.url}?demo=${id}`);

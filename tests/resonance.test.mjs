@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { allReadouts, assertSameReadouts, sidewaysOverflow } from './support/page.mjs';
+import { allReadouts, assertLinkReproduces, assertFitsPhone, pressOn, waitForChange } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 const ID = 'resonance';
@@ -81,13 +81,8 @@ for (const [key, readouts, plot] of SLIDERS) {
     const before = await allReadouts(page);
     const pixels = await canvasFingerprint(page, plot);
     const start = new URL(page.url()).searchParams.get(key);
-    await page.focus(`#p-${key}`);
-    await page.keyboard.press('ArrowRight');
-    await page.keyboard.press('PageUp');
-    await page.waitForFunction(
-      ([k, v]) => document.querySelector(`[data-readout="${k}"]`).dataset.value !== v,
-      [readouts[0], before[readouts[0]]],
-    );
+    await pressOn(page, key, 'ArrowRight', 'PageUp');
+    await waitForChange(page, readouts[0], before[readouts[0]]);
     for (const k of readouts) assert.notEqual(await readout(page, k), before[k], `${k} changed`);
     await page.waitForFunction(
       ([k, v]) => {
@@ -98,13 +93,7 @@ for (const [key, readouts, plot] of SLIDERS) {
     );
     assert.notDeepEqual(await canvasFingerprint(page, plot), pixels, `${plot} redrawn`);
     await assertNoNonsense(page);
-    // The link now on the address bar reproduces what the page shows.
-    await page.waitForTimeout(400);
-    const after = await allReadouts(page);
-    const again = await open(browser, await page.evaluate(() => location.href));
-    assertSameReadouts(await allReadouts(again.page), after, `${key}: the link reproduces the state`);
-    assert.deepEqual(again.errors, []);
-    await again.context.close();
+    await assertLinkReproduces(page, key);
     assert.deepEqual(errors, []);
     await context.close();
   });
@@ -147,12 +136,7 @@ test('a phone-sized screen shows the whole demo', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=${ID}&zeta=0.05`, {
     viewport: { width: 360, height: 740 },
   });
-  const [ink] = await canvasFingerprint(page, 'magnitude');
-  assert.ok(ink > 1000);
-  // Nothing of the demo sticks out sideways (the equation and the table scroll in their own boxes).
-  const overflow = await sidewaysOverflow(page);
-  assert.ok(overflow <= 0.5, `nothing wider than the screen (${overflow} px)`);
-  await page.screenshot({ path: `${SHOTS}resonance-360.png`, fullPage: true });
+  await assertFitsPhone(page, 'magnitude', 'resonance-360.png');
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -4,8 +4,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
-import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { waitForChange } from './support/page.mjs';
+import { golden, goldenState, assertReadoutsMatch, assertFiguresMatch } from './support/golden.mjs';
+import { waitForChange, pressOn, assertDrawn, allReadouts, fingerprints, assertRedrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -13,20 +13,11 @@ useSession();
 const PLOTS = ['current', 'voltage'];
 const READOUTS = ['w0', 'f0', 'alpha', 'zeta', 'Q', 'bandwidth', 'R_crit', 'wd', 'settling_time'];
 
-/** Every readout's data-value on the page, by key. */
-function shownReadouts(page) {
-  return page.$$eval('[data-readout]', (els) => Object.fromEntries(els.map((e) => [e.dataset.readout, e.dataset.value])));
-}
-
 test('defaults and every preset show the readouts and text alternatives computed natively', async () => {
   for (const state of golden('rlc').states) {
     const { page, errors, context } = await open(browser, `${server.url}?demo=rlc&${state.query}`);
     await assertReadoutsMatch(page, state);
-    for (const [i, plot] of PLOTS.entries()) {
-      const [ink] = await canvasFingerprint(page, plot);
-      assert.ok(ink > 2000, `${state.name}: ${plot} has ink (${ink} px)`);
-      assert.equal(await page.textContent(`#desc-${plot}`), state.figures[i].description, `${state.name}: ${plot}`);
-    }
+    await assertFiguresMatch(page, state, PLOTS, 2000);
     const slug = state.name.split(',')[0].toLowerCase().replace(/[^a-z]+/g, '-');
     await page.screenshot({ path: `${SHOTS}rlc-${slug}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);
@@ -66,12 +57,9 @@ const SLIDERS = [
 for (const [key, readouts] of SLIDERS) {
   test(`the keyboard moves ${key}; readouts, URL and pixels follow`, async () => {
     const { page, errors, context } = await open(browser, `${server.url}?demo=rlc`);
-    const before = await shownReadouts(page);
-    const pixels = {};
-    for (const p of PLOTS) pixels[p] = await canvasFingerprint(page, p);
-    await page.focus(`#p-${key}`);
-    await page.keyboard.press('ArrowRight');
-    await page.keyboard.press('PageUp');
+    const before = await allReadouts(page);
+    const pixels = await fingerprints(page, PLOTS);
+    await pressOn(page, key, 'ArrowRight', 'PageUp');
     if (readouts.length) {
       for (const r of readouts) await waitForChange(page, r, before[r]);
     } else {
@@ -79,13 +67,13 @@ for (const [key, readouts] of SLIDERS) {
       await page.waitForTimeout(100);
       for (const r of READOUTS) assert.equal(await readout(page, r), before[r], `${r} does not depend on V₀`);
     }
-    for (const p of PLOTS) assert.notDeepEqual(await canvasFingerprint(page, p), pixels[p], `${p} redrawn`);
+    await assertRedrawn(page, pixels, `after moving ${key}`);
     // The page after a slider move equals the page opened from its link.
     await page.waitForFunction((k) => new URLSearchParams(location.search).get(k) !== null, key);
-    const after = await shownReadouts(page);
+    const after = await allReadouts(page);
     const url = page.url();
     const reopened = await open(browser, url);
-    assert.deepEqual(await shownReadouts(reopened.page), after, 'the link reproduces the readouts');
+    assert.deepEqual(await allReadouts(reopened.page), after, 'the link reproduces the readouts');
     assert.deepEqual(reopened.errors, []);
     await reopened.context.close();
     assert.deepEqual(errors, []);
@@ -131,7 +119,7 @@ test('narrow screen (360 × 740)', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=rlc`, {
     viewport: { width: 360, height: 740 },
   });
-  for (const plot of PLOTS) assert.ok((await canvasFingerprint(page, plot))[0] > 1000);
+  await assertDrawn(page, PLOTS, 1000);
   await page.screenshot({ path: `${SHOTS}rlc-360.png`, fullPage: true });
   assert.deepEqual(errors, []);
   await context.close();

@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
-import { golden, assertReadoutsMatch } from './support/golden.mjs';
+import { golden, assertReadoutsMatch, assertFiguresMatch, stateSlug } from './support/golden.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -13,18 +13,13 @@ useSession();
 const PLOTS = ['band', 'zeta_hist', 'hist'];
 const num = async (page, key) => Number(await readout(page, key));
 const urlValue = (page, key) => page.evaluate((k) => new URLSearchParams(location.search).get(k), key);
-const shortName = (label) => label.replace(/[^A-Za-z0-9]+/g, '-').replace(/^-|-$/g, '').toLowerCase();
 
 for (const state of golden('uncertainty').states) {
   test(`"${state.name}" from the URL: readouts and text alternatives as recorded natively, every plot drawn`, async () => {
     const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&${state.query}`);
     await assertReadoutsMatch(page, state);
-    for (const [i, plot] of PLOTS.entries()) {
-      const [ink] = await canvasFingerprint(page, plot);
-      assert.ok(ink > 3000, `${plot} has ink (${ink} px)`);
-      assert.equal(await page.textContent(`#desc-${plot}`), state.figures[i].description, `${plot} described as recorded`);
-    }
-    await page.screenshot({ path: `${SHOTS}uncertainty-${shortName(state.name)}-1280.png`, fullPage: true });
+    await assertFiguresMatch(page, state, PLOTS, 3000);
+    await page.screenshot({ path: `${SHOTS}uncertainty-${stateSlug(state.name)}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);
     await context.close();
   });

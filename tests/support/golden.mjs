@@ -3,6 +3,7 @@
 // that the page shows the same values, instead of recomputing physics in JavaScript.
 import { readFileSync } from 'node:fs';
 import assert from 'node:assert/strict';
+import { assertDrawn } from './page.mjs';
 
 const DIR = new URL('../../crates/app/tests/snapshots/', import.meta.url);
 
@@ -19,6 +20,22 @@ export function goldenState(id, name = 'defaults') {
   const state = golden(id).states.find((s) => s.name === name);
   assert.ok(state, `${id}: no recorded state ${name}`);
   return state;
+}
+
+/** A recorded state's name as a file-name part: `Laden car 500 kg` → `laden-car-500-kg`. */
+export function stateSlug(name) {
+  return name.replace(/[^A-Za-z0-9]+/g, '-').replace(/^-|-$/g, '').toLowerCase();
+}
+
+/**
+ * Asserts that each plot of `plots` (the demo's first figures, in declaration order) has
+ * more than `minInk` inked pixels and the text alternative recorded for `state`.
+ */
+export async function assertFiguresMatch(page, state, plots, minInk) {
+  await assertDrawn(page, plots, minInk);
+  for (const [i, plot] of plots.entries()) {
+    assert.equal(await page.textContent(`#desc-${plot}`), state.figures[i].description, `${state.name}: ${plot} described as recorded`);
+  }
 }
 
 /**

@@ -1,6 +1,6 @@
 // Helpers the end-to-end tests share for reading readouts and moving sliders.
 import assert from 'node:assert/strict';
-import { readout } from './browser.mjs';
+import { open, canvasFingerprint, readout, SHOTS } from './browser.mjs';
 
 /** Waits until readout `key` differs from `old` (a data-value string). */
 export async function waitForChange(page, key, old) {
@@ -30,6 +30,33 @@ export function assertSameReadouts(got, want, what) {
   }
 }
 
+/**
+ * Once the address bar has caught up (400 ms), opens its link in a fresh page of the same
+ * browser and asserts that page shows the same readouts, with a clean console.
+ */
+export async function assertLinkReproduces(page, what) {
+  await page.waitForTimeout(400);
+  const after = await allReadouts(page);
+  const link = await page.evaluate(() => location.href);
+  const again = await open(page.context().browser(), link);
+  assertSameReadouts(await allReadouts(again.page), after, `${what}: the link reproduces the state`);
+  assert.deepEqual(again.errors, []);
+  await again.context.close();
+}
+
+/** Focuses slider `key` and presses `keys` on it in turn (e.g. 'ArrowRight', 'PageUp'). */
+export async function pressOn(page, key, ...keys) {
+  await page.focus(`#p-${key}`);
+  for (const k of keys) await page.keyboard.press(k);
+}
+
+/** Types `value` into parameter `key`'s number box and presses Enter. */
+export async function typeValue(page, key, value) {
+  const box = `input[type=number][data-key="${key}"]`;
+  await page.fill(box, value);
+  await page.press(box, 'Enter');
+}
+
 /** Presses ArrowRight on slider `key` and waits until readout `watch` changes. */
 export async function nudge(page, key, watch) {
   const old = await readout(page, watch);
@@ -51,4 +78,43 @@ export function sidewaysOverflow(page) {
     }
     return worst;
   });
+}
+
+/** The pixel fingerprints of `plots`, by plot key (see `canvasFingerprint`). */
+export async function fingerprints(page, plots) {
+  const out = {};
+  for (const p of plots) out[p] = await canvasFingerprint(page, p);
+  return out;
+}
+
+/** Asserts that every plot of `before` (from `fingerprints`) has been drawn anew since. */
+export async function assertRedrawn(page, before, what) {
+  for (const [p, pixels] of Object.entries(before)) {
+    assert.notDeepEqual(await canvasFingerprint(page, p), pixels, `${p} redrawn ${what}`);
+  }
+}
+
+/** Asserts that each plot of `plots` has more than `minInk` inked pixels. */
+export async function assertDrawn(page, plots, minInk) {
+  for (const plot of plots) {
+    const [ink] = await canvasFingerprint(page, plot);
+    assert.ok(ink > minInk, `${plot} has ink (${ink} px)`);
+  }
+}
+
+/** Asserts that the table row named by readout `key`'s value is marked as the current one. */
+export async function assertRowCurrent(page, key) {
+  const row = await readout(page, key);
+  assert.equal(await page.getAttribute(`tr[data-row="${row}"]`, 'aria-current'), 'true', `row ${row}`);
+}
+
+/**
+ * On a phone-sized page: plot `plot` is drawn, nothing of the demo sticks out sideways
+ * (the equation and the table scroll in their own boxes); saves screenshot `shot`.
+ */
+export async function assertFitsPhone(page, plot, shot) {
+  await assertDrawn(page, [plot], 1000);
+  const overflow = await sidewaysOverflow(page);
+  assert.ok(overflow <= 0.5, `nothing wider than the screen (${overflow} px)`);
+  await page.screenshot({ path: `${SHOTS}${shot}`, fullPage: true });
 }

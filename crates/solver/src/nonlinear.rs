@@ -122,18 +122,24 @@ fn displacements(states: &[[f64; 2]]) -> Vec<f64> {
     states.iter().map(|s| s[0]).collect()
 }
 
+/// A period measure of a displacement history: `(t, x) -> period` (s).
+type PeriodMeasure = fn(&[f64], &[f64]) -> Option<f64>;
+
 impl Comparison {
+    /// `measure` applied to the displacements of `states` (one of the two runs) on `t`.
+    fn period_of(&self, states: &[[f64; 2]], measure: PeriodMeasure) -> Option<f64> {
+        measure(&self.t, &displacements(states))
+    }
+
     /// Period of the nonlinear response from its upward zero crossings (s); `None` with
     /// fewer than two.
     pub fn period_nonlinear(&self) -> Option<f64> {
-        let x = displacements(&self.nonlinear);
-        period_from_zero_crossings(&self.t, &x)
+        self.period_of(&self.nonlinear, period_from_zero_crossings)
     }
 
     /// Period of the linear response, measured the same way (s) (equals `2π/ω_d`).
     pub fn period_linear(&self) -> Option<f64> {
-        let x = displacements(&self.linear);
-        period_from_zero_crossings(&self.t, &x)
+        self.period_of(&self.linear, period_from_zero_crossings)
     }
 
     /// `T_nonlinear / T_linear` (-): below 1 for a hardening spring, above for softening.
@@ -144,15 +150,13 @@ impl Comparison {
     /// Period of the first full swing of the nonlinear response (s), see
     /// [`first_swing_period`].
     pub fn first_swing_nonlinear(&self) -> Option<f64> {
-        let x = displacements(&self.nonlinear);
-        first_swing_period(&self.t, &x)
+        self.period_of(&self.nonlinear, first_swing_period)
     }
 
     /// Period of the first full swing of the linear response (s): `2π/ω_d` exactly, since
     /// a damped sinusoid crosses zero every half damped period.
     pub fn first_swing_linear(&self) -> Option<f64> {
-        let x = displacements(&self.linear);
-        first_swing_period(&self.t, &x)
+        self.period_of(&self.linear, first_swing_period)
     }
 
     /// First-swing period ratio `T_nonlinear / T_linear` (-).

@@ -148,20 +148,14 @@ impl<'a> SampledDriven<'a> {
 
 impl System<4> for SampledDriven<'_> {
     fn rhs(&self, t: f64, y: &[f64; 4], dy: &mut [f64; 4]) {
-        let c = self.car.config();
         let u = self.road.height(t);
         // The slope matters only through tyre damping; skip its search when there is none.
-        let du = if c.c_t == 0.0 {
+        let du = if self.car.config().c_t == 0.0 {
             0.0
         } else {
             self.road.slope(t)
         };
-        let susp = c.k_s * (y[0] - y[1]) + c.c_s * (y[2] - y[3]);
-        let tyre = c.k_t * (y[1] - u) + c.c_t * (y[3] - du);
-        dy[0] = y[2];
-        dy[1] = y[3];
-        dy[2] = -susp / c.sprung_mass;
-        dy[3] = (susp - tyre) / c.unsprung_mass;
+        self.car.rhs(y, u, du, dy);
     }
 }
 

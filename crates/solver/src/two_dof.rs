@@ -358,14 +358,8 @@ pub struct Driven<'a> {
 
 impl System<4> for Driven<'_> {
     fn rhs(&self, t: f64, y: &[f64; 4], dy: &mut [f64; 4]) {
-        let c = &self.car.cfg;
         let (u, du) = self.road.at(t);
-        let susp = c.k_s * (y[0] - y[1]) + c.c_s * (y[2] - y[3]);
-        let tyre = c.k_t * (y[1] - u) + c.c_t * (y[3] - du);
-        dy[0] = y[2];
-        dy[1] = y[3];
-        dy[2] = -susp / c.sprung_mass;
-        dy[3] = (susp - tyre) / c.unsprung_mass;
+        self.car.rhs(y, u, du, dy);
     }
 }
 
@@ -392,6 +386,20 @@ impl TwoDof {
     pub fn static_tyre_deflection(&self) -> f64 {
         let c = &self.cfg;
         (c.sprung_mass + c.unsprung_mass) * G / c.k_t
+    }
+
+    /// The equations of motion on `y = [z_s, z_u, z_s', z_u']` over road height `u` (m)
+    /// rising at `du` (m/s): with the suspension force `F_s = k_s·(z_s − z_u) + c_s·(z_s' − z_u')`
+    /// and the tyre force `F_t = k_t·(z_u − u) + c_t·(z_u' − u')` (N),
+    /// `dy = [z_s', z_u', −F_s/m_s, (F_s − F_t)/m_u]`.
+    pub(crate) fn rhs(&self, y: &[f64; 4], u: f64, du: f64, dy: &mut [f64; 4]) {
+        let c = &self.cfg;
+        let susp = c.k_s * (y[0] - y[1]) + c.c_s * (y[2] - y[3]);
+        let tyre = c.k_t * (y[1] - u) + c.c_t * (y[3] - du);
+        dy[0] = y[2];
+        dy[1] = y[3];
+        dy[2] = -susp / c.sprung_mass;
+        dy[3] = (susp - tyre) / c.unsprung_mass;
     }
 
     /// The car on `road`, ready to integrate.

@@ -232,15 +232,19 @@ fn kc_map_matches_pointwise_metrics_and_reuses_buffers() {
 
 #[test]
 fn iso_zeta_lines_pass_through_the_grid_points_of_that_damping() {
-    let k = [1.5e4, 2.4e4, 3.0e4];
-    let mut c = [0.0; 3];
-    iso_zeta_line_into(0.7, 300.0, &k, &mut c);
-    for (ki, ci) in k.iter().zip(c) {
-        let z = SecondOrder::mechanical(300.0, ci, *ki)
-            .unwrap()
-            .damping_ratio()
-            .unwrap();
-        assert!((z - 0.7).abs() < 1e-14);
+    for (zeta, k, tol) in [
+        (0.3, [1.0e4, 2.4e4, 5.0e4], 1e-15),
+        (0.7, [1.5e4, 2.4e4, 3.0e4], 1e-14),
+    ] {
+        let mut c = [0.0; 3];
+        iso_zeta_line_into(zeta, 300.0, &k, &mut c);
+        for (ki, ci) in k.iter().zip(c) {
+            let z = SecondOrder::mechanical(300.0, ci, *ki)
+                .unwrap()
+                .damping_ratio()
+                .unwrap();
+            assert!((z - zeta).abs() < tol, "ζ = {zeta}: {z}");
+        }
     }
 }
 

@@ -84,6 +84,14 @@ fn assert_close(got: f64, want: f64, rel: f64, what: &str) {
     );
 }
 
+/// The ride metrics `m` against an [`rk4_reference`] `r`, to relative tolerances
+/// `[RMS acceleration, RMS tyre deflection, peak travel]`.
+fn assert_ride_matches(m: &ExactMetrics, r: &[f64; 4], rel: [f64; 3]) {
+    assert_close(m.rms_body_acceleration, r[0], rel[0], "RMS acceleration");
+    assert_close(m.rms_tyre_deflection, r[1], rel[1], "RMS tyre deflection");
+    assert_close(m.max_suspension_travel, r[2], rel[2], "peak travel");
+}
+
 #[test]
 fn a_short_bump_gives_the_audits_fine_step_reference() {
     // ?demo=quarter-car-2dof&road=bump&L=0.1&V=40: a 5 cm bump lasting 2.5 ms, over the
@@ -105,9 +113,7 @@ fn a_short_bump_gives_the_audits_fine_step_reference() {
     // trapezoid rule; agreement to 1e-5 (observed ≈ 2e-6: the chords of the bump and the
     // reference's own step error).
     let r = rk4_reference(&two, &road, t_end, 2e-6, true);
-    assert_close(m.rms_body_acceleration, r[0], 1e-5, "RMS acceleration");
-    assert_close(m.rms_tyre_deflection, r[1], 1e-4, "RMS tyre deflection");
-    assert_close(m.max_suspension_travel, r[2], 1e-5, "peak travel");
+    assert_ride_matches(&m, &r, [1e-5, 1e-4, 1e-5]);
 }
 
 #[test]
@@ -124,9 +130,7 @@ fn a_wheel_thrown_off_the_road_flies_as_the_fine_step_reference_does() {
     let m = ride(&two, &road, t_end, Tyre::Unilateral);
     assert!(m.lift_offs == 1 && m.airborne_time > 0.05, "{m:?}");
     let r = rk4_reference(&two, &road, t_end, 5e-6, true);
-    assert_close(m.rms_body_acceleration, r[0], 1e-4, "RMS acceleration");
-    assert_close(m.rms_tyre_deflection, r[1], 1e-4, "RMS tyre deflection");
-    assert_close(m.max_suspension_travel, r[2], 1e-4, "peak travel");
+    assert_ride_matches(&m, &r, [1e-4; 3]);
     // Time off the road: the reference counts whole steps of 5 µs.
     assert!(
         (m.airborne_time - r[3]).abs() < 2e-5 * m.lift_offs as f64 + 1e-5,

@@ -100,6 +100,21 @@ pub struct McSamples {
     pub redraws: u64,
 }
 
+impl McSamples {
+    /// The six sample vectors in the order of a draw's metrics row:
+    /// `[ζ, ω_n, f0, Q, bandwidth, settling time]`.
+    fn columns_mut(&mut self) -> [&mut Vec<f64>; 6] {
+        [
+            &mut self.zeta,
+            &mut self.wn,
+            &mut self.f0,
+            &mut self.q,
+            &mut self.bandwidth,
+            &mut self.settling_time,
+        ]
+    }
+}
+
 /// Whether component `i` of the design may take the value `v`: damping/resistance (index
 /// 1) must be ≥ 0, the others > 0.
 fn admissible(i: usize, v: f64) -> bool {
@@ -130,14 +145,7 @@ impl McRun {
     /// (filled with NaN) and zeroes its counters.
     pub fn start(cfg: &McConfig, out: &mut McSamples) -> Self {
         let total = cfg.draws.min(MAX_DRAWS);
-        for v in [
-            &mut out.zeta,
-            &mut out.wn,
-            &mut out.f0,
-            &mut out.q,
-            &mut out.bandwidth,
-            &mut out.settling_time,
-        ] {
+        for v in out.columns_mut() {
             v.clear();
             v.resize(total, f64::NAN);
         }
@@ -203,17 +211,7 @@ impl McRun {
                 out.invalid += 1;
             }
             let row = row.unwrap_or([f64::NAN; 6]);
-            for (v, val) in [
-                &mut out.zeta,
-                &mut out.wn,
-                &mut out.f0,
-                &mut out.q,
-                &mut out.bandwidth,
-                &mut out.settling_time,
-            ]
-            .into_iter()
-            .zip(row)
-            {
+            for (v, val) in out.columns_mut().into_iter().zip(row) {
                 if let Some(slot) = v.get_mut(d) {
                     *slot = val;
                 }

@@ -216,21 +216,10 @@ impl Dopri5 {
             c.atol,
             "must not be negative",
         )?;
-        if let Some(h) = c.h_initial {
-            check(
-                h.is_finite() && h > 0.0,
-                "initial step",
-                h,
-                "must be positive",
-            )?;
-        }
-        if let Some(h) = c.h_max {
-            check(
-                h.is_finite() && h > 0.0,
-                "maximum step",
-                h,
-                "must be positive",
-            )?;
+        for (name, step) in [("initial step", c.h_initial), ("maximum step", c.h_max)] {
+            if let Some(h) = step {
+                check(h.is_finite() && h > 0.0, name, h, "must be positive")?;
+            }
         }
         check(
             c.max_steps >= 1 && c.max_steps <= MAX_STEPS,
@@ -567,6 +556,14 @@ mod tests {
         assert!(bad(Dopri5Config { atol: -1.0, ..d }));
         assert!(bad(Dopri5Config {
             h_initial: Some(-1.0),
+            ..d
+        }));
+        assert!(bad(Dopri5Config {
+            h_max: Some(0.0),
+            ..d
+        }));
+        assert!(!bad(Dopri5Config {
+            h_max: Some(0.5),
             ..d
         }));
         assert!(bad(Dopri5Config {

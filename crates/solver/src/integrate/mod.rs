@@ -58,6 +58,22 @@ macro_rules! fixed_step {
     };
 }
 
+/// `$body` evaluated with `$m` bound to the one-step method (a unit struct) that
+/// `$method: &Method` names: how [`Method`] forwards each trait to the methods themselves.
+macro_rules! with_method {
+    ($method:expr, |$m:ident| $body:expr) => {
+        with_method!(@each $method, $m, $body, Euler, SymplecticEuler, Heun, Rk4, Trapezoid)
+    };
+    (@each $method:expr, $m:ident, $body:expr, $($variant:ident),+) => {
+        match $method {
+            $($crate::integrate::Method::$variant => {
+                let $m = $crate::integrate::$variant;
+                $body
+            })+
+        }
+    };
+}
+
 pub mod analysis;
 pub mod convergence;
 mod dopri5;
@@ -323,9 +339,29 @@ impl ExactStepGrid {
     }
 }
 
-/// Checks that every component of `y` is finite.
-fn all_finite<const N: usize>(y: &[f64; N]) -> bool {
-    y.iter().all(|v| v.is_finite())
+/// `Ok` when every component of `y` is finite, else [`IntegrationError::NonFinite`] at
+/// `t` (s), the time of `y`.
+fn finite_at<const N: usize>(y: &[f64; N], t: f64) -> Result<(), IntegrationError> {
+    if y.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(IntegrationError::NonFinite { t })
+    }
+}
+
+/// One step of a fixed-step driver: advances `y` from `t` by `h` (s) with `method`, adds
+/// the work to `stats`, and checks the new state at `t_next` (s), the step's end as the
+/// driver's grid gives it (which may differ from `t + h` by rounding).
+fn counted_step<M: FixedStep + ?Sized, const N: usize, S: System<N>>(
+    method: &M,
+    sys: &S,
+    (t, h, t_next): (f64, f64, f64),
+    y: &mut [f64; N],
+    stats: &mut Stats,
+) -> Result<(), IntegrationError> {
+    stats.n_rhs += method.step(sys, t, h, y)?;
+    stats.n_accepted += 1;
+    finite_at(y, t_next)
 }
 
 /// A one-step method with a fixed step size.
@@ -359,9 +395,7 @@ pub trait FixedStep {
         h: f64,
     ) -> Result<Solution<N>, IntegrationError> {
         let grid = Grid::new(t0, t_end, h)?;
-        if !all_finite(&y0) {
-            return Err(IntegrationError::NonFinite { t: t0 });
-        }
+        finite_at(&y0, t0)?;
         let mut t = Vec::with_capacity(grid.n + 1);
         let mut ys = Vec::with_capacity(grid.n + 1);
         t.push(t0);
@@ -369,12 +403,8 @@ pub trait FixedStep {
         let mut y = y0;
         let mut stats = Stats::default();
         for i in 0..grid.n {
-            stats.n_rhs += self.step(sys, grid.time(i), grid.h, &mut y)?;
-            stats.n_accepted += 1;
             let ti = grid.time(i + 1);
-            if !all_finite(&y) {
-                return Err(IntegrationError::NonFinite { t: ti });
-            }
+            counted_step(self, sys, (grid.time(i), grid.h, ti), &mut y, &mut stats)?;
             t.push(ti);
             ys.push(y);
         }
@@ -393,19 +423,13 @@ pub trait FixedStep {
         grid: &ExactStepGrid,
         out: &mut [[f64; N]],
     ) -> Result<Stats, IntegrationError> {
-        if !all_finite(&y0) {
-            return Err(IntegrationError::NonFinite { t: grid.time(0) });
-        }
+        finite_at(&y0, grid.time(0))?;
         let mut stats = Stats::default();
         let mut y = y0;
         for (i, slot) in out.iter_mut().enumerate().take(grid.steps() + 1) {
             if i > 0 {
-                let t = grid.time(i - 1);
-                stats.n_rhs += self.step(sys, t, grid.step(i - 1), &mut y)?;
-                stats.n_accepted += 1;
-                if !all_finite(&y) {
-                    return Err(IntegrationError::NonFinite { t: grid.time(i) });
-                }
+                let step = (grid.time(i - 1), grid.step(i - 1), grid.time(i));
+                counted_step(self, sys, step, &mut y, &mut stats)?;
             }
             *slot = y;
         }
@@ -428,19 +452,13 @@ pub trait FixedStep {
         if !t0.is_finite() {
             return Err(IntegrationError::InvalidSpan { t0, t_end: t0 });
         }
-        if !all_finite(&y0) {
-            return Err(IntegrationError::NonFinite { t: t0 });
-        }
+        finite_at(&y0, t0)?;
         let mut stats = Stats::default();
         let mut y = y0;
         for (i, slot) in out.iter_mut().enumerate() {
             if i > 0 {
                 let t = t0 + (i - 1) as f64 * h;
-                stats.n_rhs += self.step(sys, t, h, &mut y)?;
-                stats.n_accepted += 1;
-                if !all_finite(&y) {
-                    return Err(IntegrationError::NonFinite { t: t + h });
-                }
+                counted_step(self, sys, (t, h, t + h), &mut y, &mut stats)?;
             }
             *slot = y;
         }
@@ -476,23 +494,11 @@ impl Method {
 
 impl FixedStep for Method {
     fn name(&self) -> &'static str {
-        match self {
-            Method::Euler => Euler.name(),
-            Method::SymplecticEuler => SymplecticEuler.name(),
-            Method::Heun => Heun.name(),
-            Method::Rk4 => Rk4.name(),
-            Method::Trapezoid => Trapezoid.name(),
-        }
+        with_method!(self, |m| m.name())
     }
 
     fn order(&self) -> u32 {
-        match self {
-            Method::Euler => Euler.order(),
-            Method::SymplecticEuler => SymplecticEuler.order(),
-            Method::Heun => Heun.order(),
-            Method::Rk4 => Rk4.order(),
-            Method::Trapezoid => Trapezoid.order(),
-        }
+        with_method!(self, |m| m.order())
     }
 
     fn step<const N: usize, S: System<N>>(
@@ -502,13 +508,7 @@ impl FixedStep for Method {
         h: f64,
         y: &mut [f64; N],
     ) -> Result<usize, IntegrationError> {
-        match self {
-            Method::Euler => Euler.step(sys, t, h, y),
-            Method::SymplecticEuler => SymplecticEuler.step(sys, t, h, y),
-            Method::Heun => Heun.step(sys, t, h, y),
-            Method::Rk4 => Rk4.step(sys, t, h, y),
-            Method::Trapezoid => Trapezoid.step(sys, t, h, y),
-        }
+        with_method!(self, |m| m.step(sys, t, h, y))
     }
 }
 

@@ -65,23 +65,11 @@ impl Stability for SymplecticEuler {
 
 impl Stability for Method {
     fn growth_per_step(&self, sys: &SecondOrder, h: f64) -> f64 {
-        match self {
-            Method::Euler => super::Euler.growth_per_step(sys, h),
-            Method::SymplecticEuler => SymplecticEuler.growth_per_step(sys, h),
-            Method::Heun => super::Heun.growth_per_step(sys, h),
-            Method::Rk4 => super::Rk4.growth_per_step(sys, h),
-            Method::Trapezoid => super::Trapezoid.growth_per_step(sys, h),
-        }
+        with_method!(self, |m| m.growth_per_step(sys, h))
     }
 
     fn stable_steps(&self, sys: &SecondOrder) -> StepLimit {
-        match self {
-            Method::Euler => super::Euler.stable_steps(sys),
-            Method::SymplecticEuler => SymplecticEuler.stable_steps(sys),
-            Method::Heun => super::Heun.stable_steps(sys),
-            Method::Rk4 => super::Rk4.stable_steps(sys),
-            Method::Trapezoid => super::Trapezoid.stable_steps(sys),
-        }
+        with_method!(self, |m| m.stable_steps(sys))
     }
 }
 
