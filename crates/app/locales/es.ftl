@@ -98,6 +98,72 @@ regimes-poles = Polos en { $re1 } { $sign1 } { $im1 }i y { $re2 } { $sign2 } { $
     }.
 regimes-schematic = Masa sobre resorte y amortiguador en t = { $time }: desplazada { $displacement } del reposo.
 
+### integrators
+
+integrators-join = { "; " }
+integrators-legend-dp45-order = DP45: { $order }
+integrators-overflow-note = desbordamiento en t = { $time }
+integrators-failed = falló
+integrators-stable-yes = sí
+integrators-stable-no = no
+integrators-method-euler = Euler explícito
+integrators-method-symplectic-euler = Euler simpléctico
+integrators-method-heun = Heun
+integrators-method-rk4 = RK4
+integrators-legend-symplectic-euler = Euler simpl. ×
+integrators-legend-dp45 = DP45 ● pasos
+integrators-legend-growing = { $legend } ×{ $growth }/paso ↑
+integrators-legend-order = { $legend }: { $order }
+integrators-legend-no-fit = { $legend }: sin ajuste
+integrators-legend-dp45-no-order = DP45: sin orden
+integrators-series-exact = exacta
+integrators-axis-error = error |x_num − x_exact|
+integrators-axis-step = paso h
+integrators-axis-max-error = error máximo
+integrators-axis-re = parte real Re(hλ)
+integrators-axis-im = parte imaginaria Im(hλ)
+integrators-axis-evaluations = evaluaciones del segundo miembro N
+integrators-limit-up-to = estable para h ≤ { $step }
+integrators-limit-every = estable para todo h
+integrators-limit-none = inestable para todo h
+integrators-method-overflows = { $method } se desborda en t = { $time } (×{ $growth } por paso)
+integrators-method-diverges = { $method } diverge (×{ $growth } por paso), error máximo { $error }
+integrators-method-diverges-clipped = { $method } diverge (×{ $growth } por paso, recortado), error máximo { $error }
+integrators-method-bounded = { $method } permanece acotado (×{ $growth } por paso), error máximo { $error }
+integrators-dp45-words = DP45 dio { $steps ->
+        [one] { $steps } paso
+       *[other] { $steps } pasos
+    } (tolerancia { $tolerance }), error máximo { $error }
+integrators-dp45-failed = DP45 falló: { $reason }
+integrators-failed-underflow = el paso se hizo demasiado pequeño para avanzar en t = { $time } (el problema puede ser demasiado rígido o singular)
+integrators-failed-max-steps = se detuvo en t = { $time } tras { $steps } pasos
+integrators-failed-non-finite = la solución se hizo infinita o indefinida en t = { $time } (pruebe un paso menor)
+integrators-describe-response = Cada método frente a la oscilación amortiguada exacta durante { $duration } con h = { $step } ({ $steps } pasos). { $methods }. La gráfica muestra ±{ $range } de la amplitud exacta; las curvas que la sobrepasan se recortan en el borde.
+integrators-describe-response-last = Cada método frente a la oscilación amortiguada exacta durante { $duration } con h = { $step } ({ $steps } pasos, el último de { $last } para terminar en T). { $methods }. La gráfica muestra ±{ $range } de la amplitud exacta; las curvas que la sobrepasan se recortan en el borde.
+integrators-error-peak = { $method }: máximo { $error } en t = { $time }
+integrators-error-peak-growing = { $method }: máximo { $error } en t = { $time }, creciente
+integrators-error-none = { $method }: sin error finito
+integrators-error-no-method = No hay ningún método activado.
+integrators-describe-error = Error |x_num − x_exact| en escala logarítmica en los puntos de la malla de cada método (h = { $step }): { $methods }.
+integrators-describe-error-clipped = Error |x_num − x_exact| en escala logarítmica en los puntos de la malla de cada método (h = { $step }): { $methods }. Los errores por encima de { $clip } se recortan en el borde superior.
+integrators-fit = { $method }: pendiente ajustada { $slope } (h = { $from } … { $to })
+integrators-fit-overflows = { $method }: pendiente ajustada { $slope } (h = { $from } … { $to }), se desborda para h ≥ { $limit }
+integrators-no-fit = { $method }: sin ajuste (demasiado pocos puntos en el rango asintótico)
+integrators-no-fit-overflows = { $method }: sin ajuste (demasiado pocos puntos en el rango asintótico), se desborda para h ≥ { $limit }
+integrators-slope = pendiente { $order }
+integrators-describe-convergence = Error máximo en { $points } puntos de control comunes frente al paso h, para hasta { $levels } tamaños de paso que se reducen a la mitad desde { $from } (como mucho { $budget } pasos por método en total, { $euler_budget } para Euler explícito; los pasos más finos se omiten). { $methods }. Cada orden se ajusta solo en el rango asintótico, dibujado como el segmento grueso: los pasos más finos cuyas pendientes locales coinciden con un margen de { $spread }, con errores por debajo del { $ceiling } y por encima de 1e-10 de x₀. Las pendientes de referencia 1 y 4 van punteadas; el h actual es la línea vertical discontinua. DP45 no tiene un único h: véase la gráfica de trabajo–precisión.
+integrators-off-scale = { $name } = { $value } (fuera de escala)
+integrators-path = hλ al crecer h
+integrators-z-real-pair = z = hλ = { $z1 } y { $z2 }
+integrators-region-inside = { $method }: dentro de su región, |R| = { $growth }, { $limit }
+integrators-region-outside = { $method }: fuera de su región, |R| = { $growth }, { $limit }
+integrators-describe-stability = Regiones de estabilidad |R(z)| ≤ 1 en el plano complejo de z = hλ (el interior de cada curva cerrada; la del método de Euler explícito es el disco |1 + z| ≤ 1). Los dos polos del sistema con h = { $step } dan { $z }. { $methods }. El método de Euler simpléctico no es una aplicación escalar R(z): su matriz de paso 2×2 tiene radio espectral { $radius } en este caso; { $limit }. DP45 elige sus propios pasos y los mantiene estables.
+integrators-work-words = { $method }: de { $error_first } con { $work_first } evaluaciones a { $error_last } con { $work_last }
+integrators-describe-work = Error máximo frente al trabajo que costó, contado en evaluaciones del segundo miembro f, en ejes log–log, para cada método: los de paso fijo con los tamaños de paso del estudio de convergencia (error en sus puntos de control comunes), DP45 con tolerancias de { $from } … { $to } (error en sus pasos aceptados). Más abajo es más preciso, más a la izquierda es más barato; un método de orden p cae con pendiente −p; las ejecuciones de DP45 son puntos donde la tolerancia fija sus pasos y cruces donde los fija la estabilidad. { $methods }.
+integrators-dp45-stability-runs = ejecuciones cuyos pasos fija la estabilidad (más del { $share } de los pasos en el { $fraction } o más de su mayor paso estable): { $count }/{ $runs }
+integrators-dp45-order = DP45: orden observado { $order } (ajustado en { $from } … { $to } evaluaciones, donde la tolerancia fija sus pasos); { $runs }
+integrators-dp45-no-order = DP45 no tiene orden observado: la estabilidad fija sus pasos, o quedan demasiado pocas ejecuciones en el rango asintótico; { $runs }
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

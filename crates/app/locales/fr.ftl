@@ -1,0 +1,140 @@
+### integrators
+
+integrators-join = { " ; " }
+integrators-legend-dp45-order = DP45 : { $order }
+integrators-overflow-note = dépassement de capacité à t = { $time }
+integrators-failed = échec
+integrators-stable-yes = oui
+integrators-stable-no = non
+integrators-method-euler = Euler explicite
+integrators-method-symplectic-euler = Euler symplectique
+integrators-method-heun = Heun
+integrators-method-rk4 = RK4
+integrators-legend-symplectic-euler = Euler sympl. ×
+integrators-legend-dp45 = DP45 ● pas
+integrators-legend-growing = { $legend } ×{ $growth }/pas ↑
+integrators-legend-order = { $legend } : { $order }
+integrators-legend-no-fit = { $legend } : pas d'ajustement
+integrators-legend-dp45-no-order = DP45 : pas d'ordre
+integrators-series-exact = exacte
+integrators-axis-error = erreur |x_num − x_exact|
+integrators-axis-step = pas h
+integrators-axis-max-error = erreur maximale
+integrators-axis-re = partie réelle Re(hλ)
+integrators-axis-im = partie imaginaire Im(hλ)
+integrators-axis-evaluations = évaluations du second membre N
+integrators-limit-up-to = stable pour h ≤ { $step }
+integrators-limit-every = stable pour tout h
+integrators-limit-none = instable pour tout h
+integrators-method-overflows = { $method } : dépassement de capacité à t = { $time } (×{ $growth } par pas)
+integrators-method-diverges = { $method } diverge (×{ $growth } par pas), erreur maximale { $error }
+integrators-method-diverges-clipped = { $method } diverge (×{ $growth } par pas, écrêté), erreur maximale { $error }
+integrators-method-bounded = { $method } reste borné (×{ $growth } par pas), erreur maximale { $error }
+integrators-dp45-words = DP45 a fait { $steps ->
+        [one] { $steps } pas
+       *[other] { $steps } pas
+    } (tolérance { $tolerance }), erreur maximale { $error }
+integrators-dp45-failed = échec de DP45 : { $reason }
+integrators-failed-underflow = le pas est devenu trop petit pour avancer à t = { $time } (le problème est peut-être trop raide ou singulier)
+integrators-failed-max-steps = abandon à t = { $time } après { $steps } pas
+integrators-failed-non-finite = la solution est devenue infinie ou indéfinie à t = { $time } (essayez un pas plus petit)
+integrators-describe-response = Chaque méthode face à l'oscillation amortie exacte sur { $duration } avec h = { $step } ({ $steps } pas). { $methods }. Le graphique montre ±{ $range } fois l'amplitude exacte ; les courbes qui la dépassent sont écrêtées au bord.
+integrators-describe-response-last = Chaque méthode face à l'oscillation amortie exacte sur { $duration } avec h = { $step } ({ $steps } pas, le dernier de { $last } pour finir à T). { $methods }. Le graphique montre ±{ $range } fois l'amplitude exacte ; les courbes qui la dépassent sont écrêtées au bord.
+integrators-error-peak = { $method } : maximum { $error } à t = { $time }
+integrators-error-peak-growing = { $method } : maximum { $error } à t = { $time }, croissante
+integrators-error-none = { $method } : aucune erreur finie
+integrators-error-no-method = Aucune méthode n'est activée.
+integrators-describe-error = Erreur |x_num − x_exact| en échelle logarithmique aux points de grille de chaque méthode (h = { $step }) : { $methods }.
+integrators-describe-error-clipped = Erreur |x_num − x_exact| en échelle logarithmique aux points de grille de chaque méthode (h = { $step }) : { $methods }. Les erreurs supérieures à { $clip } sont écrêtées en haut.
+integrators-fit = { $method } : pente ajustée { $slope } (h = { $from } … { $to })
+integrators-fit-overflows = { $method } : pente ajustée { $slope } (h = { $from } … { $to }), dépassement de capacité pour h ≥ { $limit }
+integrators-no-fit = { $method } : pas d'ajustement (trop peu de points dans le domaine asymptotique)
+integrators-no-fit-overflows = { $method } : pas d'ajustement (trop peu de points dans le domaine asymptotique), dépassement de capacité pour h ≥ { $limit }
+integrators-slope = pente { $order }
+integrators-describe-convergence = Erreur maximale en { $points } points de contrôle communs en fonction du pas h, pour au plus { $levels } pas divisés par deux à partir de { $from } (au plus { $budget } pas par méthode au total, { $euler_budget } pour Euler explicite ; les pas plus fins sont omis). { $methods }. Chaque ordre est ajusté sur le seul domaine asymptotique, tracé en segment épais : les pas les plus fins dont les pentes locales concordent à { $spread } près, avec des erreurs inférieures à { $ceiling } et supérieures à 1e-10 de x₀. Les pentes de référence 1 et 4 sont en pointillés ; le h actuel est la verticale en tirets. DP45 n'a pas de h unique : voir le graphique travail–précision.
+integrators-off-scale = { $name } = { $value } (hors échelle)
+integrators-path = hλ quand h augmente
+integrators-z-real-pair = z = hλ = { $z1 } et { $z2 }
+integrators-region-inside = { $method } : dans sa région, |R| = { $growth }, { $limit }
+integrators-region-outside = { $method } : hors de sa région, |R| = { $growth }, { $limit }
+integrators-describe-stability = Régions de stabilité |R(z)| ≤ 1 dans le plan complexe de z = hλ (l'intérieur de chaque courbe fermée ; celle d'Euler explicite est le disque |1 + z| ≤ 1). Les deux pôles du système avec h = { $step } donnent { $z }. { $methods }. Euler symplectique n'est pas une application scalaire R(z) : sa matrice de pas 2×2 a ici un rayon spectral de { $radius }, { $limit }. DP45 choisit lui-même ses pas et les garde stables.
+integrators-work-words = { $method } : de { $error_first } avec { $work_first } évaluations à { $error_last } avec { $work_last }
+integrators-describe-work = Erreur maximale en fonction du travail qu'elle a coûté, compté en évaluations du second membre f, en axes log–log, pour chaque méthode : celles à pas fixe aux pas de l'étude de convergence (erreur en ses points de contrôle communs), DP45 aux tolérances { $from } … { $to } (erreur sur ses pas acceptés). Plus bas est plus précis, plus à gauche est moins coûteux ; une méthode d'ordre p descend avec une pente −p ; les calculs de DP45 sont des points là où la tolérance fixe leurs pas et des croix là où c'est la stabilité. { $methods }.
+integrators-dp45-stability-runs = calculs dont la stabilité fixe les pas (plus de { $share } des pas à { $fraction } ou plus de son plus grand pas stable) : { $count }/{ $runs }
+integrators-dp45-order = DP45 : ordre observé { $order } (ajusté sur { $from } … { $to } évaluations, là où la tolérance fixe ses pas) ; { $runs }
+integrators-dp45-no-order = DP45 n'a pas d'ordre observé : la stabilité fixe ses pas, ou il reste trop peu de calculs dans le domaine asymptotique ; { $runs }
+integrators-title = Intégrateurs numériques et leur erreur
+integrators-summary = L'oscillateur libre intégré par Euler explicite, Euler symplectique, Heun (RK2) et RK4 classique à pas fixe h, et par Dormand–Prince 5(4) à pas adaptatif, chacun comparé à la solution exacte. Une méthode à un pas multiplie chaque mode par R(hλ) à chaque pas : quand |R| > 1, les nombres croissent quelle que soit la fidélité avec laquelle la méthode approche l'équation, ce qui explique pourquoi Euler explicite fait exploser un oscillateur faiblement amorti sauf si h < 2ζ/ωₙ. Quand elle est stable, diviser h par deux divise l'erreur par 2^p, où p est l'ordre de convergence de la méthode : le graphique de convergence mesure p. Désactiver une méthode masque ses courbes ; ses valeurs affichées restent calculées.
+integrators-param-zeta = taux d'amortissement
+integrators-param-wn = pulsation propre
+integrators-param-h = pas
+integrators-param-T = durée
+integrators-param-x0 = déplacement initial
+integrators-param-tol = tolérance de DP45 (relative ; absolue tol·x₀)
+integrators-param-euler = Euler explicite
+integrators-param-symplectic-euler = Euler symplectique
+integrators-param-heun = Heun (RK2)
+integrators-param-rk4 = RK4
+integrators-param-dp45 = Dormand–Prince 5(4), adaptatif
+integrators-readout-h-used = pas utilisé : exactement h (un dernier pas plus court termine le calcul à T)
+integrators-readout-h-last = dernier pas, qui termine le calcul à T
+integrators-readout-max-err-euler = erreur maximale, Euler explicite
+integrators-readout-max-err-symplectic-euler = erreur maximale, Euler symplectique
+integrators-readout-max-err-heun = erreur maximale, Heun
+integrators-readout-max-err-rk4 = erreur maximale, RK4
+integrators-readout-max-err-dp45 = erreur maximale, DP45
+integrators-readout-order-euler = ordre ajusté, Euler explicite
+integrators-readout-order-symplectic-euler = ordre ajusté, Euler symplectique
+integrators-readout-order-heun = ordre ajusté, Heun
+integrators-readout-order-rk4 = ordre ajusté, RK4
+integrators-readout-order-dp45 = ordre observé, DP45 (erreur en fonction des évaluations de f, là où la tolérance fixe les pas)
+integrators-readout-stable-euler = stable à ce h, Euler explicite
+integrators-readout-stable-symplectic-euler = stable à ce h, Euler symplectique
+integrators-readout-stable-heun = stable à ce h, Heun
+integrators-readout-stable-rk4 = stable à ce h, RK4
+integrators-readout-growth-euler = croissance par pas |R(hλ)|, Euler explicite
+integrators-readout-growth-symplectic-euler = croissance par pas (rayon spectral), Euler symplectique
+integrators-readout-growth-heun = croissance par pas |R(hλ)|, Heun
+integrators-readout-growth-rk4 = croissance par pas |R(hλ)|, RK4
+integrators-readout-steps-dp45 = pas acceptés par DP45
+integrators-plot-response = Solutions numériques et x(t) exacte
+integrators-plot-error = Erreur au cours du temps
+integrators-plot-convergence = Convergence : erreur maximale en fonction du pas h
+integrators-plot-work = Travail–précision : erreur maximale en fonction des évaluations de f
+integrators-plot-stability = Régions de stabilité et z = hλ
+integrators-preset-1 = Faiblement amorti, h = 0,3 s
+integrators-preset-2 = Euler tout juste stable, h = 0,04 s
+integrators-preset-3 = RK4 au-delà de sa limite, h = 1,6 s
+integrators-preset-4 = Non amorti, h = 0,1 s
+integrators-preset-5 = Raide et suramorti ζ = 2, ωₙ = 20
+integrators-table-caption = Les méthodes
+integrators-table-column-1 = méthode
+integrators-table-column-2 = ordre p
+integrators-table-column-3 = évaluations de f par pas
+integrators-table-column-4 = facteur d'amplification R(z)
+integrators-table-column-5 = sur un oscillateur non amorti
+integrators-table-euler-1 = Euler explicite
+integrators-table-euler-2 = 1
+integrators-table-euler-3 = 1
+integrators-table-euler-4 = 1 + z
+integrators-table-euler-5 = croît toujours : |R(iωh)| = √(1 + ω²h²) > 1
+integrators-table-symplectic-euler-1 = Euler symplectique
+integrators-table-symplectic-euler-2 = 1
+integrators-table-symplectic-euler-3 = 2
+integrators-table-symplectic-euler-4 = matrice 2×2, pas un R scalaire
+integrators-table-symplectic-euler-5 = erreur d'énergie bornée tant que ωh ≤ 2
+integrators-table-heun-1 = Heun (RK2)
+integrators-table-heun-2 = 2
+integrators-table-heun-3 = 2
+integrators-table-heun-4 = 1 + z + z²/2
+integrators-table-heun-5 = croît lentement : |R(iy)|² = 1 + y⁴/4
+integrators-table-rk4-1 = RK4 classique
+integrators-table-rk4-2 = 4
+integrators-table-rk4-3 = 4
+integrators-table-rk4-4 = 1 + z + z²/2 + z³/6 + z⁴/24
+integrators-table-rk4-5 = amortit légèrement tant que ωh ≤ 2√2
+integrators-table-dp45-1 = Dormand–Prince 5(4)
+integrators-table-dp45-2 = 5
+integrators-table-dp45-3 = 6 (la dernière sert de première)
+integrators-table-dp45-4 = adaptatif : h suit l'estimation d'erreur
+integrators-table-dp45-5 = stable : les pas rejetés réduisent h
