@@ -169,6 +169,41 @@ integrators-dp45-stability-runs = runs whose steps stability sets (more than { $
 integrators-dp45-order = DP45 observed order { $order } (fitted over { $from } … { $to } evaluations, where the tolerance sets its steps); { $runs }
 integrators-dp45-no-order = DP45 has no observed order: stability sets its steps, or too few runs remain in the asymptotic range; { $runs }
 
+### nonlinear
+
+nonlinear-effect-linear = linear
+nonlinear-effect-hardening = hardening spring
+nonlinear-effect-softening = softening spring
+nonlinear-effect-stick-slip = stick-slip
+nonlinear-effect-bump-stop = bump-stop impact
+nonlinear-effect-asymmetric = asymmetric damper
+nonlinear-effect-several = several at once
+nonlinear-effect-escaped = escaped
+nonlinear-join = { "; " }
+nonlinear-differ = they differ by up to { $deviation } at t = { $time }
+nonlinear-first-swing = first swing { $nonlinear } against the linear { $linear } (ratio { $ratio })
+nonlinear-sticks-at = friction holds the mass at { $position } from { $time }
+nonlinear-escapes = the nonlinear run leaves the plot (|x| > { $limit }) at { $time }
+nonlinear-describe-response = { $effect }: both start together; { $clauses }.
+nonlinear-describe-phase = Phase plane: both trajectories start at x = { $x0 }, v = { $v0 }. The linear one spirals in towards ({ $x_linear }, { $v_linear }); the nonlinear one ends at x = { $x_end }, v = { $v_end }, its largest speed { $speed } against the linear { $speed_linear }.
+nonlinear-describe-spring = Restoring force against extension over ±{ $reach }: the linear spring is the straight line k·x; at the largest travel { $travel } the nonlinear force is { $force } against the linear { $linear }.
+nonlinear-describe-spring-stops = Restoring force against extension over ±{ $reach }: the linear spring is the straight line k·x; at the largest travel { $travel } the nonlinear force is { $force } against the linear { $linear }, the bump stops adding { $rate } beyond ±{ $gap }.
+nonlinear-describe-damper = Damper plus friction force against velocity over ±{ $speed }: at +{ $speed } (rebound) it is { $rebound }, at −{ $speed } (compression) { $compression }; the linear model's mean damper gives ±{ $linear }.
+nonlinear-describe-damper-friction = Damper plus friction force against velocity over ±{ $speed }: at +{ $speed } (rebound) it is { $rebound }, at −{ $speed } (compression) { $compression }; the linear model's mean damper gives ±{ $linear }; sliding friction adds a jump of ±{ $friction } at v = 0, and at rest static friction holds up to ±{ $holding }.
+nonlinear-axis-velocity-rebound = velocity v (+ rebound)
+nonlinear-series-stops = bump stops ±{ $gap }
+nonlinear-series-linear = linear model
+nonlinear-series-nonlinear = nonlinear (RK4)
+nonlinear-marker-sticks = sticks
+nonlinear-marker-start = start
+nonlinear-series-linear-spring = linear k·x
+nonlinear-series-spring = k·x + k₃·x³ + stops
+nonlinear-series-linear-damper = linear c̄·v
+nonlinear-series-damper = damper + friction
+nonlinear-schematic = Quarter car at t = { $time }: suspension extended { $extension }.
+nonlinear-schematic-pressing = Quarter car at t = { $time }: suspension extended { $extension }, pressing on a bump stop.
+nonlinear-schematic-clear = Quarter car at t = { $time }: suspension extended { $extension }, clear of the bump stops.
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

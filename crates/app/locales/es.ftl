@@ -164,6 +164,41 @@ integrators-dp45-stability-runs = ejecuciones cuyos pasos fija la estabilidad (m
 integrators-dp45-order = DP45: orden observado { $order } (ajustado en { $from } … { $to } evaluaciones, donde la tolerancia fija sus pasos); { $runs }
 integrators-dp45-no-order = DP45 no tiene orden observado: la estabilidad fija sus pasos, o quedan demasiado pocas ejecuciones en el rango asintótico; { $runs }
 
+### nonlinear
+
+nonlinear-effect-linear = lineal
+nonlinear-effect-hardening = resorte rigidizante
+nonlinear-effect-softening = resorte ablandante
+nonlinear-effect-stick-slip = adherencia-deslizamiento
+nonlinear-effect-bump-stop = impacto contra el tope
+nonlinear-effect-asymmetric = amortiguador asimétrico
+nonlinear-effect-several = varias a la vez
+nonlinear-effect-escaped = escape
+nonlinear-join = { "; " }
+nonlinear-differ = difieren hasta { $deviation } en t = { $time }
+nonlinear-first-swing = primera oscilación { $nonlinear } frente a { $linear } la lineal (razón { $ratio })
+nonlinear-sticks-at = la fricción retiene la masa en { $position } desde { $time }
+nonlinear-escapes = la simulación no lineal sale de la gráfica (|x| > { $limit }) en { $time }
+nonlinear-describe-response = { $effect }: ambas empiezan juntas; { $clauses }.
+nonlinear-describe-phase = Plano de fase: ambas trayectorias empiezan en x = { $x0 }, v = { $v0 }. La lineal describe una espiral hacia ({ $x_linear }, { $v_linear }); la no lineal termina en x = { $x_end }, v = { $v_end }, con velocidad máxima { $speed } frente a { $speed_linear } la lineal.
+nonlinear-describe-spring = Fuerza restauradora frente a la extensión en ±{ $reach }: el resorte lineal es la recta k·x; en el recorrido máximo, { $travel }, la fuerza no lineal es { $force } frente a { $linear } la lineal.
+nonlinear-describe-spring-stops = Fuerza restauradora frente a la extensión en ±{ $reach }: el resorte lineal es la recta k·x; en el recorrido máximo, { $travel }, la fuerza no lineal es { $force } frente a { $linear } la lineal, con los topes añadiendo { $rate } más allá de ±{ $gap }.
+nonlinear-describe-damper = Fuerza de amortiguador más fricción frente a la velocidad en ±{ $speed }: a +{ $speed } (rebote) vale { $rebound }, a −{ $speed } (compresión) { $compression }; el amortiguador medio del modelo lineal da ±{ $linear }.
+nonlinear-describe-damper-friction = Fuerza de amortiguador más fricción frente a la velocidad en ±{ $speed }: a +{ $speed } (rebote) vale { $rebound }, a −{ $speed } (compresión) { $compression }; el amortiguador medio del modelo lineal da ±{ $linear }; la fricción de deslizamiento añade un salto de ±{ $friction } en v = 0, y en reposo la fricción estática sostiene hasta ±{ $holding }.
+nonlinear-axis-velocity-rebound = velocidad v (+ rebote)
+nonlinear-series-stops = topes ±{ $gap }
+nonlinear-series-linear = modelo lineal
+nonlinear-series-nonlinear = no lineal (RK4)
+nonlinear-marker-sticks = se pega
+nonlinear-marker-start = inicio
+nonlinear-series-linear-spring = k·x lineal
+nonlinear-series-spring = k·x + k₃·x³ + topes
+nonlinear-series-linear-damper = c̄·v lineal
+nonlinear-series-damper = amortiguador + fricción
+nonlinear-schematic = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }.
+nonlinear-schematic-pressing = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }, apoyada en un tope.
+nonlinear-schematic-clear = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }, sin tocar los topes.
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes
@@ -685,7 +720,7 @@ flutter-table-negatively-damped-6 = una sección cuyo A₂* siga siendo negativo
 ### nonlinear
 
 nonlinear-title = Más allá del modelo lineal
-nonlinear-summary = Una suspensión real solo es lineal para movimientos pequeños. Aquí el cuarto de vehículo tiene un resorte cúbico (k₃ > 0 rigidizante, k₃ < 0 ablandante), un amortiguador más duro en rebote (x′ > 0) que en compresión, fricción de Coulomb en las articulaciones y topes de goma más allá de ±gap. La fricción se pega y desliza: mientras la masa desliza, frena con la fuerza F_c; cuando se detiene, la fricción estática la sujeta hasta F_static, un múltiplo fijo de F_c, y solo vuelve a moverse si el resorte tira con más fuerza. El movimiento se integra con RK4, localizando cada parada dentro de su paso, y se dibuja frente al modelo lineal m·x″ + c̄·x′ + k·x = 0 (c̄ la constante media del amortiguador) desde el mismo inicio. Observe dónde falla la predicción: el periodo depende de la amplitud (el resorte rigidizante lo acorta, el ablandante lo alarga), la fricción hace caer la amplitud en línea recta y luego retiene la masa descentrada para siempre (adherencia-deslizamiento), un tope convierte una oscilación suave en un impacto, y un amortiguador asimétrico desplaza la posición media. Los valores por defecto son una esquina de coche verosímil: 300 kg, 24 kN/m (1,4 Hz), un amortiguador de 1 500 N·s/m (ζ ≈ 0,28) y un resorte algo progresivo. x es la extensión de la suspensión desde el equilibrio estático (positiva = carrocería hacia arriba).
+nonlinear-summary = Una suspensión real solo es lineal para movimientos pequeños. Aquí el cuarto de vehículo tiene un resorte cúbico (k₃ > 0 rigidizante, k₃ < 0 ablandante), un amortiguador más duro en rebote (x′ > 0) que en compresión, fricción de Coulomb en las articulaciones y topes de goma más allá de ±gap. La fricción alterna adherencia y deslizamiento: mientras la masa desliza, frena con la fuerza F_c; cuando se detiene, la fricción estática la sujeta hasta F_static, un múltiplo fijo de F_c, y solo vuelve a moverse si el resorte tira con más fuerza. El movimiento se integra con RK4, localizando cada parada dentro de su paso, y se dibuja frente al modelo lineal m·x″ + c̄·x′ + k·x = 0 (c̄ la constante media del amortiguador) desde el mismo inicio. Observe dónde falla la predicción: el periodo depende de la amplitud (el resorte rigidizante lo acorta, el ablandante lo alarga), la fricción hace caer la amplitud en línea recta y luego retiene la masa descentrada para siempre (adherencia-deslizamiento), un tope convierte una oscilación suave en un impacto, y un amortiguador asimétrico desplaza la posición media. Los valores por defecto son una esquina de coche verosímil: 300 kg, 24 kN/m (1,4 Hz), un amortiguador de 1 500 N·s/m (ζ ≈ 0,28) y un resorte algo progresivo. x es la extensión de la suspensión desde el equilibrio estático (positiva = carrocería hacia arriba).
 nonlinear-param-m = masa suspendida
 nonlinear-param-k = rigidez lineal del resorte
 nonlinear-param-k3 = coeficiente cúbico del resorte (+ rigidizante, − ablandante)

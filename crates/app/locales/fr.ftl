@@ -138,3 +138,105 @@ integrators-table-dp45-2 = 5
 integrators-table-dp45-3 = 6 (la dernière sert de première)
 integrators-table-dp45-4 = adaptatif : h suit l'estimation d'erreur
 integrators-table-dp45-5 = stable : les pas rejetés réduisent h
+
+### nonlinear
+
+nonlinear-effect-linear = linéaire
+nonlinear-effect-hardening = ressort raidissant
+nonlinear-effect-softening = ressort assouplissant
+nonlinear-effect-stick-slip = adhérence-glissement
+nonlinear-effect-bump-stop = choc sur la butée
+nonlinear-effect-asymmetric = amortisseur asymétrique
+nonlinear-effect-several = plusieurs à la fois
+nonlinear-effect-escaped = échappement
+nonlinear-join = { "\u00A0; " }
+nonlinear-differ = elles diffèrent au plus de { $deviation } à t = { $time }
+nonlinear-first-swing = première oscillation { $nonlinear } contre { $linear } en linéaire (rapport { $ratio })
+nonlinear-sticks-at = le frottement retient la masse à { $position } à partir de { $time }
+nonlinear-escapes = le calcul non linéaire sort du graphique (|x| > { $limit }) à { $time }
+nonlinear-describe-response = { $effect } : les deux partent ensemble ; { $clauses }.
+nonlinear-describe-phase = Plan de phase : les deux trajectoires partent de x = { $x0 }, v = { $v0 }. La linéaire s'enroule en spirale vers ({ $x_linear }, { $v_linear }) ; la non linéaire finit en x = { $x_end }, v = { $v_end }, avec une vitesse maximale de { $speed } contre { $speed_linear } en linéaire.
+nonlinear-describe-spring = Force de rappel en fonction de l'extension sur ±{ $reach } : le ressort linéaire est la droite k·x ; au plus grand débattement, { $travel }, la force non linéaire vaut { $force } contre { $linear } en linéaire.
+nonlinear-describe-spring-stops = Force de rappel en fonction de l'extension sur ±{ $reach } : le ressort linéaire est la droite k·x ; au plus grand débattement, { $travel }, la force non linéaire vaut { $force } contre { $linear } en linéaire, les butées ajoutant { $rate } au-delà de ±{ $gap }.
+nonlinear-describe-damper = Force d'amortisseur et de frottement en fonction de la vitesse sur ±{ $speed } : à +{ $speed } (détente) elle vaut { $rebound }, à −{ $speed } (compression) { $compression } ; l'amortisseur moyen du modèle linéaire donne ±{ $linear }.
+nonlinear-describe-damper-friction = Force d'amortisseur et de frottement en fonction de la vitesse sur ±{ $speed } : à +{ $speed } (détente) elle vaut { $rebound }, à −{ $speed } (compression) { $compression } ; l'amortisseur moyen du modèle linéaire donne ±{ $linear } ; le frottement de glissement ajoute un saut de ±{ $friction } en v = 0, et au repos le frottement statique retient jusqu'à ±{ $holding }.
+nonlinear-axis-velocity-rebound = vitesse v (+ détente)
+nonlinear-series-stops = butées ±{ $gap }
+nonlinear-series-linear = modèle linéaire
+nonlinear-series-nonlinear = non linéaire (RK4)
+nonlinear-marker-sticks = adhère
+nonlinear-marker-start = départ
+nonlinear-series-linear-spring = k·x linéaire
+nonlinear-series-spring = k·x + k₃·x³ + butées
+nonlinear-series-linear-damper = c̄·v linéaire
+nonlinear-series-damper = amortisseur + frottement
+nonlinear-schematic = Quart de véhicule à t = { $time } : suspension détendue de { $extension }.
+nonlinear-schematic-pressing = Quart de véhicule à t = { $time } : suspension détendue de { $extension }, en appui sur une butée.
+nonlinear-schematic-clear = Quart de véhicule à t = { $time } : suspension détendue de { $extension }, hors contact avec les butées.
+nonlinear-title = Au-delà du modèle linéaire
+nonlinear-summary = Une suspension réelle n'est linéaire que pour de petits mouvements. Ici, le quart de véhicule reçoit un ressort cubique (k₃ > 0 raidissant, k₃ < 0 assouplissant), un amortisseur plus ferme en détente (x′ > 0) qu'en compression, un frottement de Coulomb dans les articulations et des butées en caoutchouc au-delà de ±gap. Le frottement alterne adhérence et glissement : tant que la masse glisse, il freine avec la force F_c ; une fois qu'elle s'arrête, le frottement statique la retient jusqu'à F_static, un multiple fixé de F_c, et elle ne repart que si le ressort tire plus fort. Le mouvement est intégré par RK4, chaque arrêt localisé à l'intérieur de son pas, et tracé face au modèle linéaire m·x″ + c̄·x′ + k·x = 0 (c̄ le coefficient moyen de l'amortisseur) depuis le même départ. Observez où la prédiction échoue : la période dépend de l'amplitude (un ressort raidissant la raccourcit, un ressort assouplissant l'allonge), le frottement fait décroître l'amplitude en ligne droite puis retient définitivement la masse hors du centre (adhérence-glissement), une butée transforme une oscillation douce en choc, et un amortisseur asymétrique décale la position moyenne. Les valeurs par défaut sont un coin de voiture plausible : 300 kg, 24 kN/m (1,4 Hz), un amortisseur de 1 500 N·s/m (ζ ≈ 0,28) et un ressort légèrement progressif. x est l'extension de la suspension depuis l'équilibre statique (positive = caisse vers le haut).
+nonlinear-param-m = masse suspendue
+nonlinear-param-k = raideur linéaire du ressort
+nonlinear-param-k3 = coefficient cubique du ressort (+ raidissant, − assouplissant)
+nonlinear-param-c-comp = coefficient d'amortissement en compression
+nonlinear-param-c-reb = coefficient d'amortissement en détente
+nonlinear-param-friction = force de frottement de Coulomb en glissement
+nonlinear-param-stick-ratio = rapport frottement statique / frottement de glissement
+nonlinear-param-gap = jeu avant la butée
+nonlinear-param-k-stop = raideur de butée (0 = sans butées)
+nonlinear-param-x0 = extension initiale
+nonlinear-param-v0 = vitesse initiale
+nonlinear-readout-effect = non-linéarité dominante
+nonlinear-readout-period-ratio = rapport des périodes de la première oscillation T_nonlinear / T_linear
+nonlinear-readout-max-deviation = plus grand |x_nonlinear − x_linear|
+nonlinear-readout-period-nonlinear = période non linéaire de la première oscillation complète (trois passages par zéro)
+nonlinear-readout-period-linear = période linéaire de la première oscillation complète (= 2π/ω_d)
+nonlinear-readout-max-travel = plus grand |x| (non linéaire)
+nonlinear-readout-stick-position = le frottement retient la masse à
+nonlinear-plot-response = Réponse non linéaire et linéaire x(t)
+nonlinear-plot-phase = Plan de phase (x, v)
+nonlinear-plot-spring = Force du ressort et des butées
+nonlinear-plot-damper = Force de l'amortisseur et du frottement
+nonlinear-preset-1 = Linéaire (tout désactivé)
+nonlinear-preset-2 = Ressort raidissant
+nonlinear-preset-3 = Ressort assouplissant
+nonlinear-preset-4 = Frottement adhérence–glissement
+nonlinear-preset-5 = Choc sur la butée
+nonlinear-preset-6 = Amortisseur asymétrique
+nonlinear-table-caption = Où le modèle linéaire échoue
+nonlinear-table-column-1 = non-linéarité
+nonlinear-table-column-2 = loi de force
+nonlinear-table-column-3 = ce que le modèle linéaire manque
+nonlinear-table-column-4 = signature sur les graphiques
+nonlinear-table-linear-1 = Aucune (linéaire)
+nonlinear-table-linear-2 = k·x + c·x′
+nonlinear-table-linear-3 = rien : le modèle est exact
+nonlinear-table-linear-4 = les deux courbes coïncident
+nonlinear-table-hardening-spring-1 = Ressort raidissant
+nonlinear-table-hardening-spring-2 = k·x + k₃·x³, k₃ > 0
+nonlinear-table-hardening-spring-3 = la fréquence croît avec l'amplitude
+nonlinear-table-hardening-spring-4 = période plus courte tant que l'oscillation est grande ; les courbes s'écartent
+nonlinear-table-softening-spring-1 = Ressort assouplissant
+nonlinear-table-softening-spring-2 = k·x + k₃·x³, k₃ < 0
+nonlinear-table-softening-spring-3 = la fréquence décroît avec l'amplitude ; au-delà de √(−k/k₃) le ressort cède
+nonlinear-table-softening-spring-4 = période plus longue ; un grand départ peut s'échapper
+nonlinear-table-stick-slip-1 = Frottement de Coulomb
+nonlinear-table-stick-slip-2 = F_c·sgn(x′) en glissement ; jusqu'à F_static au repos
+nonlinear-table-stick-slip-3 = l'amplitude décroît d'environ 4F_c/k par cycle, en ligne droite, puis la masse reste collée définitivement là où |k·x| ≤ F_static
+nonlinear-table-stick-slip-4 = enveloppe rectiligne ; une fin plate hors de zéro
+nonlinear-table-bump-stop-impact-1 = Butées
+nonlinear-table-bump-stop-impact-2 = k_stop·(|x| − gap) au-delà de ±gap
+nonlinear-table-bump-stop-impact-3 = un contact brusque et raide : grande force, inversion rapide
+nonlinear-table-bump-stop-impact-4 = pics écrêtés à ±gap ; cassures dans la boucle de phase
+nonlinear-table-asymmetric-damper-1 = Amortisseur asymétrique
+nonlinear-table-asymmetric-damper-2 = c_r·x′ en détente, c_c·x′ en compression
+nonlinear-table-asymmetric-damper-3 = un décalage de la position moyenne (effet de « jacking ») et des demi-cycles inégaux
+nonlinear-table-asymmetric-damper-4 = décroissance dissymétrique ; la spirale de phase est décentrée
+nonlinear-table-several-at-once-1 = Plusieurs à la fois
+nonlinear-table-several-at-once-2 = somme des précédentes
+nonlinear-table-several-at-once-3 = leurs effets s'ajoutent et interagissent
+nonlinear-table-several-at-once-4 = voir chaque ligne
+nonlinear-table-escaped-1 = Ressort assouplissant au-delà de sa limite
+nonlinear-table-escaped-2 = k·x + k₃·x³ < 0 pour |x| > √(−k/k₃)
+nonlinear-table-escaped-3 = le modèle cesse de décrire une suspension
+nonlinear-table-escaped-4 = le calcul est interrompu là où |x| dépasse 1 m

@@ -138,3 +138,105 @@ integrators-table-dp45-2 = 5
 integrators-table-dp45-3 = 6 (a primeira igual à última)
 integrators-table-dp45-4 = adaptativo: h segue a estimativa de erro
 integrators-table-dp45-5 = estável: passos rejeitados reduzem h
+
+### nonlinear
+
+nonlinear-effect-linear = linear
+nonlinear-effect-hardening = mola enrijecedora
+nonlinear-effect-softening = mola amolecedora
+nonlinear-effect-stick-slip = adere-desliza
+nonlinear-effect-bump-stop = impacto no batente
+nonlinear-effect-asymmetric = amortecedor assimétrico
+nonlinear-effect-several = várias ao mesmo tempo
+nonlinear-effect-escaped = fuga
+nonlinear-join = { "; " }
+nonlinear-differ = diferem em até { $deviation } em t = { $time }
+nonlinear-first-swing = primeira oscilação { $nonlinear } contra { $linear } da linear (razão { $ratio })
+nonlinear-sticks-at = o atrito prende a massa em { $position } a partir de { $time }
+nonlinear-escapes = a simulação não linear sai do gráfico (|x| > { $limit }) em { $time }
+nonlinear-describe-response = { $effect }: ambas começam juntas; { $clauses }.
+nonlinear-describe-phase = Plano de fase: ambas as trajetórias começam em x = { $x0 }, v = { $v0 }. A linear descreve uma espiral em direção a ({ $x_linear }, { $v_linear }); a não linear termina em x = { $x_end }, v = { $v_end }, com velocidade máxima de { $speed } contra { $speed_linear } da linear.
+nonlinear-describe-spring = Força restauradora em função da extensão em ±{ $reach }: a mola linear é a reta k·x; no maior curso, { $travel }, a força não linear é { $force } contra { $linear } da linear.
+nonlinear-describe-spring-stops = Força restauradora em função da extensão em ±{ $reach }: a mola linear é a reta k·x; no maior curso, { $travel }, a força não linear é { $force } contra { $linear } da linear, com os batentes somando { $rate } além de ±{ $gap }.
+nonlinear-describe-damper = Força do amortecedor mais atrito em função da velocidade em ±{ $speed }: a +{ $speed } (distensão) vale { $rebound }, a −{ $speed } (compressão) { $compression }; o amortecedor médio do modelo linear dá ±{ $linear }.
+nonlinear-describe-damper-friction = Força do amortecedor mais atrito em função da velocidade em ±{ $speed }: a +{ $speed } (distensão) vale { $rebound }, a −{ $speed } (compressão) { $compression }; o amortecedor médio do modelo linear dá ±{ $linear }; o atrito de deslizamento acrescenta um salto de ±{ $friction } em v = 0, e em repouso o atrito estático segura até ±{ $holding }.
+nonlinear-axis-velocity-rebound = velocidade v (+ distensão)
+nonlinear-series-stops = batentes ±{ $gap }
+nonlinear-series-linear = modelo linear
+nonlinear-series-nonlinear = não linear (RK4)
+nonlinear-marker-sticks = adere
+nonlinear-marker-start = início
+nonlinear-series-linear-spring = k·x linear
+nonlinear-series-spring = k·x + k₃·x³ + batentes
+nonlinear-series-linear-damper = c̄·v linear
+nonlinear-series-damper = amortecedor + atrito
+nonlinear-schematic = Quarto de veículo em t = { $time }: suspensão estendida { $extension }.
+nonlinear-schematic-pressing = Quarto de veículo em t = { $time }: suspensão estendida { $extension }, apoiada num batente.
+nonlinear-schematic-clear = Quarto de veículo em t = { $time }: suspensão estendida { $extension }, sem tocar os batentes.
+nonlinear-title = Além do modelo linear
+nonlinear-summary = Uma suspensão real só é linear para movimentos pequenos. Aqui o quarto de veículo ganha uma mola cúbica (k₃ > 0 enrijecedora, k₃ < 0 amolecedora), um amortecedor mais duro na distensão (x′ > 0) do que na compressão, atrito de Coulomb nas articulações e batentes de borracha além de ±gap. O atrito alterna aderência e deslizamento: enquanto a massa desliza, ele freia com a força F_c; quando ela para, o atrito estático a segura até F_static, um múltiplo fixo de F_c, e ela só volta a se mover se a mola puxar com mais força. O movimento é integrado com RK4, cada parada localizada dentro do seu passo, e desenhado contra o modelo linear m·x″ + c̄·x′ + k·x = 0 (c̄ a constante média do amortecedor) a partir do mesmo início. Observe onde a previsão falha: o período depende da amplitude (a mola enrijecedora o encurta, a amolecedora o alonga), o atrito faz a amplitude cair em linha reta e depois prende a massa fora do centro de vez (adere-desliza), um batente transforma uma oscilação suave num impacto, e um amortecedor assimétrico desloca a posição média. Os valores padrão são um canto de carro plausível: 300 kg, 24 kN/m (1,4 Hz), um amortecedor de 1 500 N·s/m (ζ ≈ 0,28) e uma mola levemente progressiva. x é a extensão da suspensão a partir do equilíbrio estático (positiva = carroceria para cima).
+nonlinear-param-m = massa suspensa
+nonlinear-param-k = rigidez linear da mola
+nonlinear-param-k3 = coeficiente cúbico da mola (+ enrijecedora, − amolecedora)
+nonlinear-param-c-comp = constante do amortecedor na compressão
+nonlinear-param-c-reb = constante do amortecedor na distensão
+nonlinear-param-friction = força de atrito de Coulomb ao deslizar
+nonlinear-param-stick-ratio = razão entre atrito estático e de deslizamento
+nonlinear-param-gap = folga até o batente
+nonlinear-param-k-stop = rigidez do batente (0 = sem batentes)
+nonlinear-param-x0 = extensão inicial
+nonlinear-param-v0 = velocidade inicial
+nonlinear-readout-effect = não linearidade dominante
+nonlinear-readout-period-ratio = razão dos períodos da primeira oscilação T_nonlinear / T_linear
+nonlinear-readout-max-deviation = maior |x_nonlinear − x_linear|
+nonlinear-readout-period-nonlinear = período não linear da primeira oscilação completa (três cruzamentos por zero)
+nonlinear-readout-period-linear = período linear da primeira oscilação completa (= 2π/ω_d)
+nonlinear-readout-max-travel = maior |x| (não linear)
+nonlinear-readout-stick-position = o atrito prende a massa em
+nonlinear-plot-response = Resposta não linear e linear x(t)
+nonlinear-plot-phase = Plano de fase (x, v)
+nonlinear-plot-spring = Força da mola e dos batentes
+nonlinear-plot-damper = Força do amortecedor e do atrito
+nonlinear-preset-1 = Linear (tudo desligado)
+nonlinear-preset-2 = Mola enrijecedora
+nonlinear-preset-3 = Mola amolecedora
+nonlinear-preset-4 = Atrito adere–desliza
+nonlinear-preset-5 = Impacto no batente
+nonlinear-preset-6 = Amortecedor assimétrico
+nonlinear-table-caption = Onde o modelo linear falha
+nonlinear-table-column-1 = não linearidade
+nonlinear-table-column-2 = lei de força
+nonlinear-table-column-3 = o que o modelo linear não capta
+nonlinear-table-column-4 = assinatura nos gráficos
+nonlinear-table-linear-1 = Nenhuma (linear)
+nonlinear-table-linear-2 = k·x + c·x′
+nonlinear-table-linear-3 = nada: o modelo é exato
+nonlinear-table-linear-4 = as duas curvas coincidem
+nonlinear-table-hardening-spring-1 = Mola enrijecedora
+nonlinear-table-hardening-spring-2 = k·x + k₃·x³, k₃ > 0
+nonlinear-table-hardening-spring-3 = a frequência sobe com a amplitude
+nonlinear-table-hardening-spring-4 = período mais curto enquanto a oscilação é grande; as curvas se afastam
+nonlinear-table-softening-spring-1 = Mola amolecedora
+nonlinear-table-softening-spring-2 = k·x + k₃·x³, k₃ < 0
+nonlinear-table-softening-spring-3 = a frequência cai com a amplitude; além de √(−k/k₃) a mola cede
+nonlinear-table-softening-spring-4 = período mais longo; um início grande pode escapar
+nonlinear-table-stick-slip-1 = Atrito de Coulomb
+nonlinear-table-stick-slip-2 = F_c·sgn(x′) ao deslizar; até F_static em repouso
+nonlinear-table-stick-slip-3 = a amplitude cai cerca de 4F_c/k por ciclo, em linha reta, e depois a massa fica presa de vez onde |k·x| ≤ F_static
+nonlinear-table-stick-slip-4 = envoltória reta; um final plano fora do zero
+nonlinear-table-bump-stop-impact-1 = Batentes
+nonlinear-table-bump-stop-impact-2 = k_stop·(|x| − gap) além de ±gap
+nonlinear-table-bump-stop-impact-3 = um contato rígido e súbito: força grande, inversão rápida
+nonlinear-table-bump-stop-impact-4 = picos cortados em ±gap; quebras no laço de fase
+nonlinear-table-asymmetric-damper-1 = Amortecedor assimétrico
+nonlinear-table-asymmetric-damper-2 = c_r·x′ na distensão, c_c·x′ na compressão
+nonlinear-table-asymmetric-damper-3 = um deslocamento da posição média (efeito “jacking”) e semiciclos desiguais
+nonlinear-table-asymmetric-damper-4 = decaimento desigual; a espiral de fase fica fora do centro
+nonlinear-table-several-at-once-1 = Várias ao mesmo tempo
+nonlinear-table-several-at-once-2 = soma das anteriores
+nonlinear-table-several-at-once-3 = seus efeitos se somam e interagem
+nonlinear-table-several-at-once-4 = ver cada linha
+nonlinear-table-escaped-1 = Mola amolecedora além do seu limite
+nonlinear-table-escaped-2 = k·x + k₃·x³ < 0 para |x| > √(−k/k₃)
+nonlinear-table-escaped-3 = o modelo deixa de descrever uma suspensão
+nonlinear-table-escaped-4 = a simulação é cortada onde |x| passa de 1 m

@@ -135,3 +135,105 @@ integrators-table-dp45-2 = 5
 integrators-table-dp45-3 = 6（首级即上一步末级，FSAL）
 integrators-table-dp45-4 = 自适应：h 随误差估计调整
 integrators-table-dp45-5 = 稳定：被拒绝的步会缩小 h
+
+### nonlinear
+
+nonlinear-effect-linear = 线性
+nonlinear-effect-hardening = 渐硬弹簧
+nonlinear-effect-softening = 渐软弹簧
+nonlinear-effect-stick-slip = 粘滑
+nonlinear-effect-bump-stop = 限位块撞击
+nonlinear-effect-asymmetric = 非对称阻尼器
+nonlinear-effect-several = 多种同时存在
+nonlinear-effect-escaped = 逃逸
+nonlinear-join = { "；" }
+nonlinear-differ = 最大相差 { $deviation }，出现在 t = { $time }
+nonlinear-first-swing = 第一次摆动 { $nonlinear }，线性为 { $linear }（比值 { $ratio }）
+nonlinear-sticks-at = 从 { $time } 起摩擦力把质量保持在 { $position }
+nonlinear-escapes = 非线性计算在 { $time } 时离开图形范围（|x| > { $limit }）
+nonlinear-describe-response = { $effect }：两者同时出发；{ $clauses }。
+nonlinear-describe-phase = 相平面：两条轨迹都从 x = { $x0 }、v = { $v0 } 出发。线性轨迹螺旋趋向（{ $x_linear }，{ $v_linear }）；非线性轨迹终止于 x = { $x_end }、v = { $v_end }，其最大速度为 { $speed }，线性为 { $speed_linear }。
+nonlinear-describe-spring = 恢复力随伸长量的变化，范围 ±{ $reach }：线性弹簧为直线 k·x；在最大行程 { $travel } 处，非线性力为 { $force }，线性为 { $linear }。
+nonlinear-describe-spring-stops = 恢复力随伸长量的变化，范围 ±{ $reach }：线性弹簧为直线 k·x；在最大行程 { $travel } 处，非线性力为 { $force }，线性为 { $linear }，超出 ±{ $gap } 后限位块再增加 { $rate }。
+nonlinear-describe-damper = 阻尼力加摩擦力随速度的变化，范围 ±{ $speed }：在 +{ $speed }（回弹）时为 { $rebound }，在 −{ $speed }（压缩）时为 { $compression }；线性模型的平均阻尼给出 ±{ $linear }。
+nonlinear-describe-damper-friction = 阻尼力加摩擦力随速度的变化，范围 ±{ $speed }：在 +{ $speed }（回弹）时为 { $rebound }，在 −{ $speed }（压缩）时为 { $compression }；线性模型的平均阻尼给出 ±{ $linear }；滑动摩擦在 v = 0 处造成 ±{ $friction } 的跳变，静止时静摩擦最多能保持 ±{ $holding }。
+nonlinear-axis-velocity-rebound = 速度 v（+ 为回弹）
+nonlinear-series-stops = 限位块 ±{ $gap }
+nonlinear-series-linear = 线性模型
+nonlinear-series-nonlinear = 非线性（RK4）
+nonlinear-marker-sticks = 粘住
+nonlinear-marker-start = 起点
+nonlinear-series-linear-spring = 线性 k·x
+nonlinear-series-spring = k·x + k₃·x³ + 限位块
+nonlinear-series-linear-damper = 线性 c̄·v
+nonlinear-series-damper = 阻尼器 + 摩擦
+nonlinear-schematic = t = { $time } 时的四分之一车辆：悬架伸长 { $extension }。
+nonlinear-schematic-pressing = t = { $time } 时的四分之一车辆：悬架伸长 { $extension }，正压在限位块上。
+nonlinear-schematic-clear = t = { $time } 时的四分之一车辆：悬架伸长 { $extension }，未接触限位块。
+nonlinear-title = 超越线性模型
+nonlinear-summary = 真实的悬架只在小幅运动时才是线性的。这里的四分之一车辆模型带有三次弹簧（k₃ > 0 为渐硬，k₃ < 0 为渐软）、回弹（x′ > 0）比压缩更硬的阻尼器、关节中的库仑摩擦以及超出 ±gap 后起作用的橡胶限位块。摩擦会交替粘住和滑动：质量滑动时，摩擦以力 F_c 拖拽它；一旦停下，静摩擦最多能以 F_static（F_c 的固定倍数）将其保持住，只有弹簧拉力更大时它才会再次运动。运动用 RK4 积分，每次停止都在其步长内精确定位，并与从同一初始状态出发的线性模型 m·x″ + c̄·x′ + k·x = 0（c̄ 为平均阻尼系数）对比绘制。请观察预测在哪里失效：周期取决于振幅（渐硬弹簧使其缩短，渐软弹簧使其变长），摩擦使振幅按直线下降，然后把质量永久地保持在偏离中心的位置（粘滑），限位块把平滑的摆动变成撞击，非对称阻尼器会使平均位置偏移。默认值是一个合理的车辆角：300 kg、24 kN/m（1.4 Hz）、1 500 N·s/m 的阻尼器（ζ ≈ 0.28）和略带渐进特性的弹簧。x 是悬架相对静平衡位置的伸长量（正值 = 车身向上）。
+nonlinear-param-m = 簧上质量
+nonlinear-param-k = 线性弹簧刚度
+nonlinear-param-k3 = 弹簧三次项系数（+ 渐硬，− 渐软）
+nonlinear-param-c-comp = 压缩阻尼系数
+nonlinear-param-c-reb = 回弹阻尼系数
+nonlinear-param-friction = 滑动时的库仑摩擦力
+nonlinear-param-stick-ratio = 静摩擦与滑动摩擦之比
+nonlinear-param-gap = 限位块间隙
+nonlinear-param-k-stop = 限位块刚度（0 = 无限位块）
+nonlinear-param-x0 = 初始伸长量
+nonlinear-param-v0 = 初始速度
+nonlinear-readout-effect = 主要非线性
+nonlinear-readout-period-ratio = 第一次摆动的周期比 T_nonlinear / T_linear
+nonlinear-readout-max-deviation = 最大 |x_nonlinear − x_linear|
+nonlinear-readout-period-nonlinear = 第一个完整摆动的非线性周期（三次过零）
+nonlinear-readout-period-linear = 第一个完整摆动的线性周期（= 2π/ω_d）
+nonlinear-readout-max-travel = 最大 |x|（非线性）
+nonlinear-readout-stick-position = 摩擦力将质量保持在
+nonlinear-plot-response = 非线性与线性响应 x(t)
+nonlinear-plot-phase = 相平面（x, v）
+nonlinear-plot-spring = 弹簧与限位块力
+nonlinear-plot-damper = 阻尼力与摩擦力
+nonlinear-preset-1 = 线性（全部关闭）
+nonlinear-preset-2 = 渐硬弹簧
+nonlinear-preset-3 = 渐软弹簧
+nonlinear-preset-4 = 摩擦粘滑
+nonlinear-preset-5 = 限位块撞击
+nonlinear-preset-6 = 非对称阻尼器
+nonlinear-table-caption = 线性模型在哪里失效
+nonlinear-table-column-1 = 非线性
+nonlinear-table-column-2 = 力的规律
+nonlinear-table-column-3 = 线性模型遗漏了什么
+nonlinear-table-column-4 = 图中的特征
+nonlinear-table-linear-1 = 无（线性）
+nonlinear-table-linear-2 = k·x + c·x′
+nonlinear-table-linear-3 = 无：模型是精确的
+nonlinear-table-linear-4 = 两条曲线重合
+nonlinear-table-hardening-spring-1 = 渐硬弹簧
+nonlinear-table-hardening-spring-2 = k·x + k₃·x³，k₃ > 0
+nonlinear-table-hardening-spring-3 = 频率随振幅升高
+nonlinear-table-hardening-spring-4 = 摆动大时周期较短；两条曲线逐渐分开
+nonlinear-table-softening-spring-1 = 渐软弹簧
+nonlinear-table-softening-spring-2 = k·x + k₃·x³，k₃ < 0
+nonlinear-table-softening-spring-3 = 频率随振幅降低；超过 √(−k/k₃) 后弹簧失去支撑
+nonlinear-table-softening-spring-4 = 周期较长；初始值大时可能逃逸
+nonlinear-table-stick-slip-1 = 库仑摩擦
+nonlinear-table-stick-slip-2 = 滑动时为 F_c·sgn(x′)；静止时最大 F_static
+nonlinear-table-stick-slip-3 = 振幅每周期按直线下降约 4F_c/k，随后质量在 |k·x| ≤ F_static 处永久粘住
+nonlinear-table-stick-slip-4 = 直线包络；末端平直且不在零点
+nonlinear-table-bump-stop-impact-1 = 限位块
+nonlinear-table-bump-stop-impact-2 = 超出 ±gap 后为 k_stop·(|x| − gap)
+nonlinear-table-bump-stop-impact-3 = 突然的刚性接触：力大、反向快
+nonlinear-table-bump-stop-impact-4 = 峰值在 ±gap 处被削平；相图回线出现折角
+nonlinear-table-asymmetric-damper-1 = 非对称阻尼器
+nonlinear-table-asymmetric-damper-2 = 回弹时为 c_r·x′，压缩时为 c_c·x′
+nonlinear-table-asymmetric-damper-3 = 平均位置偏移（“顶升”效应）且半周期不相等
+nonlinear-table-asymmetric-damper-4 = 衰减不对称；相图螺线偏离中心
+nonlinear-table-several-at-once-1 = 多种同时存在
+nonlinear-table-several-at-once-2 = 以上各项之和
+nonlinear-table-several-at-once-3 = 各效应相互叠加并相互作用
+nonlinear-table-several-at-once-4 = 见各行
+nonlinear-table-escaped-1 = 超出极限的渐软弹簧
+nonlinear-table-escaped-2 = 当 |x| > √(−k/k₃) 时 k·x + k₃·x³ < 0
+nonlinear-table-escaped-3 = 模型不再能描述悬架
+nonlinear-table-escaped-4 = 当 |x| 超过 1 m 时计算被截断
