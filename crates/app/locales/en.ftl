@@ -204,6 +204,44 @@ nonlinear-schematic = Quarter car at t = { $time }: suspension extended { $exten
 nonlinear-schematic-pressing = Quarter car at t = { $time }: suspension extended { $extension }, pressing on a bump stop.
 nonlinear-schematic-clear = Quarter car at t = { $time }: suspension extended { $extension }, clear of the bump stops.
 
+### uncertainty
+
+uncertainty-quantity-zeta = damping ratio ζ
+uncertainty-quantity-f0 = natural frequency f0
+uncertainty-quantity-q = quality factor Q
+uncertainty-quantity-bandwidth = half-power bandwidth
+uncertainty-quantity-settling-time = free-response settling time (±5 %)
+uncertainty-hist-title = Monte Carlo: { $quantity }
+uncertainty-draws-provisional = { $draws } ({ $full } on the way)
+uncertainty-band-nominal-mass = nominal m
+uncertainty-band-lowest-corner = lowest-ζ corner
+uncertainty-band-nominal = nominal
+uncertainty-band-highest-corner = highest-ζ corner
+uncertainty-never = never
+uncertainty-band-suspension = Free response from { $start } with the sprung mass at +{ $percent } %, nominal and −{ $percent } %
+uncertainty-band-rlc = Capacitor voltage from 1 V at the lowest-ζ corner, nominal and highest-ζ corner of the tolerance box
+uncertainty-ignored-rlc = The RLC sliders are ignored.
+uncertainty-ignored-suspension = The suspension sliders are ignored.
+uncertainty-zeta-undefined = ζ is undefined at an end of the range
+uncertainty-zeta-spans = ζ spans { $low }–{ $high }
+uncertainty-describe-band = { $what }: { $zeta }; 5 % settling times (crosses) { $first }, { $second } and { $third }. { $ignored }
+uncertainty-dist-normal = normal (tolerance = 3σ)
+uncertainty-dist-uniform = uniform
+uncertainty-spec-zeta = The spec window ζ { $low }–{ $high } is marked; { $share } of draws meet the whole spec.
+uncertainty-spec-settling-time = The spec limit { $limit } is marked.
+uncertainty-no-finite = No draw has a finite { $quantity }.
+uncertainty-describe-histogram = Histogram of { $quantity } over { $draws } { $distribution } draws: from { $low } to { $high }, 5th percentile { $p5 }, 95th percentile { $p95 }.
+uncertainty-describe-histogram-spec = Histogram of { $quantity } over { $draws } { $distribution } draws: from { $low } to { $high }, 5th percentile { $p5 }, 95th percentile { $p95 }. { $spec }
+uncertainty-provisional-title = { $title } (provisional)
+uncertainty-provisional-description = Provisional: from the first { $shown } draws while the run of { $full } continues. { $description }
+uncertainty-axis-capacitor-voltage = capacitor voltage v_C
+uncertainty-settling-band = 5 % settling band
+uncertainty-axis-draws = draws
+uncertainty-series-bins = draws per bin ({ $bins } bins)
+uncertainty-no-finite-values = no finite values
+uncertainty-spec-limit = spec limit
+uncertainty-percentiles = 5th / 95th percentile
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

@@ -199,6 +199,44 @@ nonlinear-schematic = Cuarto de vehículo en t = { $time }: suspensión extendid
 nonlinear-schematic-pressing = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }, apoyada en un tope.
 nonlinear-schematic-clear = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }, sin tocar los topes.
 
+### uncertainty
+
+uncertainty-quantity-zeta = coeficiente de amortiguamiento ζ
+uncertainty-quantity-f0 = frecuencia natural f0
+uncertainty-quantity-q = factor de calidad Q
+uncertainty-quantity-bandwidth = ancho de banda de media potencia
+uncertainty-quantity-settling-time = tiempo de establecimiento de la respuesta libre (±5 %)
+uncertainty-hist-title = Monte Carlo: { $quantity }
+uncertainty-draws-provisional = { $draws } ({ $full } en camino)
+uncertainty-band-nominal-mass = m nominal
+uncertainty-band-lowest-corner = esquina de ζ mínimo
+uncertainty-band-nominal = nominal
+uncertainty-band-highest-corner = esquina de ζ máximo
+uncertainty-never = nunca
+uncertainty-band-suspension = Respuesta libre desde { $start } con la masa suspendida a +{ $percent } %, nominal y a −{ $percent } %
+uncertainty-band-rlc = Tensión del condensador desde 1 V en la esquina de ζ mínimo, en la nominal y en la esquina de ζ máximo de la caja de tolerancias
+uncertainty-ignored-rlc = Los controles del RLC se ignoran.
+uncertainty-ignored-suspension = Los controles de la suspensión se ignoran.
+uncertainty-zeta-undefined = ζ no está definido en un extremo del intervalo
+uncertainty-zeta-spans = ζ abarca { $low }–{ $high }
+uncertainty-describe-band = { $what }: { $zeta }; tiempos de establecimiento al 5 % (cruces): { $first }, { $second } y { $third }. { $ignored }
+uncertainty-dist-normal = normales (tolerancia = 3σ)
+uncertainty-dist-uniform = uniformes
+uncertainty-spec-zeta = La ventana de especificación de ζ, { $low }–{ $high }, está marcada; el { $share } de los sorteos cumple toda la especificación.
+uncertainty-spec-settling-time = El límite de especificación, { $limit }, está marcado.
+uncertainty-no-finite = Ningún sorteo da un valor finito de { $quantity }.
+uncertainty-describe-histogram = Histograma de { $quantity } en { $draws } sorteos { $distribution }: de { $low } a { $high }; percentil 5: { $p5 }; percentil 95: { $p95 }.
+uncertainty-describe-histogram-spec = Histograma de { $quantity } en { $draws } sorteos { $distribution }: de { $low } a { $high }; percentil 5: { $p5 }; percentil 95: { $p95 }. { $spec }
+uncertainty-provisional-title = { $title } (provisional)
+uncertainty-provisional-description = Provisional: a partir de los primeros { $shown } sorteos mientras continúa la simulación de { $full }. { $description }
+uncertainty-axis-capacitor-voltage = tensión del condensador v_C
+uncertainty-settling-band = banda de establecimiento del 5 %
+uncertainty-axis-draws = sorteos
+uncertainty-series-bins = sorteos por intervalo ({ $bins } intervalos)
+uncertainty-no-finite-values = ningún valor finito
+uncertainty-spec-limit = límite de especificación
+uncertainty-percentiles = percentiles 5 y 95
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes
