@@ -459,6 +459,141 @@ flutter-drawn-larger = drawn { $factor } times larger
 flutter-drawn-note = ({ $drawn })
 flutter-schematic = Bridge deck cross-section at t = { $time }: twisted { $twist } ({ $drawn }), wind { $wind } from the left.
 flutter-wind = wind U = { $speed }
+### integrators
+
+integrators-join = { "; " }
+integrators-legend-dp45-order = DP45: { $order }
+integrators-overflow-note = overflow at t = { $time }
+integrators-failed = failed
+integrators-stable-yes = yes
+integrators-stable-no = no
+integrators-method-euler = forward Euler
+integrators-method-symplectic-euler = symplectic Euler
+integrators-method-heun = Heun
+integrators-method-rk4 = RK4
+integrators-legend-symplectic-euler = sympl. Euler ×
+integrators-legend-dp45 = DP45 ● steps
+integrators-legend-growing = { $legend } ×{ $growth }/step ↑
+integrators-legend-order = { $legend }: { $order }
+integrators-legend-no-fit = { $legend }: no fit
+integrators-legend-dp45-no-order = DP45: no order
+integrators-series-exact = exact
+integrators-axis-error = error |x_num − x_exact|
+integrators-axis-step = step h
+integrators-axis-max-error = max error
+integrators-axis-re = real part Re(hλ)
+integrators-axis-im = imaginary part Im(hλ)
+integrators-axis-evaluations = right-hand-side evaluations N
+integrators-limit-up-to = stable for h ≤ { $step }
+integrators-limit-every = stable for every h
+integrators-limit-none = unstable for every h
+integrators-method-overflows = { $method } overflows at t = { $time } (×{ $growth } per step)
+integrators-method-diverges = { $method } diverges (×{ $growth } per step), max error { $error }
+integrators-method-diverges-clipped = { $method } diverges (×{ $growth } per step, clipped), max error { $error }
+integrators-method-bounded = { $method } stays bounded (×{ $growth } per step), max error { $error }
+integrators-dp45-words = DP45 took { $steps } steps (tolerance { $tolerance }), max error { $error }
+integrators-dp45-failed = DP45 failed: { $reason }
+integrators-failed-underflow = the step size became too small to make progress at t = { $time } (the problem may be too stiff or singular)
+integrators-failed-max-steps = gave up at t = { $time } after { $steps } steps
+integrators-failed-non-finite = the solution became infinite or undefined at t = { $time } (try a smaller step)
+integrators-describe-response = Each method against the exact decaying oscillation over { $duration } with h = { $step } ({ $steps } steps). { $methods }. The plot shows ±{ $range } of the exact amplitude; curves beyond it are clipped at the edge.
+integrators-describe-response-last = Each method against the exact decaying oscillation over { $duration } with h = { $step } ({ $steps } steps, the last { $last } to end at T). { $methods }. The plot shows ±{ $range } of the exact amplitude; curves beyond it are clipped at the edge.
+integrators-error-peak = { $method } largest { $error } at t = { $time }
+integrators-error-peak-growing = { $method } largest { $error } at t = { $time }, growing
+integrators-error-none = { $method } has no finite error
+integrators-error-no-method = No method is switched on.
+integrators-describe-error = Error |x_num − x_exact| on a logarithmic scale at each method's grid points (h = { $step }): { $methods }.
+integrators-describe-error-clipped = Error |x_num − x_exact| on a logarithmic scale at each method's grid points (h = { $step }): { $methods }. Errors above { $clip } are clipped at the top.
+integrators-fit = { $method } fitted slope { $slope } (h = { $from } … { $to })
+integrators-fit-overflows = { $method } fitted slope { $slope } (h = { $from } … { $to }), overflows for h ≥ { $limit }
+integrators-no-fit = { $method } no fit (too few points in the asymptotic range)
+integrators-no-fit-overflows = { $method } no fit (too few points in the asymptotic range), overflows for h ≥ { $limit }
+integrators-slope = slope { $order }
+integrators-describe-convergence = Largest error at { $points } common check points against the step h, for up to { $levels } step sizes halving from { $from } (at most { $budget } steps per method in all, { $euler_budget } for forward Euler; finer steps are skipped). { $methods }. Each order is fitted over the asymptotic range only, drawn as the thick segment: the finest steps whose local slopes agree within { $spread }, with errors below { $ceiling } and above 1e-10 of x₀. Reference slopes 1 and 4 are dotted; the current h is the dashed vertical line. DP45 has no single h: see the work–precision plot.
+integrators-off-scale = { $name } = { $value } (off scale)
+integrators-path = hλ as h grows
+integrators-z-real-pair = z = hλ = { $z1 } and { $z2 }
+integrators-region-inside = { $method }: inside its region, |R| = { $growth }, { $limit }
+integrators-region-outside = { $method }: outside its region, |R| = { $growth }, { $limit }
+integrators-describe-stability = Stability regions |R(z)| ≤ 1 in the complex plane of z = hλ (inside each closed curve; forward Euler's is the disk |1 + z| ≤ 1). The system's two poles at h = { $step } give { $z }. { $methods }. Symplectic Euler is not a scalar map R(z): its 2×2 step matrix has spectral radius { $radius } here, { $limit }. DP45 chooses its own steps and keeps them stable.
+integrators-work-words = { $method } from { $error_first } with { $work_first } evaluations to { $error_last } with { $work_last }
+integrators-describe-work = Largest error against the work it cost, counted in evaluations of the right-hand side f, on log–log axes, for every method: fixed-step ones at the convergence study's step sizes (error at its common check points), DP45 at tolerances { $from } … { $to } (error over its accepted steps). Lower is more accurate, further left is cheaper; a method of order p falls with slope −p; DP45's runs are dots where the tolerance sets their steps and crosses where stability does. { $methods }.
+integrators-dp45-stability-runs = runs whose steps stability sets (more than { $share } of the steps at { $fraction } or more of its largest stable step): { $count }/{ $runs }
+integrators-dp45-order = DP45 observed order { $order } (fitted over { $from } … { $to } evaluations, where the tolerance sets its steps); { $runs }
+integrators-dp45-no-order = DP45 has no observed order: stability sets its steps, or too few runs remain in the asymptotic range; { $runs }
+
+### nonlinear
+
+nonlinear-effect-linear = linear
+nonlinear-effect-hardening = hardening spring
+nonlinear-effect-softening = softening spring
+nonlinear-effect-stick-slip = stick-slip
+nonlinear-effect-bump-stop = bump-stop impact
+nonlinear-effect-asymmetric = asymmetric damper
+nonlinear-effect-several = several at once
+nonlinear-effect-escaped = escaped
+nonlinear-join = { "; " }
+nonlinear-differ = they differ by up to { $deviation } at t = { $time }
+nonlinear-first-swing = first swing { $nonlinear } against the linear { $linear } (ratio { $ratio })
+nonlinear-sticks-at = friction holds the mass at { $position } from { $time }
+nonlinear-escapes = the nonlinear run leaves the plot (|x| > { $limit }) at { $time }
+nonlinear-describe-response = { $effect }: both start together; { $clauses }.
+nonlinear-describe-phase = Phase plane: both trajectories start at x = { $x0 }, v = { $v0 }. The linear one spirals in towards ({ $x_linear }, { $v_linear }); the nonlinear one ends at x = { $x_end }, v = { $v_end }, its largest speed { $speed } against the linear { $speed_linear }.
+nonlinear-describe-spring = Restoring force against extension over ±{ $reach }: the linear spring is the straight line k·x; at the largest travel { $travel } the nonlinear force is { $force } against the linear { $linear }.
+nonlinear-describe-spring-stops = Restoring force against extension over ±{ $reach }: the linear spring is the straight line k·x; at the largest travel { $travel } the nonlinear force is { $force } against the linear { $linear }, the bump stops adding { $rate } beyond ±{ $gap }.
+nonlinear-describe-damper = Damper plus friction force against velocity over ±{ $speed }: at +{ $speed } (rebound) it is { $rebound }, at −{ $speed } (compression) { $compression }; the linear model's mean damper gives ±{ $linear }.
+nonlinear-describe-damper-friction = Damper plus friction force against velocity over ±{ $speed }: at +{ $speed } (rebound) it is { $rebound }, at −{ $speed } (compression) { $compression }; the linear model's mean damper gives ±{ $linear }; sliding friction adds a jump of ±{ $friction } at v = 0, and at rest static friction holds up to ±{ $holding }.
+nonlinear-axis-velocity-rebound = velocity v (+ rebound)
+nonlinear-series-stops = bump stops ±{ $gap }
+nonlinear-series-linear = linear model
+nonlinear-series-nonlinear = nonlinear (RK4)
+nonlinear-marker-sticks = sticks
+nonlinear-marker-start = start
+nonlinear-series-linear-spring = linear k·x
+nonlinear-series-spring = k·x + k₃·x³ + stops
+nonlinear-series-linear-damper = linear c̄·v
+nonlinear-series-damper = damper + friction
+nonlinear-schematic = Quarter car at t = { $time }: suspension extended { $extension }.
+nonlinear-schematic-pressing = Quarter car at t = { $time }: suspension extended { $extension }, pressing on a bump stop.
+nonlinear-schematic-clear = Quarter car at t = { $time }: suspension extended { $extension }, clear of the bump stops.
+
+### uncertainty
+
+uncertainty-quantity-zeta = damping ratio ζ
+uncertainty-quantity-f0 = natural frequency f0
+uncertainty-quantity-q = quality factor Q
+uncertainty-quantity-bandwidth = half-power bandwidth
+uncertainty-quantity-settling-time = free-response settling time (±5 %)
+uncertainty-hist-title = Monte Carlo: { $quantity }
+uncertainty-draws-provisional = { $draws } ({ $full } on the way)
+uncertainty-band-nominal-mass = nominal m
+uncertainty-band-lowest-corner = lowest-ζ corner
+uncertainty-band-nominal = nominal
+uncertainty-band-highest-corner = highest-ζ corner
+uncertainty-never = never
+uncertainty-band-suspension = Free response from { $start } with the sprung mass at +{ $percent } %, nominal and −{ $percent } %
+uncertainty-band-rlc = Capacitor voltage from 1 V at the lowest-ζ corner, nominal and highest-ζ corner of the tolerance box
+uncertainty-ignored-rlc = The RLC sliders are ignored.
+uncertainty-ignored-suspension = The suspension sliders are ignored.
+uncertainty-zeta-undefined = ζ is undefined at an end of the range
+uncertainty-zeta-spans = ζ spans { $low }–{ $high }
+uncertainty-describe-band = { $what }: { $zeta }; 5 % settling times (crosses) { $first }, { $second } and { $third }. { $ignored }
+uncertainty-dist-normal = normal (tolerance = 3σ)
+uncertainty-dist-uniform = uniform
+uncertainty-spec-zeta = The spec window ζ { $low }–{ $high } is marked; { $share } of draws meet the whole spec.
+uncertainty-spec-settling-time = The spec limit { $limit } is marked.
+uncertainty-no-finite = No draw has a finite { $quantity }.
+uncertainty-describe-histogram = Histogram of { $quantity } over { $draws } { $distribution } draws: from { $low } to { $high }, 5th percentile { $p5 }, 95th percentile { $p95 }.
+uncertainty-describe-histogram-spec = Histogram of { $quantity } over { $draws } { $distribution } draws: from { $low } to { $high }, 5th percentile { $p5 }, 95th percentile { $p95 }. { $spec }
+uncertainty-provisional-title = { $title } (provisional)
+uncertainty-provisional-description = Provisional: from the first { $shown } draws while the run of { $full } continues. { $description }
+uncertainty-axis-capacitor-voltage = capacitor voltage v_C
+uncertainty-settling-band = 5 % settling band
+uncertainty-axis-draws = draws
+uncertainty-series-bins = draws per bin ({ $bins } bins)
+uncertainty-no-finite-values = no finite values
+uncertainty-spec-limit = spec limit
+uncertainty-percentiles = 5th / 95th percentile
 
 ## Declared strings (generated from the demo declarations)
 

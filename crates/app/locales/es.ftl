@@ -451,6 +451,144 @@ flutter-drawn-larger = dibujado { $factor } veces mayor
 flutter-drawn-note = ({ $drawn })
 flutter-schematic = Sección del tablero del puente en t = { $time }: girado { $twist } ({ $drawn }), viento de { $wind } desde la izquierda.
 flutter-wind = viento U = { $speed }
+### integrators
+
+integrators-join = { "; " }
+integrators-legend-dp45-order = DP45: { $order }
+integrators-overflow-note = desbordamiento en t = { $time }
+integrators-failed = falló
+integrators-stable-yes = sí
+integrators-stable-no = no
+integrators-method-euler = Euler explícito
+integrators-method-symplectic-euler = Euler simpléctico
+integrators-method-heun = Heun
+integrators-method-rk4 = RK4
+integrators-legend-symplectic-euler = Euler simpl. ×
+integrators-legend-dp45 = DP45 ● pasos
+integrators-legend-growing = { $legend } ×{ $growth }/paso ↑
+integrators-legend-order = { $legend }: { $order }
+integrators-legend-no-fit = { $legend }: sin ajuste
+integrators-legend-dp45-no-order = DP45: sin orden
+integrators-series-exact = exacta
+integrators-axis-error = error |x_num − x_exact|
+integrators-axis-step = paso h
+integrators-axis-max-error = error máximo
+integrators-axis-re = parte real Re(hλ)
+integrators-axis-im = parte imaginaria Im(hλ)
+integrators-axis-evaluations = evaluaciones del segundo miembro N
+integrators-limit-up-to = estable para h ≤ { $step }
+integrators-limit-every = estable para todo h
+integrators-limit-none = inestable para todo h
+integrators-method-overflows = { $method } se desborda en t = { $time } (×{ $growth } por paso)
+integrators-method-diverges = { $method } diverge (×{ $growth } por paso), error máximo { $error }
+integrators-method-diverges-clipped = { $method } diverge (×{ $growth } por paso, recortado), error máximo { $error }
+integrators-method-bounded = { $method } permanece acotado (×{ $growth } por paso), error máximo { $error }
+integrators-dp45-words = DP45 dio { $steps ->
+        [one] { $steps } paso
+       *[other] { $steps } pasos
+    } (tolerancia { $tolerance }), error máximo { $error }
+integrators-dp45-failed = DP45 falló: { $reason }
+integrators-failed-underflow = el paso se hizo demasiado pequeño para avanzar en t = { $time } (el problema puede ser demasiado rígido o singular)
+integrators-failed-max-steps = se detuvo en t = { $time } tras { $steps } pasos
+integrators-failed-non-finite = la solución se hizo infinita o indefinida en t = { $time } (pruebe un paso menor)
+integrators-describe-response = Cada método frente a la oscilación amortiguada exacta durante { $duration } con h = { $step } ({ $steps } pasos). { $methods }. La gráfica muestra ±{ $range } de la amplitud exacta; las curvas que la sobrepasan se recortan en el borde.
+integrators-describe-response-last = Cada método frente a la oscilación amortiguada exacta durante { $duration } con h = { $step } ({ $steps } pasos, el último de { $last } para terminar en T). { $methods }. La gráfica muestra ±{ $range } de la amplitud exacta; las curvas que la sobrepasan se recortan en el borde.
+integrators-error-peak = { $method }: máximo { $error } en t = { $time }
+integrators-error-peak-growing = { $method }: máximo { $error } en t = { $time }, creciente
+integrators-error-none = { $method }: sin error finito
+integrators-error-no-method = No hay ningún método activado.
+integrators-describe-error = Error |x_num − x_exact| en escala logarítmica en los puntos de la malla de cada método (h = { $step }): { $methods }.
+integrators-describe-error-clipped = Error |x_num − x_exact| en escala logarítmica en los puntos de la malla de cada método (h = { $step }): { $methods }. Los errores por encima de { $clip } se recortan en el borde superior.
+integrators-fit = { $method }: pendiente ajustada { $slope } (h = { $from } … { $to })
+integrators-fit-overflows = { $method }: pendiente ajustada { $slope } (h = { $from } … { $to }), se desborda para h ≥ { $limit }
+integrators-no-fit = { $method }: sin ajuste (demasiado pocos puntos en el rango asintótico)
+integrators-no-fit-overflows = { $method }: sin ajuste (demasiado pocos puntos en el rango asintótico), se desborda para h ≥ { $limit }
+integrators-slope = pendiente { $order }
+integrators-describe-convergence = Error máximo en { $points } puntos de control comunes frente al paso h, para hasta { $levels } tamaños de paso que se reducen a la mitad desde { $from } (como mucho { $budget } pasos por método en total, { $euler_budget } para Euler explícito; los pasos más finos se omiten). { $methods }. Cada orden se ajusta solo en el rango asintótico, dibujado como el segmento grueso: los pasos más finos cuyas pendientes locales coinciden con un margen de { $spread }, con errores por debajo del { $ceiling } y por encima de 1e-10 de x₀. Las pendientes de referencia 1 y 4 van punteadas; el h actual es la línea vertical discontinua. DP45 no tiene un único h: véase la gráfica de trabajo–precisión.
+integrators-off-scale = { $name } = { $value } (fuera de escala)
+integrators-path = hλ al crecer h
+integrators-z-real-pair = z = hλ = { $z1 } y { $z2 }
+integrators-region-inside = { $method }: dentro de su región, |R| = { $growth }, { $limit }
+integrators-region-outside = { $method }: fuera de su región, |R| = { $growth }, { $limit }
+integrators-describe-stability = Regiones de estabilidad |R(z)| ≤ 1 en el plano complejo de z = hλ (el interior de cada curva cerrada; la del método de Euler explícito es el disco |1 + z| ≤ 1). Los dos polos del sistema con h = { $step } dan { $z }. { $methods }. El método de Euler simpléctico no es una aplicación escalar R(z): su matriz de paso 2×2 tiene radio espectral { $radius } en este caso; { $limit }. DP45 elige sus propios pasos y los mantiene estables.
+integrators-work-words = { $method }: de { $error_first } con { $work_first } evaluaciones a { $error_last } con { $work_last }
+integrators-describe-work = Error máximo frente al trabajo que costó, contado en evaluaciones del segundo miembro f, en ejes log–log, para cada método: los de paso fijo con los tamaños de paso del estudio de convergencia (error en sus puntos de control comunes), DP45 con tolerancias de { $from } … { $to } (error en sus pasos aceptados). Más abajo es más preciso, más a la izquierda es más barato; un método de orden p cae con pendiente −p; las ejecuciones de DP45 son puntos donde la tolerancia fija sus pasos y cruces donde los fija la estabilidad. { $methods }.
+integrators-dp45-stability-runs = ejecuciones cuyos pasos fija la estabilidad (más del { $share } de los pasos en el { $fraction } o más de su mayor paso estable): { $count }/{ $runs }
+integrators-dp45-order = DP45: orden observado { $order } (ajustado en { $from } … { $to } evaluaciones, donde la tolerancia fija sus pasos); { $runs }
+integrators-dp45-no-order = DP45 no tiene orden observado: la estabilidad fija sus pasos, o quedan demasiado pocas ejecuciones en el rango asintótico; { $runs }
+
+### nonlinear
+
+nonlinear-effect-linear = lineal
+nonlinear-effect-hardening = resorte rigidizante
+nonlinear-effect-softening = resorte ablandante
+nonlinear-effect-stick-slip = adherencia-deslizamiento
+nonlinear-effect-bump-stop = impacto contra el tope
+nonlinear-effect-asymmetric = amortiguador asimétrico
+nonlinear-effect-several = varias a la vez
+nonlinear-effect-escaped = escape
+nonlinear-join = { "; " }
+nonlinear-differ = difieren hasta { $deviation } en t = { $time }
+nonlinear-first-swing = primera oscilación { $nonlinear } frente a { $linear } la lineal (razón { $ratio })
+nonlinear-sticks-at = la fricción retiene la masa en { $position } desde { $time }
+nonlinear-escapes = la simulación no lineal sale de la gráfica (|x| > { $limit }) en { $time }
+nonlinear-describe-response = { $effect }: ambas empiezan juntas; { $clauses }.
+nonlinear-describe-phase = Plano de fase: ambas trayectorias empiezan en x = { $x0 }, v = { $v0 }. La lineal describe una espiral hacia ({ $x_linear }, { $v_linear }); la no lineal termina en x = { $x_end }, v = { $v_end }, con velocidad máxima { $speed } frente a { $speed_linear } la lineal.
+nonlinear-describe-spring = Fuerza restauradora frente a la extensión en ±{ $reach }: el resorte lineal es la recta k·x; en el recorrido máximo, { $travel }, la fuerza no lineal es { $force } frente a { $linear } la lineal.
+nonlinear-describe-spring-stops = Fuerza restauradora frente a la extensión en ±{ $reach }: el resorte lineal es la recta k·x; en el recorrido máximo, { $travel }, la fuerza no lineal es { $force } frente a { $linear } la lineal, con los topes añadiendo { $rate } más allá de ±{ $gap }.
+nonlinear-describe-damper = Fuerza de amortiguador más fricción frente a la velocidad en ±{ $speed }: a +{ $speed } (rebote) vale { $rebound }, a −{ $speed } (compresión) { $compression }; el amortiguador medio del modelo lineal da ±{ $linear }.
+nonlinear-describe-damper-friction = Fuerza de amortiguador más fricción frente a la velocidad en ±{ $speed }: a +{ $speed } (rebote) vale { $rebound }, a −{ $speed } (compresión) { $compression }; el amortiguador medio del modelo lineal da ±{ $linear }; la fricción de deslizamiento añade un salto de ±{ $friction } en v = 0, y en reposo la fricción estática sostiene hasta ±{ $holding }.
+nonlinear-axis-velocity-rebound = velocidad v (+ rebote)
+nonlinear-series-stops = topes ±{ $gap }
+nonlinear-series-linear = modelo lineal
+nonlinear-series-nonlinear = no lineal (RK4)
+nonlinear-marker-sticks = se pega
+nonlinear-marker-start = inicio
+nonlinear-series-linear-spring = k·x lineal
+nonlinear-series-spring = k·x + k₃·x³ + topes
+nonlinear-series-linear-damper = c̄·v lineal
+nonlinear-series-damper = amortiguador + fricción
+nonlinear-schematic = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }.
+nonlinear-schematic-pressing = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }, apoyada en un tope.
+nonlinear-schematic-clear = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }, sin tocar los topes.
+
+### uncertainty
+
+uncertainty-quantity-zeta = coeficiente de amortiguamiento ζ
+uncertainty-quantity-f0 = frecuencia natural f0
+uncertainty-quantity-q = factor de calidad Q
+uncertainty-quantity-bandwidth = ancho de banda de media potencia
+uncertainty-quantity-settling-time = tiempo de establecimiento de la respuesta libre (±5 %)
+uncertainty-hist-title = Monte Carlo: { $quantity }
+uncertainty-draws-provisional = { $draws } ({ $full } en camino)
+uncertainty-band-nominal-mass = m nominal
+uncertainty-band-lowest-corner = esquina de ζ mínimo
+uncertainty-band-nominal = nominal
+uncertainty-band-highest-corner = esquina de ζ máximo
+uncertainty-never = nunca
+uncertainty-band-suspension = Respuesta libre desde { $start } con la masa suspendida a +{ $percent } %, nominal y a −{ $percent } %
+uncertainty-band-rlc = Tensión del condensador desde 1 V en la esquina de ζ mínimo, en la nominal y en la esquina de ζ máximo de la caja de tolerancias
+uncertainty-ignored-rlc = Los controles del RLC se ignoran.
+uncertainty-ignored-suspension = Los controles de la suspensión se ignoran.
+uncertainty-zeta-undefined = ζ no está definido en un extremo del intervalo
+uncertainty-zeta-spans = ζ abarca { $low }–{ $high }
+uncertainty-describe-band = { $what }: { $zeta }; tiempos de establecimiento al 5 % (cruces): { $first }, { $second } y { $third }. { $ignored }
+uncertainty-dist-normal = normales (tolerancia = 3σ)
+uncertainty-dist-uniform = uniformes
+uncertainty-spec-zeta = La ventana de especificación de ζ, { $low }–{ $high }, está marcada; el { $share } de los sorteos cumple toda la especificación.
+uncertainty-spec-settling-time = El límite de especificación, { $limit }, está marcado.
+uncertainty-no-finite = Ningún sorteo da un valor finito de { $quantity }.
+uncertainty-describe-histogram = Histograma de { $quantity } en { $draws } sorteos { $distribution }: de { $low } a { $high }; percentil 5: { $p5 }; percentil 95: { $p95 }.
+uncertainty-describe-histogram-spec = Histograma de { $quantity } en { $draws } sorteos { $distribution }: de { $low } a { $high }; percentil 5: { $p5 }; percentil 95: { $p95 }. { $spec }
+uncertainty-provisional-title = { $title } (provisional)
+uncertainty-provisional-description = Provisional: a partir de los primeros { $shown } sorteos mientras continúa la simulación de { $full }. { $description }
+uncertainty-axis-capacitor-voltage = tensión del condensador v_C
+uncertainty-settling-band = banda de establecimiento del 5 %
+uncertainty-axis-draws = sorteos
+uncertainty-series-bins = sorteos por intervalo ({ $bins } intervalos)
+uncertainty-no-finite-values = ningún valor finito
+uncertainty-spec-limit = límite de especificación
+uncertainty-percentiles = percentiles 5 y 95
 
 ## Declared strings (generated from the demo declarations)
 
@@ -973,7 +1111,7 @@ flutter-table-negatively-damped-6 = una sección cuyo A₂* siga siendo negativo
 ### nonlinear
 
 nonlinear-title = Más allá del modelo lineal
-nonlinear-summary = Una suspensión real solo es lineal para movimientos pequeños. Aquí el cuarto de vehículo tiene un resorte cúbico (k₃ > 0 rigidizante, k₃ < 0 ablandante), un amortiguador más duro en rebote (x′ > 0) que en compresión, fricción de Coulomb en las articulaciones y topes de goma más allá de ±gap. La fricción se pega y desliza: mientras la masa desliza, frena con la fuerza F_c; cuando se detiene, la fricción estática la sujeta hasta F_static, un múltiplo fijo de F_c, y solo vuelve a moverse si el resorte tira con más fuerza. El movimiento se integra con RK4, localizando cada parada dentro de su paso, y se dibuja frente al modelo lineal m·x″ + c̄·x′ + k·x = 0 (c̄ la constante media del amortiguador) desde el mismo inicio. Observe dónde falla la predicción: el periodo depende de la amplitud (el resorte rigidizante lo acorta, el ablandante lo alarga), la fricción hace caer la amplitud en línea recta y luego retiene la masa descentrada para siempre (adherencia-deslizamiento), un tope convierte una oscilación suave en un impacto, y un amortiguador asimétrico desplaza la posición media. Los valores por defecto son una esquina de coche verosímil: 300 kg, 24 kN/m (1,4 Hz), un amortiguador de 1 500 N·s/m (ζ ≈ 0,28) y un resorte algo progresivo. x es la extensión de la suspensión desde el equilibrio estático (positiva = carrocería hacia arriba).
+nonlinear-summary = Una suspensión real solo es lineal para movimientos pequeños. Aquí el cuarto de vehículo tiene un resorte cúbico (k₃ > 0 rigidizante, k₃ < 0 ablandante), un amortiguador más duro en rebote (x′ > 0) que en compresión, fricción de Coulomb en las articulaciones y topes de goma más allá de ±gap. La fricción alterna adherencia y deslizamiento: mientras la masa desliza, frena con la fuerza F_c; cuando se detiene, la fricción estática la sujeta hasta F_static, un múltiplo fijo de F_c, y solo vuelve a moverse si el resorte tira con más fuerza. El movimiento se integra con RK4, localizando cada parada dentro de su paso, y se dibuja frente al modelo lineal m·x″ + c̄·x′ + k·x = 0 (c̄ la constante media del amortiguador) desde el mismo inicio. Observe dónde falla la predicción: el periodo depende de la amplitud (el resorte rigidizante lo acorta, el ablandante lo alarga), la fricción hace caer la amplitud en línea recta y luego retiene la masa descentrada para siempre (adherencia-deslizamiento), un tope convierte una oscilación suave en un impacto, y un amortiguador asimétrico desplaza la posición media. Los valores por defecto son una esquina de coche verosímil: 300 kg, 24 kN/m (1,4 Hz), un amortiguador de 1 500 N·s/m (ζ ≈ 0,28) y un resorte algo progresivo. x es la extensión de la suspensión desde el equilibrio estático (positiva = carrocería hacia arriba).
 nonlinear-param-m = masa suspendida
 nonlinear-param-k = rigidez lineal del resorte
 nonlinear-param-k3 = coeficiente cúbico del resorte (+ rigidizante, − ablandante)

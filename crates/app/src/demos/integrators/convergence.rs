@@ -5,10 +5,11 @@
 use super::axes::log_axis;
 use super::figures::{mark, ERROR_CLIP, LOOKS};
 use super::model::{EULER_BUDGET, FIT_CEILING, FIT_FLOOR, LEVELS, SPREAD, STUDY_BUDGET};
-use super::{Results, P};
+use super::{text, Results, P};
 use crate::figure::{Figure, LineStyle, Marker, MarkerShape, Series};
-use crate::format::si;
+use crate::format::{si, significant};
 use crate::plot::{sampled, Ink};
+use crate::t;
 use zeta_solver::grid::{exp10, log10, logspace};
 use zeta_solver::integrate::convergence::{NestedStudy, PowerLaw, RunStatus};
 
@@ -17,8 +18,8 @@ pub(super) const TITLE: &str = "Convergence: max error against step h";
 /// Legend and drawing of one method's sweep.
 struct Sweep<'a> {
     sweep: &'a NestedStudy,
-    name: &'a str,
-    legend: &'a str,
+    name: String,
+    legend: String,
     style: LineStyle,
     shape: Option<MarkerShape>,
     show: bool,
@@ -51,19 +52,36 @@ impl Canvas {
             .filter(|(st, _)| **st == RunStatus::Overflow)
             .map(|(_, q)| q.h)
             .fold(0.0f64, f64::max);
-        let order = match (study.order, study.fitted_span()) {
-            (Some(o), Some((lo, hi))) => format!(
-                "fitted slope {} (h = {} … {})",
-                si(o, "", 3),
-                si(lo, "s", 3),
-                si(hi, "s", 3)
+        let limit = si(overflowed, "s", 3);
+        let w = match (study.order, study.fitted_span(), overflowed > 0.0) {
+            (Some(o), Some((lo, hi)), overflows) => {
+                let (slope, from, to) = (si(o, "", 3), si(lo, "s", 3), si(hi, "s", 3));
+                if overflows {
+                    t!(
+                        "integrators-fit-overflows",
+                        method = &s.name,
+                        slope = slope,
+                        from = from,
+                        to = to,
+                        limit = limit
+                    )
+                } else {
+                    t!(
+                        "integrators-fit",
+                        method = &s.name,
+                        slope = slope,
+                        from = from,
+                        to = to
+                    )
+                }
+            }
+            (_, _, true) => t!(
+                "integrators-no-fit-overflows",
+                method = &s.name,
+                limit = limit
             ),
-            _ => "no fit (too few points in the asymptotic range)".into(),
+            (_, _, false) => t!("integrators-no-fit", method = &s.name),
         };
-        let mut w = format!("{} {order}", s.name);
-        if overflowed > 0.0 {
-            w.push_str(&format!(", overflows for h ≥ {}", si(overflowed, "s", 3)));
-        }
         self.words.push(w);
         if !s.show {
             return;
@@ -88,8 +106,12 @@ impl Canvas {
             ));
         }
         let label = match study.order {
-            Some(o) => format!("{}: {}", s.legend, si(o, "", 3)),
-            None => format!("{}: no fit", s.legend),
+            Some(o) => t!(
+                "integrators-legend-order",
+                legend = &s.legend,
+                order = si(o, "", 3)
+            ),
+            None => t!("integrators-legend-no-fit", legend = &s.legend),
         };
         self.series.push(Series::new(label, pts, s.style));
     }
@@ -110,8 +132,8 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
         if let Some(sweep) = study.fixed.get(k) {
             c.add(Sweep {
                 sweep,
-                name: look.name,
-                legend: look.legend,
+                name: look.name(),
+                legend: look.legend(),
                 style: look.style,
                 shape: look.mark,
                 show: p.show[k],
@@ -144,7 +166,7 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
         let h_at = (x_range.0 * 1.15).max(line.step_for(y_range.0 * 3.0));
         if h_at < x_range.1 {
             c.markers.push(Marker::text(
-                format!("slope {order}"),
+                t!("integrators-slope", order = significant(order, 1)),
                 (h_at, line.at(h_at)),
                 Ink::Black,
             ));
@@ -160,30 +182,24 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
         vec![(r.h, y_range.0), (r.h, y_range.1)],
         LineStyle::dashed(Ink::Sky, 1.2),
     ));
-    let description = format!(
-        "Largest error at {} common check points against the step h, for up to {} step sizes \
-         halving from {} (at most {} steps per method in all, {} for forward Euler; finer steps \
-         are skipped). {}. Each \
-         order is fitted over the asymptotic range only, drawn as the thick segment: the finest \
-         steps whose local slopes agree within {}, with errors below {} % and above 1e-10 of \
-         x₀. Reference slopes 1 and 4 are dotted; the current h is the dashed vertical line. \
-         DP45 has no single h: see the work–precision plot.",
-        study.grids.intervals() + 1,
-        LEVELS,
-        si(study.grids.step(0), "s", 3),
-        STUDY_BUDGET,
-        EULER_BUDGET,
-        c.words.join("; "),
-        SPREAD,
-        FIT_CEILING * 100.0
+    let description = t!(
+        "integrators-describe-convergence",
+        points = study.grids.intervals() + 1,
+        levels = LEVELS,
+        from = si(study.grids.step(0), "s", 3),
+        budget = STUDY_BUDGET,
+        euler_budget = EULER_BUDGET,
+        methods = text::join(&c.words),
+        spread = significant(SPREAD, 1),
+        ceiling = si(FIT_CEILING * 100.0, "%", 2)
     );
     Figure {
         series: c.series,
         markers: c.markers,
         ..Figure::plot(
-            TITLE,
-            log_axis("step h", "s", x_range),
-            log_axis("max error", "m", y_range),
+            t!("integrators-plot-convergence"),
+            log_axis(&t!("integrators-axis-step"), "s", x_range),
+            log_axis(&t!("integrators-axis-max-error"), "m", y_range),
         )
     }
     .described(description)

@@ -6,6 +6,7 @@ use super::{text, Results, P};
 use crate::figure::{Axis, Figure, LineStyle, Marker, MarkerShape, Series};
 use crate::format::si;
 use crate::plot::Ink;
+use crate::t;
 
 pub(super) const RESPONSE_TITLE: &str = "Numerical solutions and the exact x(t)";
 pub(super) const ERROR_TITLE: &str = "Error over time";
@@ -24,44 +25,66 @@ pub(super) const ERROR_CLIP: f64 = 1e8;
 /// How one fixed-step method is drawn and named.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Look {
-    pub name: &'static str,
+    /// Which method: `euler`, `symplectic_euler`, `heun` or `rk4`.
+    pub key: &'static str,
     pub style: LineStyle,
     /// Marker drawn on the curve so it is told apart without colour.
     pub mark: Option<MarkerShape>,
-    pub legend: &'static str,
+}
+
+impl Look {
+    /// The method's name in prose.
+    pub fn name(&self) -> String {
+        match self.key {
+            "euler" => t!("integrators-method-euler"),
+            "symplectic_euler" => t!("integrators-method-symplectic-euler"),
+            "heun" => t!("integrators-method-heun"),
+            _ => t!("integrators-method-rk4"),
+        }
+    }
+
+    /// The method's legend entry.
+    pub fn legend(&self) -> String {
+        match self.key {
+            "euler" => "Euler".to_string(),
+            "symplectic_euler" => t!("integrators-legend-symplectic-euler"),
+            "heun" => "Heun".to_string(),
+            _ => "RK4".to_string(),
+        }
+    }
 }
 
 /// The fixed-step methods' looks, in readout order.
 pub(super) const LOOKS: [Look; 4] = [
     Look {
-        name: "forward Euler",
+        key: "euler",
         style: LineStyle::dashed(Ink::Vermillion, 2.0),
         mark: None,
-        legend: "Euler",
     },
     Look {
-        name: "symplectic Euler",
+        key: "symplectic_euler",
         style: LineStyle::dashed(Ink::Purple, 1.5),
         mark: Some(MarkerShape::Cross),
-        legend: "sympl. Euler ×",
     },
     Look {
-        name: "Heun",
+        key: "heun",
         style: LineStyle::dotted(Ink::Orange, 2.5),
         mark: None,
-        legend: "Heun",
     },
     Look {
-        name: "RK4",
+        key: "rk4",
         style: LineStyle::solid(Ink::Blue, 1.8),
         mark: None,
-        legend: "RK4",
     },
 ];
 
 const EXACT_STYLE: LineStyle = LineStyle::solid(Ink::Black, 3.5);
 pub(super) const DP45_STYLE: LineStyle = LineStyle::dotted(Ink::Green, 2.0);
-pub(super) const DP45_LEGEND: &str = "DP45 ● steps";
+
+/// DP45's legend entry.
+pub(super) fn dp45_legend() -> String {
+    t!("integrators-legend-dp45")
+}
 pub(super) const DP45_MARK: MarkerShape = MarkerShape::Dot;
 
 /// Each method against the exact decaying oscillation.
@@ -76,14 +99,18 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
         .max(1e-12 * p.x0);
     let y_range = (-RESPONSE_RANGE * amp, RESPONSE_RANGE * amp);
     let inside = |y: f64| y.is_finite() && y.abs() <= RESPONSE_RANGE * amp;
-    let mut series = vec![Series::new("exact", exact, EXACT_STYLE)];
+    let mut series = vec![Series::new(
+        t!("integrators-series-exact"),
+        exact,
+        EXACT_STYLE,
+    )];
     let mut markers = Vec::new();
     let mut words = Vec::new();
     for (k, look) in LOOKS.iter().enumerate() {
         let run = &r.runs[k];
         let sol = &run.sol;
         let clipped = sol.y.iter().any(|y| !inside(y[0]));
-        words.push(text::method_words(look.name, r, k, run, clipped));
+        words.push(text::method_words(&look.name(), r, k, run, clipped));
         if !p.show[k] {
             continue;
         }
@@ -99,10 +126,15 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
                     .map(|i| mark(shape, look.style.ink, (sol.t[i], sol.y[i][0]))),
             );
         }
-        let mut label = look.legend.to_string();
-        if r.growth[k] > 1.0 && clipped {
-            label.push_str(&format!(" ×{}/step ↑", si(r.growth[k], "", 3)));
-        }
+        let label = if r.growth[k] > 1.0 && clipped {
+            t!(
+                "integrators-legend-growing",
+                legend = look.legend(),
+                growth = si(r.growth[k], "", 3)
+            )
+        } else {
+            look.legend()
+        };
         series.push(Series::new(label, pts, look.style));
     }
     match &r.dp45 {
@@ -113,7 +145,7 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
                 let pts = sample_times(p.t_end)
                     .filter_map(|t| out.dense.eval(t).map(|y| (t, y[0])))
                     .collect();
-                series.push(Series::new(DP45_LEGEND, pts, DP45_STYLE));
+                series.push(Series::new(dp45_legend(), pts, DP45_STYLE));
                 let every = steps.t.len().div_ceil(MAX_MARKS).max(1);
                 markers.extend(
                     strided(steps.t.len(), every)
@@ -122,15 +154,15 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
                 );
             }
         }
-        Err(e) => words.push(format!("DP45 failed: {e}")),
+        Err(e) => words.push(text::dp45_failed(e)),
     }
     Figure {
         series,
         markers,
         ..Figure::plot(
-            RESPONSE_TITLE,
-            Axis::linear("time t", "s", (0.0, p.t_end)),
-            Axis::linear("displacement x", "m", y_range),
+            t!("integrators-plot-response"),
+            Axis::linear(t!("axis-time"), "s", (0.0, p.t_end)),
+            Axis::linear(t!("axis-displacement"), "m", y_range),
         )
     }
     .with_origin_lines()
@@ -172,8 +204,8 @@ pub(super) fn error(p: &P, r: &Results) -> Figure {
                     .map(|q| mark(shape, look.style.ink, q)),
             );
         }
-        parts.push(text::error_words(look.name, &pts, r.growth[k]));
-        series.push(Series::new(look.legend, pts, look.style));
+        parts.push(text::error_words(&look.name(), &pts, r.growth[k]));
+        series.push(Series::new(look.legend(), pts, look.style));
     }
     if let (true, Ok(out)) = (p.show[4], &r.dp45) {
         let sol = &out.solution;
@@ -198,7 +230,7 @@ pub(super) fn error(p: &P, r: &Results) -> Figure {
                 .map(|q| mark(DP45_MARK, DP45_STYLE.ink, q)),
         );
         parts.push(text::error_words("DP45", &pts, 1.0));
-        series.push(Series::new(DP45_LEGEND, pts, DP45_STYLE));
+        series.push(Series::new(dp45_legend(), pts, DP45_STYLE));
     }
     let floor = 1e-16 * p.x0;
     let (lo, hi) = if lo.is_finite() && hi > 0.0 {
@@ -213,9 +245,9 @@ pub(super) fn error(p: &P, r: &Results) -> Figure {
         series,
         markers,
         ..Figure::plot(
-            ERROR_TITLE,
-            Axis::linear("time t", "s", (0.0, p.t_end)),
-            log_axis("error |x_num − x_exact|", "m", (lo, hi)),
+            t!("integrators-plot-error"),
+            Axis::linear(t!("axis-time"), "s", (0.0, p.t_end)),
+            log_axis(&t!("integrators-axis-error"), "m", (lo, hi)),
         )
     }
     .described(text::describe_error(r, &parts, hi >= clip, clip))

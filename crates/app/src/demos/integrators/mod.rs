@@ -40,6 +40,7 @@ use crate::declare::{Declaration, Param, ReadoutDef};
 use crate::figure::Figure;
 use crate::format::si;
 use crate::spec::{PlotSpec, Preset};
+use crate::t;
 pub use model::Results;
 use zeta_solver::Complex;
 
@@ -79,13 +80,17 @@ pub struct P {
 /// A fixed-step method's readout: a number, or the time at which its run overflowed.
 fn max_err(r: &Results, k: usize) -> Result<Option<f64>, String> {
     match r.runs[k].overflow {
-        Some(t) => Err(format!("overflow at t = {}", si(t, "s", 3))),
+        Some(t) => Err(t!("integrators-overflow-note", time = si(t, "s", 3))),
         None => Ok(r.max_err[k]),
     }
 }
 
 fn stable(r: &Results, k: usize) -> String {
-    if r.stable[k] { "yes" } else { "no" }.to_string()
+    if r.stable[k] {
+        t!("integrators-stable-yes")
+    } else {
+        t!("integrators-stable-no")
+    }
 }
 
 impl Model for Integrators {
@@ -189,7 +194,7 @@ impl Model for Integrators {
                     .dp45
                 {
                     Ok(_) => Ok(r.dp45_err),
-                    Err(_) => Err("failed".into()),
+                    Err(_) => Err(t!("integrators-failed")),
                 }),
                 ReadoutDef::number("order_euler", "fitted order, forward Euler", "", 3, |r| {
                     r.study.order(0)

@@ -3,10 +3,11 @@
 
 use super::figures::LOOKS;
 use super::text::limit_text;
-use super::{h_lambda, Results, P};
+use super::{h_lambda, text, Results, P};
 use crate::figure::{Axis, Figure, LineStyle, Marker, Series};
 use crate::format::si;
 use crate::plot::Ink;
+use crate::t;
 use zeta_solver::Complex;
 
 pub(super) const TITLE: &str = "Stability regions and z = hλ";
@@ -24,7 +25,7 @@ pub(super) fn figure(p: &P, r: &Results, regions: &[Vec<(f64, f64)>]) -> Figure 
             continue;
         }
         series.push(Series::new(
-            LOOKS[k].legend,
+            LOOKS[k].legend(),
             outline.clone(),
             LineStyle {
                 width: 2.0,
@@ -50,14 +51,22 @@ pub(super) fn figure(p: &P, r: &Results, regions: &[Vec<(f64, f64)>]) -> Figure 
             "hλ₂"
         };
         let label = if off {
-            format!("{name} = {} (off scale)", si(q.re, "", 3))
+            t!(
+                "integrators-off-scale",
+                name = name,
+                value = si(q.re, "", 3)
+            )
         } else {
             name.into()
         };
         markers.push(Marker::cross(label, at, Ink::Black));
         // The path z = h'λ for 0 < h' ≤ h, along which z moves as h grows.
         series.push(Series::new(
-            if i == 0 { "hλ as h grows" } else { "" },
+            if i == 0 {
+                t!("integrators-path")
+            } else {
+                String::new()
+            },
             (0..=50)
                 .map(|j| {
                     let s = *q * (j as f64 / 50.0);
@@ -71,9 +80,9 @@ pub(super) fn figure(p: &P, r: &Results, regions: &[Vec<(f64, f64)>]) -> Figure 
         series,
         markers,
         ..Figure::plot(
-            TITLE,
-            Axis::linear("real part Re(hλ)", "", x),
-            Axis::linear("imaginary part Im(hλ)", "", y),
+            t!("integrators-plot-stability"),
+            Axis::linear(t!("integrators-axis-re"), "", x),
+            Axis::linear(t!("integrators-axis-im"), "", y),
         )
     }
     .with_origin_lines()
@@ -118,33 +127,43 @@ fn describe(r: &Results, z: &[Complex], same: bool) -> String {
         )
     } else {
         // Two real poles: no imaginary unit.
-        format!("z = hλ = {} and {}", si(z[0].re, "", 3), si(z[1].re, "", 3))
+        t!(
+            "integrators-z-real-pair",
+            z1 = si(z[0].re, "", 3),
+            z2 = si(z[1].re, "", 3)
+        )
     };
     let words: Vec<String> = WITH_REGION
         .iter()
         .map(|&k| {
-            format!(
-                "{}: {} its region, |R| = {}, {}",
-                LOOKS[k].name,
-                if r.growth[k] <= 1.0 {
-                    "inside"
-                } else {
-                    "outside"
-                },
+            let (method, growth, limit) = (
+                LOOKS[k].name(),
                 si(r.growth[k], "", 4),
-                limit_text(r.limit[k])
-            )
+                limit_text(r.limit[k]),
+            );
+            if r.growth[k] <= 1.0 {
+                t!(
+                    "integrators-region-inside",
+                    method = method,
+                    growth = growth,
+                    limit = limit
+                )
+            } else {
+                t!(
+                    "integrators-region-outside",
+                    method = method,
+                    growth = growth,
+                    limit = limit
+                )
+            }
         })
         .collect();
-    format!(
-        "Stability regions |R(z)| ≤ 1 in the complex plane of z = hλ (inside each closed curve; \
-         forward Euler's is the disk |1 + z| ≤ 1). The system's two poles at h = {} give {}. {}. \
-         Symplectic Euler is not a scalar map R(z): its 2×2 step matrix has spectral radius {} \
-         here, {}. DP45 chooses its own steps and keeps them stable.",
-        si(r.h, "s", 3),
-        zs,
-        words.join("; "),
-        si(r.growth[1], "", 4),
-        limit_text(r.limit[1])
+    t!(
+        "integrators-describe-stability",
+        step = si(r.h, "s", 3),
+        z = zs,
+        methods = text::join(&words),
+        radius = si(r.growth[1], "", 4),
+        limit = limit_text(r.limit[1])
     )
 }

@@ -3,9 +3,11 @@
 
 use super::model::Run;
 use super::{Results, P};
-use crate::format::si;
+use crate::format::{si, significant};
 use crate::spec::Table;
+use crate::t;
 use zeta_solver::integrate::analysis::StepLimit;
+use zeta_solver::integrate::IntegrationError;
 
 pub(super) const SUMMARY: &str =
     "The free oscillator integrated by forward Euler, symplectic Euler, Heun \
@@ -96,10 +98,15 @@ pub(super) fn methods_table() -> Table {
 /// "stable for h ≤ …" in words.
 pub(super) fn limit_text(l: StepLimit) -> String {
     match l {
-        StepLimit::UpTo(h) => format!("stable for h ≤ {}", si(h, "s", 3)),
-        StepLimit::Unconditional => "stable for every h".into(),
-        StepLimit::NoStableStep => "unstable for every h".into(),
+        StepLimit::UpTo(h) => t!("integrators-limit-up-to", step = si(h, "s", 3)),
+        StepLimit::Unconditional => t!("integrators-limit-every"),
+        StepLimit::NoStableStep => t!("integrators-limit-none"),
     }
+}
+
+/// Clauses about each method, joined into one list in the interface language.
+pub(super) fn join(words: &[String]) -> String {
+    words.join(&t!("integrators-join"))
 }
 
 /// `1e-6` style for tolerances.
@@ -107,58 +114,107 @@ pub(super) fn sci(v: f64) -> String {
     format!("{v:.0e}")
 }
 
+/// A maximum error, or "—" where there is none.
+fn error_text(e: Option<f64>) -> String {
+    e.map_or("—".into(), |e| si(e, "m", 3))
+}
+
 /// What fixed-step method `k` does at this `h`.
 pub(super) fn method_words(name: &str, r: &Results, k: usize, run: &Run, clipped: bool) -> String {
     let g = r.growth[k];
-    let state = if let Some(t) = run.overflow {
-        format!(
-            "overflows at t = {} (×{} per step)",
-            si(t, "s", 3),
-            si(g, "", 3)
+    if let Some(t) = run.overflow {
+        t!(
+            "integrators-method-overflows",
+            method = name,
+            time = si(t, "s", 3),
+            growth = si(g, "", 3)
         )
     } else if g > 1.0 && !r.stable[k] {
-        format!(
-            "diverges (×{} per step{}), max error {}",
-            si(g, "", 4),
-            if clipped { ", clipped" } else { "" },
-            r.max_err[k].map_or("—".into(), |e| si(e, "m", 3))
-        )
+        let error = error_text(r.max_err[k]);
+        let growth = si(g, "", 4);
+        if clipped {
+            t!(
+                "integrators-method-diverges-clipped",
+                method = name,
+                growth = growth,
+                error = error
+            )
+        } else {
+            t!(
+                "integrators-method-diverges",
+                method = name,
+                growth = growth,
+                error = error
+            )
+        }
     } else {
-        format!(
-            "stays bounded (×{} per step), max error {}",
-            si(g, "", 4),
-            r.max_err[k].map_or("—".into(), |e| si(e, "m", 3))
+        t!(
+            "integrators-method-bounded",
+            method = name,
+            growth = si(g, "", 4),
+            error = error_text(r.max_err[k])
         )
-    };
-    format!("{name} {state}")
+    }
 }
 
 /// What DP45 did.
 pub(super) fn dp45_words(p: &P, r: &Results, steps: usize) -> String {
-    format!(
-        "DP45 took {} steps (tolerance {}), max error {}",
-        steps,
-        sci(p.tol),
-        r.dp45_err.map_or("—".into(), |e| si(e, "m", 3))
+    t!(
+        "integrators-dp45-words",
+        steps = steps,
+        tolerance = sci(p.tol),
+        error = error_text(r.dp45_err)
     )
+}
+
+/// Why DP45 could not finish, in words.
+pub(super) fn dp45_failed(e: &IntegrationError) -> String {
+    let reason = match *e {
+        IntegrationError::StepSizeUnderflow { t } => {
+            t!("integrators-failed-underflow", time = si(t, "s", 3))
+        }
+        IntegrationError::MaxSteps { t, n } => {
+            t!(
+                "integrators-failed-max-steps",
+                time = si(t, "s", 3),
+                steps = n
+            )
+        }
+        IntegrationError::NonFinite { t } => {
+            t!("integrators-failed-non-finite", time = si(t, "s", 3))
+        }
+        // Invalid settings: the sliders' ranges keep these out of reach.
+        ref other => other.to_string(),
+    };
+    t!("integrators-dp45-failed", reason = reason)
 }
 
 /// The response plot's text alternative.
 pub(super) fn describe_response(p: &P, r: &Results, words: &[String]) -> String {
-    let last = if r.h_last < r.h {
-        format!(", the last {} to end at T", si(r.h_last, "s", 3))
+    let duration = si(p.t_end, "s", 3);
+    let step = si(r.h, "s", 3);
+    let methods = join(words);
+    let range = significant(super::figures::RESPONSE_RANGE, 1);
+    if r.h_last < r.h {
+        t!(
+            "integrators-describe-response-last",
+            duration = duration,
+            step = step,
+            steps = r.n,
+            last = si(r.h_last, "s", 3),
+            methods = methods,
+            range = range
+        )
     } else {
-        String::new()
-    };
-    format!(
-        "Each method against the exact decaying oscillation over {} with h = {} ({} steps{last}). \
-         {}. The plot shows ±{} of the exact amplitude; curves beyond it are clipped at the edge.",
-        si(p.t_end, "s", 3),
-        si(r.h, "s", 3),
-        r.n,
-        words.join("; "),
-        super::figures::RESPONSE_RANGE
-    )
+        t!(
+            "integrators-describe-response",
+            duration = duration,
+            step = step,
+            steps = r.n,
+            methods = methods,
+            range = range
+        )
+    }
 }
 
 /// Where one method's error peaks.
@@ -171,31 +227,38 @@ pub(super) fn error_words(name: &str, pts: &[(f64, f64)], growth: f64) -> String
                 _ => Some(q),
             });
     match peak {
-        Some((t, e)) => format!(
-            "{name} largest {} at t = {}{}",
-            si(e, "m", 3),
-            si(t, "s", 3),
-            if growth > 1.0 { ", growing" } else { "" }
+        Some((t, e)) if growth > 1.0 => t!(
+            "integrators-error-peak-growing",
+            method = name,
+            error = si(e, "m", 3),
+            time = si(t, "s", 3)
         ),
-        None => format!("{name} has no finite error"),
+        Some((t, e)) => t!(
+            "integrators-error-peak",
+            method = name,
+            error = si(e, "m", 3),
+            time = si(t, "s", 3)
+        ),
+        None => t!("integrators-error-none", method = name),
     }
 }
 
 /// The error plot's text alternative.
 pub(super) fn describe_error(r: &Results, parts: &[String], clipped: bool, clip: f64) -> String {
     if parts.is_empty() {
-        "No method is switched on.".to_string()
+        t!("integrators-error-no-method")
+    } else if clipped {
+        t!(
+            "integrators-describe-error-clipped",
+            step = si(r.h, "s", 3),
+            methods = join(parts),
+            clip = si(clip, "m", 2)
+        )
     } else {
-        format!(
-            "Error |x_num − x_exact| on a logarithmic scale at each method's grid points \
-             (h = {}): {}.{}",
-            si(r.h, "s", 3),
-            parts.join("; "),
-            if clipped {
-                format!(" Errors above {} are clipped at the top.", si(clip, "m", 2))
-            } else {
-                String::new()
-            }
+        t!(
+            "integrators-describe-error",
+            step = si(r.h, "s", 3),
+            methods = join(parts)
         )
     }
 }

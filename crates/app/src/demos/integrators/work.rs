@@ -5,9 +5,10 @@ use super::axes::log_axis;
 use super::figures::{mark, DP45_MARK, DP45_STYLE, ERROR_CLIP, LOOKS};
 use super::model::{DP45_TOLS, FIT_FLOOR};
 use super::text::sci;
-use super::{Results, P};
+use super::{text, Results, P};
 use crate::figure::{finite_extent, Figure, LineStyle, Marker, Series};
 use crate::format::si;
+use crate::t;
 use zeta_solver::integrate::work_precision::{WorkPrecision, MAX_STABILITY_STEPS, STABILITY_SHARE};
 
 pub(super) const TITLE: &str = "Work–precision: max error against f-evaluations";
@@ -29,13 +30,13 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
             .filter(|q| q.1 > 0.0 && q.1 <= clip)
             .collect();
         if let (Some(first), Some(last)) = (pts.first(), pts.last()) {
-            words.push(format!(
-                "{} from {} with {} evaluations to {} with {}",
-                look.name,
-                si(first.1, "m", 3),
-                first.0,
-                si(last.1, "m", 3),
-                last.0
+            words.push(t!(
+                "integrators-work-words",
+                method = look.name(),
+                error_first = si(first.1, "m", 3),
+                work_first = first.0 as i64,
+                error_last = si(last.1, "m", 3),
+                work_last = last.0 as i64
             ));
         }
         if !p.show[k] {
@@ -45,7 +46,7 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
             markers.extend(pts.iter().map(|&q| mark(shape, look.style.ink, q)));
         }
         drawn.extend(&pts);
-        series.push(Series::new(look.legend, pts, look.style));
+        series.push(Series::new(look.legend(), pts, look.style));
     }
     let dp = &r.study.dp45;
     words.push(dp45_words(dp));
@@ -72,8 +73,8 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
             ));
         }
         let label = match dp.order() {
-            Some(o) => format!("DP45: {}", si(o, "", 3)),
-            None => "DP45: no order".to_string(),
+            Some(o) => t!("integrators-legend-dp45-order", order = si(o, "", 3)),
+            None => t!("integrators-legend-dp45-no-order"),
         };
         drawn.extend(&pts);
         series.push(Series::new(label, pts, DP45_STYLE));
@@ -85,43 +86,45 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
         series,
         markers,
         ..Figure::plot(
-            TITLE,
-            log_axis("right-hand-side evaluations N", "", (xlo / 1.5, xhi * 1.5)),
-            log_axis("max error", "m", (ylo.max(floor) / 4.0, yhi * 10.0)),
+            t!("integrators-plot-work"),
+            log_axis(
+                &t!("integrators-axis-evaluations"),
+                "",
+                (xlo / 1.5, xhi * 1.5),
+            ),
+            log_axis(
+                &t!("integrators-axis-max-error"),
+                "m",
+                (ylo.max(floor) / 4.0, yhi * 10.0),
+            ),
         )
     }
-    .described(format!(
-        "Largest error against the work it cost, counted in evaluations of the right-hand side \
-         f, on log–log axes, for every method: fixed-step ones at the convergence study's step \
-         sizes (error at its common check points), DP45 at tolerances {} … {} (error over its \
-         accepted steps). Lower is more accurate, further left is cheaper; a method of order p \
-         falls with slope −p; DP45's runs are dots where the tolerance sets their steps and \
-         crosses where stability does. {}.",
-        sci(DP45_TOLS[0]),
-        sci(DP45_TOLS[DP45_TOLS.len() - 1]),
-        words.join("; ")
+    .described(t!(
+        "integrators-describe-work",
+        from = sci(DP45_TOLS[0]),
+        to = sci(DP45_TOLS[DP45_TOLS.len() - 1]),
+        methods = text::join(&words)
     ))
 }
 
 /// What DP45's sweep shows, and why it has an order or not.
 fn dp45_words(dp: &WorkPrecision) -> String {
     let runs = dp.points.iter().filter(|q| q.work > 0).count();
-    let tail = format!(
-        "runs whose steps stability sets (more than {} % of the steps at {} % or more of its \
-         largest stable step): {}/{runs}",
-        MAX_STABILITY_STEPS * 100.0,
-        STABILITY_SHARE * 100.0,
-        dp.stability_set()
+    let tail = t!(
+        "integrators-dp45-stability-runs",
+        share = si(MAX_STABILITY_STEPS * 100.0, "%", 1),
+        fraction = si(STABILITY_SHARE * 100.0, "%", 2),
+        count = dp.stability_set(),
+        runs = runs
     );
     match (dp.order(), dp.fitted_span()) {
-        (Some(o), Some((lo, hi))) => format!(
-            "DP45 observed order {} (fitted over {lo} … {hi} evaluations, where the tolerance \
-             sets its steps); {tail}",
-            si(o, "", 3),
+        (Some(o), Some((lo, hi))) => t!(
+            "integrators-dp45-order",
+            order = si(o, "", 3),
+            from = lo as i64,
+            to = hi as i64,
+            runs = tail
         ),
-        _ => format!(
-            "DP45 has no observed order: stability sets its steps, or too few runs remain in \
-             the asymptotic range; {tail}"
-        ),
+        _ => t!("integrators-dp45-no-order", runs = tail),
     }
 }

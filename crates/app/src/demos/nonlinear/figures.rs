@@ -6,6 +6,7 @@ use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
 use crate::format::si;
 use crate::plot::Ink;
 use crate::schematic::{mass_spring_damper, MassLabels};
+use crate::t;
 use zeta_solver::nonlinear::NonlinearConfig;
 
 /// Every `STRIDE`-th state is plotted (≤ ~1000 points per curve).
@@ -65,26 +66,38 @@ pub(super) fn response(r: &Results) -> Figure {
     let mut y = padded((lo, hi.max(lo + 1e-6)), 0.1);
     y.1 += 0.25 * (y.1 - y.0); // room for the legend
     let mut fig = Figure::plot(
-        RESPONSE_TITLE,
-        Axis::linear("time t", "s", (0.0, r.t_end)),
-        Axis::linear("extension x", "m", y),
+        t!("nonlinear-plot-response"),
+        Axis::linear(t!("axis-time"), "s", (0.0, r.t_end)),
+        Axis::linear(t!("axis-extension"), "m", y),
     );
     if cfg.stop_stiffness > 0.0 {
         let stop = LineStyle::dotted(Ink::Purple, 1.5);
         let gap = cfg.stop_gap;
         fig = fig
             .with_line(
-                format!("bump stops ±{}", si(gap, "m", 3)),
+                t!("nonlinear-series-stops", gap = si(gap, "m", 3)),
                 vec![(0.0, gap), (r.t_end, gap)],
                 stop,
             )
             .with_line("", vec![(0.0, -gap), (r.t_end, -gap)], stop);
     }
     fig = fig
-        .with_line("linear model", lin, LineStyle::dashed(Ink::Vermillion, 2.0))
-        .with_line("nonlinear (RK4)", nl, LineStyle::solid(Ink::Blue, 2.5));
+        .with_line(
+            t!("nonlinear-series-linear"),
+            lin,
+            LineStyle::dashed(Ink::Vermillion, 2.0),
+        )
+        .with_line(
+            t!("nonlinear-series-nonlinear"),
+            nl,
+            LineStyle::solid(Ink::Blue, 2.5),
+        );
     if let Some(st) = r.cmp.sticking {
-        fig = fig.with_marker(Marker::dot("sticks", (st.t, st.x), Ink::Green));
+        fig = fig.with_marker(Marker::dot(
+            t!("nonlinear-marker-sticks"),
+            (st.t, st.x),
+            Ink::Green,
+        ));
     }
     fig.with_origin_lines()
         .described(text::describe_response(r))
@@ -100,14 +113,22 @@ pub(super) fn phase(r: &Results) -> Figure {
     let description = text::describe_phase(&nl, &lin);
     let start = nl.first().copied();
     let mut fig = Figure::plot(
-        PHASE_TITLE,
-        Axis::linear("extension x", "m", x),
-        Axis::linear("velocity v", "m/s", with_legend_room(vs)),
+        t!("nonlinear-plot-phase"),
+        Axis::linear(t!("axis-extension"), "m", x),
+        Axis::linear(t!("axis-velocity"), "m/s", with_legend_room(vs)),
     )
-    .with_line("linear model", lin, LineStyle::dashed(Ink::Vermillion, 2.0))
-    .with_line("nonlinear (RK4)", nl, LineStyle::solid(Ink::Blue, 2.0));
+    .with_line(
+        t!("nonlinear-series-linear"),
+        lin,
+        LineStyle::dashed(Ink::Vermillion, 2.0),
+    )
+    .with_line(
+        t!("nonlinear-series-nonlinear"),
+        nl,
+        LineStyle::solid(Ink::Blue, 2.0),
+    );
     if let Some(p) = start {
-        fig = fig.with_marker(Marker::dot("start", p, Ink::Black));
+        fig = fig.with_marker(Marker::dot(t!("nonlinear-marker-start"), p, Ink::Black));
     }
     fig.with_origin_lines().described(description)
 }
@@ -126,12 +147,20 @@ pub(super) fn spring(r: &Results) -> Figure {
     let lin = symmetric(reach, |x| cfg.k * x);
     let extent = finite_extent(nl.iter().chain(&lin).map(|p| p.1)).unwrap_or((-1.0, 1.0));
     Figure::plot(
-        SPRING_TITLE,
-        Axis::linear("extension x", "m", (-reach, reach)),
-        Axis::linear("force F", "N", with_legend_room(extent)),
+        t!("nonlinear-plot-spring"),
+        Axis::linear(t!("axis-extension"), "m", (-reach, reach)),
+        Axis::linear(t!("axis-force"), "N", with_legend_room(extent)),
     )
-    .with_line("linear k·x", lin, LineStyle::dashed(Ink::Vermillion, 2.0))
-    .with_line("k·x + k₃·x³ + stops", nl, LineStyle::solid(Ink::Blue, 2.5))
+    .with_line(
+        t!("nonlinear-series-linear-spring"),
+        lin,
+        LineStyle::dashed(Ink::Vermillion, 2.0),
+    )
+    .with_line(
+        t!("nonlinear-series-spring"),
+        nl,
+        LineStyle::solid(Ink::Blue, 2.5),
+    )
     .with_origin_lines()
     .described(text::describe_spring(model, reach, max_travel))
 }
@@ -151,12 +180,20 @@ pub(super) fn damper(r: &Results) -> Figure {
     let extent =
         finite_extent(nl.iter().chain(&lin).map(|p| p.1).chain([0.0])).unwrap_or((-1.0, 1.0));
     Figure::plot(
-        DAMPER_TITLE,
-        Axis::linear("velocity v (+ rebound)", "m/s", (-vmax, vmax)),
-        Axis::linear("force F", "N", with_legend_room(extent)),
+        t!("nonlinear-plot-damper"),
+        Axis::linear(t!("nonlinear-axis-velocity-rebound"), "m/s", (-vmax, vmax)),
+        Axis::linear(t!("axis-force"), "N", with_legend_room(extent)),
     )
-    .with_line("linear c̄·v", lin, LineStyle::dashed(Ink::Vermillion, 2.0))
-    .with_line("damper + friction", nl, LineStyle::solid(Ink::Blue, 2.5))
+    .with_line(
+        t!("nonlinear-series-linear-damper"),
+        lin,
+        LineStyle::dashed(Ink::Vermillion, 2.0),
+    )
+    .with_line(
+        t!("nonlinear-series-damper"),
+        nl,
+        LineStyle::solid(Ink::Blue, 2.5),
+    )
     .with_origin_lines()
     .described(text::describe_damper(model, vmax, c_mean))
 }
@@ -169,20 +206,21 @@ pub(super) fn schematic(cfg: &NonlinearConfig, x: f64, reach: f64, t: f64) -> Fi
         damper: "c_c/c_r",
         base: "",
     };
-    let stops = if cfg.stop_stiffness > 0.0 {
-        if x.abs() > cfg.stop_gap {
-            ", pressing on a bump stop"
-        } else {
-            ", clear of the bump stops"
-        }
+    let (time, extension) = (si(t, "s", 3), si(x, "m", 3));
+    let description = if cfg.stop_stiffness <= 0.0 {
+        t!("nonlinear-schematic", time = time, extension = extension)
+    } else if x.abs() > cfg.stop_gap {
+        t!(
+            "nonlinear-schematic-pressing",
+            time = time,
+            extension = extension
+        )
     } else {
-        ""
+        t!(
+            "nonlinear-schematic-clear",
+            time = time,
+            extension = extension
+        )
     };
-    let description = format!(
-        "Quarter car at t = {}: suspension extended {}{}.",
-        si(t, "s", 3),
-        si(x, "m", 3),
-        stops
-    );
     mass_spring_damper(x / reach, 0.0, &labels, description)
 }

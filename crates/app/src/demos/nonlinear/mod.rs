@@ -117,7 +117,9 @@ impl Model for Nonlinear {
             equation_mathml: text::EQUATION,
             params: params(),
             readouts: vec![
-                ReadoutDef::text("effect", "dominant nonlinearity", |r| r.effect.to_string()),
+                ReadoutDef::text("effect", "dominant nonlinearity", |r| {
+                    text::effect_name(r.effect)
+                }),
                 ReadoutDef::number(
                     "period_ratio",
                     "first-swing period ratio T_nonlinear / T_linear",

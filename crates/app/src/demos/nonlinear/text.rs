@@ -4,6 +4,7 @@
 use super::{Results, ESCAPE};
 use crate::format::si;
 use crate::spec::{Preset, Table};
+use crate::t;
 use zeta_solver::nonlinear::NonlinearModel;
 
 pub(super) const SUMMARY: &str =
@@ -176,40 +177,55 @@ pub(super) fn table() -> Table {
     }
 }
 
+/// The dominant effect (a table row key) in the interface language.
+pub(super) fn effect_name(effect: &str) -> String {
+    match effect {
+        "hardening spring" => t!("nonlinear-effect-hardening"),
+        "softening spring" => t!("nonlinear-effect-softening"),
+        "stick-slip" => t!("nonlinear-effect-stick-slip"),
+        "bump-stop impact" => t!("nonlinear-effect-bump-stop"),
+        "asymmetric damper" => t!("nonlinear-effect-asymmetric"),
+        "several at once" => t!("nonlinear-effect-several"),
+        "escaped" => t!("nonlinear-effect-escaped"),
+        _ => t!("nonlinear-effect-linear"),
+    }
+}
+
 /// The two responses in words.
 pub(super) fn describe_response(r: &Results) -> String {
     let cmp = &r.cmp;
     let worst = cmp.largest_deviation();
-    let periods = match (cmp.first_swing_nonlinear(), cmp.first_swing_linear()) {
-        (Some(a), Some(b)) => format!(
-            "; first swing {} against the linear {} (ratio {})",
-            si(a, "s", 3),
-            si(b, "s", 3),
-            si(a / b, "", 3)
-        ),
-        _ => String::new(),
-    };
-    let stick = cmp.sticking.map_or(String::new(), |st| {
-        format!(
-            "; friction holds the mass at {} from {}",
-            si(st.x, "m", 3),
-            si(st.t, "s", 3)
-        )
-    });
-    let escape = if cmp.escaped {
-        format!(
-            "; the nonlinear run leaves the plot (|x| > {}) at {}",
-            si(ESCAPE, "m", 2),
-            si(cmp.t.last().copied().unwrap_or(0.0), "s", 3)
-        )
-    } else {
-        String::new()
-    };
-    format!(
-        "{}: both start together; they differ by up to {} at t = {}{periods}{stick}{escape}.",
-        r.effect,
-        si(worst.0, "m", 3),
-        si(worst.1, "s", 3),
+    let mut clauses = vec![t!(
+        "nonlinear-differ",
+        deviation = si(worst.0, "m", 3),
+        time = si(worst.1, "s", 3)
+    )];
+    if let (Some(a), Some(b)) = (cmp.first_swing_nonlinear(), cmp.first_swing_linear()) {
+        clauses.push(t!(
+            "nonlinear-first-swing",
+            nonlinear = si(a, "s", 3),
+            linear = si(b, "s", 3),
+            ratio = si(a / b, "", 3)
+        ));
+    }
+    if let Some(st) = cmp.sticking {
+        clauses.push(t!(
+            "nonlinear-sticks-at",
+            position = si(st.x, "m", 3),
+            time = si(st.t, "s", 3)
+        ));
+    }
+    if cmp.escaped {
+        clauses.push(t!(
+            "nonlinear-escapes",
+            limit = si(ESCAPE, "m", 2),
+            time = si(cmp.t.last().copied().unwrap_or(0.0), "s", 3)
+        ));
+    }
+    t!(
+        "nonlinear-describe-response",
+        effect = effect_name(r.effect),
+        clauses = clauses.join(&t!("nonlinear-join"))
     )
 }
 
@@ -217,18 +233,16 @@ pub(super) fn describe_response(r: &Results) -> String {
 pub(super) fn describe_phase(nl: &[(f64, f64)], lin: &[(f64, f64)]) -> String {
     let end = |pts: &[(f64, f64)]| pts.last().copied().unwrap_or((0.0, 0.0));
     let (ne, le) = (end(nl), end(lin));
-    format!(
-        "Phase plane: both trajectories start at x = {}, v = {}. The linear one spirals in \
-         towards ({}, {}); the nonlinear one ends at x = {}, v = {}, its largest speed {} \
-         against the linear {}.",
-        si(nl.first().map_or(0.0, |p| p.0), "m", 3),
-        si(nl.first().map_or(0.0, |p| p.1), "m/s", 3),
-        si(le.0, "m", 2),
-        si(le.1, "m/s", 2),
-        si(ne.0, "m", 3),
-        si(ne.1, "m/s", 3),
-        si(nl.iter().map(|p| p.1.abs()).fold(0.0, f64::max), "m/s", 3),
-        si(lin.iter().map(|p| p.1.abs()).fold(0.0, f64::max), "m/s", 3),
+    t!(
+        "nonlinear-describe-phase",
+        x0 = si(nl.first().map_or(0.0, |p| p.0), "m", 3),
+        v0 = si(nl.first().map_or(0.0, |p| p.1), "m/s", 3),
+        x_linear = si(le.0, "m", 2),
+        v_linear = si(le.1, "m/s", 2),
+        x_end = si(ne.0, "m", 3),
+        v_end = si(ne.1, "m/s", 3),
+        speed = si(nl.iter().map(|p| p.1.abs()).fold(0.0, f64::max), "m/s", 3),
+        speed_linear = si(lin.iter().map(|p| p.1.abs()).fold(0.0, f64::max), "m/s", 3)
     )
 }
 
@@ -236,46 +250,53 @@ pub(super) fn describe_phase(nl: &[(f64, f64)], lin: &[(f64, f64)]) -> String {
 pub(super) fn describe_spring(model: &NonlinearModel, reach: f64, max_travel: f64) -> String {
     let cfg = model.config();
     let at = max_travel.max(1e-6);
-    format!(
-        "Restoring force against extension over ±{}: the linear spring is the straight line \
-         k·x; at the largest travel {} the nonlinear force is {} against the linear {}{}.",
-        si(reach, "m", 3),
-        si(at, "m", 3),
-        si(model.elastic_force(at), "N", 3),
-        si(cfg.k * at, "N", 3),
-        if cfg.stop_stiffness > 0.0 {
-            format!(
-                ", the bump stops adding {} beyond ±{}",
-                si(cfg.stop_stiffness, "N/m", 3),
-                si(cfg.stop_gap, "m", 3)
-            )
-        } else {
-            String::new()
-        }
-    )
+    let (reach, travel) = (si(reach, "m", 3), si(at, "m", 3));
+    let (force, linear) = (si(model.elastic_force(at), "N", 3), si(cfg.k * at, "N", 3));
+    if cfg.stop_stiffness > 0.0 {
+        t!(
+            "nonlinear-describe-spring-stops",
+            reach = reach,
+            travel = travel,
+            force = force,
+            linear = linear,
+            rate = si(cfg.stop_stiffness, "N/m", 3),
+            gap = si(cfg.stop_gap, "m", 3)
+        )
+    } else {
+        t!(
+            "nonlinear-describe-spring",
+            reach = reach,
+            travel = travel,
+            force = force,
+            linear = linear
+        )
+    }
 }
 
 /// The damper curve in words, over ±`vmax` (m/s); `c_mean` the linear model's rate.
 pub(super) fn describe_damper(model: &NonlinearModel, vmax: f64, c_mean: f64) -> String {
     let cfg = model.config();
-    format!(
-        "Damper plus friction force against velocity over ±{}: at +{} (rebound) it is {}, at \
-         −{} (compression) {}; the linear model's mean damper gives ±{}{}.",
-        si(vmax, "m/s", 3),
-        si(vmax, "m/s", 3),
-        si(model.dissipative_force(vmax), "N", 3),
-        si(vmax, "m/s", 3),
-        si(model.dissipative_force(-vmax), "N", 3),
-        si(c_mean * vmax, "N", 3),
-        if cfg.friction > 0.0 {
-            format!(
-                "; sliding friction adds a jump of ±{} at v = 0, and at rest static friction \
-                 holds up to ±{}",
-                si(cfg.friction, "N", 3),
-                si(model.static_limit(), "N", 3)
-            )
-        } else {
-            String::new()
-        }
-    )
+    let speed = si(vmax, "m/s", 3);
+    let rebound = si(model.dissipative_force(vmax), "N", 3);
+    let compression = si(model.dissipative_force(-vmax), "N", 3);
+    let linear = si(c_mean * vmax, "N", 3);
+    if cfg.friction > 0.0 {
+        t!(
+            "nonlinear-describe-damper-friction",
+            speed = speed,
+            rebound = rebound,
+            compression = compression,
+            linear = linear,
+            friction = si(cfg.friction, "N", 3),
+            holding = si(model.static_limit(), "N", 3)
+        )
+    } else {
+        t!(
+            "nonlinear-describe-damper",
+            speed = speed,
+            rebound = rebound,
+            compression = compression,
+            linear = linear
+        )
+    }
 }

@@ -2,6 +2,7 @@
 //! distribution of the parts and the quantity of the second histogram.
 
 use crate::declare::Choice;
+use crate::t;
 use zeta_solver::design::monte_carlo::{Distribution, McSamples};
 
 /// Which parameter group is analysed.
@@ -75,14 +76,14 @@ impl Choice for HistOf {
 }
 
 impl HistOf {
-    /// Axis label and unit.
-    pub(super) fn label(self) -> (&'static str, &'static str) {
+    /// Axis label (in the interface language) and unit.
+    pub(super) fn label(self) -> (String, &'static str) {
         match self {
-            HistOf::Zeta => ("damping ratio ζ", ""),
-            HistOf::F0 => ("natural frequency f0", "Hz"),
-            HistOf::Q => ("quality factor Q", ""),
-            HistOf::Bandwidth => ("half-power bandwidth", "rad/s"),
-            HistOf::SettlingTime => ("free-response settling time (±5 %)", "s"),
+            HistOf::Zeta => (t!("uncertainty-quantity-zeta"), ""),
+            HistOf::F0 => (t!("uncertainty-quantity-f0"), "Hz"),
+            HistOf::Q => (t!("uncertainty-quantity-q"), ""),
+            HistOf::Bandwidth => (t!("uncertainty-quantity-bandwidth"), "rad/s"),
+            HistOf::SettlingTime => (t!("uncertainty-quantity-settling-time"), "s"),
         }
     }
 

@@ -4,6 +4,7 @@
 use super::{text, HistOf, Results, System, P};
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
 use crate::plot::{curve, Ink};
+use crate::t;
 use zeta_solver::design::monte_carlo::{histogram_into, McSamples};
 use zeta_solver::grid::linspace;
 use zeta_solver::metrics::SettlingBand;
@@ -23,8 +24,8 @@ pub(super) fn band(p: &P, r: &Results) -> Figure {
     let ranges = &r.ranges;
     let x0 = ranges.x0;
     let (y_name, y_unit) = match p.system {
-        System::Suspension => ("displacement x", "m"),
-        System::Rlc => ("capacitor voltage v_C", "V"),
+        System::Suspension => (t!("axis-displacement"), "m"),
+        System::Rlc => (t!("uncertainty-axis-capacitor-voltage"), "V"),
     };
     let longest = ranges
         .band
@@ -48,17 +49,21 @@ pub(super) fn band(p: &P, r: &Results) -> Figure {
     let h = SettlingBand::FREE_DEFAULT.fraction() * x0;
     let guide = LineStyle::dotted(Ink::Black, 1.2);
     let mut fig = Figure::plot(
-        BAND_TITLE,
-        Axis::linear("time t", "s", (0.0, t_end)),
-        Axis::linear(y_name, y_unit, (0.0, 1.0)),
+        t!("uncertainty-plot-band"),
+        Axis::linear(t!("axis-time"), "s", (0.0, t_end)),
+        Axis::linear(y_name.clone(), y_unit, (0.0, 1.0)),
     )
-    .with_line("5 % settling band", vec![(0.0, h), (t_end, h)], guide)
+    .with_line(
+        t!("uncertainty-settling-band"),
+        vec![(0.0, h), (t_end, h)],
+        guide,
+    )
     .with_line("", vec![(0.0, -h), (t_end, -h)], guide);
     for (member, style) in ranges.band.iter().zip(styles) {
         let Some(sys) = member.sys else { continue };
         let resp = FreeResponse::new(sys, x0, 0.0);
         fig = fig.with_line(
-            member.label.clone(),
+            text::band_label(member),
             curve((0.0, t_end), SAMPLES, |t| resp.displacement(t)),
             style,
         );
@@ -84,7 +89,7 @@ pub(super) fn histogram(
     h: HistOf,
     pct: [f64; 2],
     yield_pct: f64,
-    title: &str,
+    title: String,
 ) -> Figure {
     let (name, unit) = h.label();
     let mut counts = Vec::with_capacity(BINS);
@@ -120,26 +125,38 @@ pub(super) fn histogram(
         None => (0.0, 1.0),
     };
     let mut fig = Figure::plot(
-        title.to_string(),
+        title,
         Axis::linear(name, unit, xr),
-        Axis::linear("draws", "", (0.0, ymax)),
+        Axis::linear(t!("uncertainty-axis-draws"), "", (0.0, ymax)),
     );
     if range.is_some() {
         fig = fig.with_line(
-            format!("draws per bin ({BINS} bins)"),
+            t!("uncertainty-series-bins", bins = BINS),
             bars,
             LineStyle::solid(Ink::Blue, 2.0),
         );
     } else {
-        fig = fig.with_marker(Marker::text("no finite values", (0.5, 0.5), Ink::Black));
+        fig = fig.with_marker(Marker::text(
+            t!("uncertainty-no-finite-values"),
+            (0.5, 0.5),
+            Ink::Black,
+        ));
     }
     for (j, &x) in spec_lines.iter().enumerate() {
-        let label = if j == 0 { "spec limit" } else { "" };
+        let label = if j == 0 {
+            t!("uncertainty-spec-limit")
+        } else {
+            String::new()
+        };
         fig = fig.with_line(label, vline(x), LineStyle::dashed(Ink::Vermillion, 2.0));
     }
     for (j, &x) in pct.iter().enumerate() {
         if x.is_finite() {
-            let label = if j == 0 { "5th / 95th percentile" } else { "" };
+            let label = if j == 0 {
+                t!("uncertainty-percentiles")
+            } else {
+                String::new()
+            };
             fig = fig.with_line(label, vline(x), LineStyle::dotted(Ink::Green, 2.0));
         }
     }

@@ -20,7 +20,9 @@ use super::design::Stopwatch;
 use super::Model;
 use crate::declare::{Declaration, Param, ReadoutDef};
 use crate::figure::Figure;
+use crate::i18n::number;
 use crate::spec::PlotSpec;
+use crate::t;
 use cache::McKey;
 use ranges::Ranges;
 use zeta_solver::design::monte_carlo::{yield_percent, McSamples, Spec};
@@ -286,8 +288,15 @@ impl Model for Uncertainty {
                 ReadoutDef::number("Q_p95", "Q, 95th percentile", "", 4, |r| Some(r.q_pct[1])),
                 ReadoutDef::formatted("draws", "draws", "", |r| {
                     Some(match r.provisional_of {
-                        None => (r.draws as f64, format!("{}", r.draws)),
-                        Some(full) => (r.draws as f64, format!("{} ({full} on the way)", r.draws)),
+                        None => (r.draws as f64, number::fixed(r.draws as f64, 0)),
+                        Some(full) => (
+                            r.draws as f64,
+                            t!(
+                                "uncertainty-draws-provisional",
+                                draws = r.draws,
+                                full = full
+                            ),
+                        ),
                     })
                 }),
                 // Plain: the value is already in ms (an SI prefix would give "µms").
@@ -363,7 +372,7 @@ impl Model for Uncertainty {
                 HistOf::Zeta,
                 r.zeta_pct,
                 r.yield_pct,
-                figures::ZETA_HIST_TITLE,
+                t!("uncertainty-plot-zeta-hist"),
             ),
             figures::histogram(
                 p,
@@ -371,7 +380,7 @@ impl Model for Uncertainty {
                 p.hist,
                 r.hist_pct,
                 r.yield_pct,
-                &format!("Monte Carlo: {}", p.hist.label().0),
+                t!("uncertainty-hist-title", quantity = p.hist.label().0),
             ),
         ];
         if let Some(full) = r.provisional_of {

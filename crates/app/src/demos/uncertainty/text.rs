@@ -1,10 +1,12 @@
 //! The tolerance demo's prose: summary, equation, labels and the figures' text
 //! alternatives.
 
-use super::ranges::Ranges;
+use super::ranges::{BandName, Member, Ranges};
 use super::{HistOf, System, P};
-use crate::format::{si, significant};
+use crate::format::{si, significant, significant_plain};
+use crate::i18n::number;
 use crate::spec::Preset;
+use crate::t;
 
 pub(super) const SUMMARY: &str =
     "Real parts are not their nominal values. Choose the system: the quarter \
@@ -24,14 +26,20 @@ pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mi>ζ</mi><mo>=</mo><mfrac><mi>R</mi><mn>2</mn></mfrac><msqrt><mfrac><mi>C</mi><mi>L</mi></mfrac></msqrt>\
 </mrow></math>";
 
-/// `v` to `sig` significant digits without trailing zeros ("10", "0.6").
+/// `v` to `sig` significant digits without trailing zeros ("10", "0.6"), in the
+/// interface language's digits.
 pub(super) fn short(v: f64, sig: usize) -> String {
-    let t = significant(v, sig);
-    if t.contains('.') && !t.contains('e') {
-        t.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        t
+    let plain = significant_plain(v, sig);
+    if plain.contains('e') {
+        return significant(v, sig);
     }
+    let trimmed = if plain.contains('.') {
+        plain.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        plain.as_str()
+    };
+    let decimals = trimmed.split_once('.').map_or(0, |(_, f)| f.len());
+    number::fixed(trimmed.parse().unwrap_or(v), decimals)
 }
 
 /// A count with thin-space thousands separators ("100 000").
@@ -48,44 +56,57 @@ fn count_text(n: usize) -> String {
 }
 
 /// A band member's legend label: its name and, where defined, its ζ.
-pub(super) fn band_label(name: &str, zeta: Option<f64>) -> String {
-    match zeta {
+pub(super) fn band_label(member: &Member) -> String {
+    let name = match member.name {
+        BandName::MassUp(pct) => format!("m + {} %", short(pct, 3)),
+        BandName::NominalMass => t!("uncertainty-band-nominal-mass"),
+        BandName::MassDown(pct) => format!("m − {} %", short(pct, 3)),
+        BandName::LowestCorner => t!("uncertainty-band-lowest-corner"),
+        BandName::Nominal => t!("uncertainty-band-nominal"),
+        BandName::HighestCorner => t!("uncertainty-band-highest-corner"),
+    };
+    match member.zeta {
         Some(z) => format!("{name} (ζ = {})", significant(z, 3)),
-        None => name.to_string(),
+        None => name,
     }
 }
 
 /// The band of free responses in words.
 pub(super) fn describe_band(p: &P, r: &Ranges) -> String {
-    let fmt_t = |t: Option<f64>| t.map_or("never".to_string(), |t| si(t, "s", 3));
+    let fmt_t = |t: Option<f64>| t.map_or_else(|| t!("uncertainty-never"), |t| si(t, "s", 3));
     let (what, ignored) = match p.system {
-        System::Suspension => {
-            let pct = short(p.dm, 3);
-            (
-                format!(
-                    "Free response from {} with the sprung mass at +{pct} %, nominal and −{pct} %",
-                    si(r.x0, "m", 2),
-                ),
-                "The RLC sliders are ignored.",
-            )
-        }
+        System::Suspension => (
+            t!(
+                "uncertainty-band-suspension",
+                start = si(r.x0, "m", 2),
+                percent = short(p.dm, 3)
+            ),
+            t!("uncertainty-ignored-rlc"),
+        ),
         System::Rlc => (
-            "Capacitor voltage from 1 V at the lowest-ζ corner, nominal and highest-ζ corner of \
-             the tolerance box"
-                .to_string(),
-            "The suspension sliders are ignored.",
+            t!("uncertainty-band-rlc"),
+            t!("uncertainty-ignored-suspension"),
         ),
     };
     let zeta_text = r.zeta.map_or_else(
-        || "ζ is undefined at an end of the range".to_string(),
-        |(lo, hi)| format!("ζ spans {}–{}", significant(lo, 3), significant(hi, 3)),
+        || t!("uncertainty-zeta-undefined"),
+        |(lo, hi)| {
+            t!(
+                "uncertainty-zeta-spans",
+                low = significant(lo, 3),
+                high = significant(hi, 3)
+            )
+        },
     );
     let [a, b, c] = &r.band;
-    format!(
-        "{what}: {zeta_text}; 5 % settling times (crosses) {}, {} and {}. {ignored}",
-        fmt_t(a.settling_time),
-        fmt_t(b.settling_time),
-        fmt_t(c.settling_time),
+    t!(
+        "uncertainty-describe-band",
+        what = what,
+        zeta = zeta_text,
+        first = fmt_t(a.settling_time),
+        second = fmt_t(b.settling_time),
+        third = fmt_t(c.settling_time),
+        ignored = ignored
     )
 }
 
@@ -100,43 +121,66 @@ pub(super) fn describe_histogram(
 ) -> String {
     let (name, unit) = h.label();
     let dist = match p.dist {
-        super::Dist::Normal => "normal (tolerance = 3σ)",
-        super::Dist::Uniform => "uniform",
+        super::Dist::Normal => t!("uncertainty-dist-normal"),
+        super::Dist::Uniform => t!("uncertainty-dist-uniform"),
     };
     let (zlo, zhi) = p.zeta_window();
     let spec_text = match h {
-        HistOf::Zeta => format!(
-            " The spec window ζ {}–{} is marked; {} of draws meet the whole spec.",
-            short(zlo, 3),
-            short(zhi, 3),
-            si(yield_pct, "%", 3)
-        ),
-        HistOf::SettlingTime => {
-            format!(" The spec limit {} is marked.", si(p.ts_max, "s", 3))
-        }
-        _ => String::new(),
+        HistOf::Zeta => Some(t!(
+            "uncertainty-spec-zeta",
+            low = short(zlo, 3),
+            high = short(zhi, 3),
+            share = si(yield_pct, "%", 3)
+        )),
+        HistOf::SettlingTime => Some(t!(
+            "uncertainty-spec-settling-time",
+            limit = si(p.ts_max, "s", 3)
+        )),
+        _ => None,
     };
-    match range {
-        Some((lo, hi)) => format!(
-            "Histogram of {name} over {} {dist} draws: from {} to {}, 5th percentile {}, \
-             95th percentile {}.{spec_text}",
-            count_text(draws),
-            si(lo, unit, 4),
-            si(hi, unit, 4),
-            si(p5, unit, 4),
-            si(p95, unit, 4),
+    let Some((lo, hi)) = range else {
+        return t!("uncertainty-no-finite", quantity = name);
+    };
+    let (lo, hi, p5, p95) = (
+        si(lo, unit, 4),
+        si(hi, unit, 4),
+        si(p5, unit, 4),
+        si(p95, unit, 4),
+    );
+    match spec_text {
+        Some(spec) => t!(
+            "uncertainty-describe-histogram-spec",
+            quantity = name,
+            draws = count_text(draws),
+            distribution = dist,
+            low = lo,
+            high = hi,
+            p5 = p5,
+            p95 = p95,
+            spec = spec
         ),
-        None => format!("No draw has a finite {name}."),
+        None => t!(
+            "uncertainty-describe-histogram",
+            quantity = name,
+            draws = count_text(draws),
+            distribution = dist,
+            low = lo,
+            high = hi,
+            p5 = p5,
+            p95 = p95
+        ),
     }
 }
 
 /// Marks a histogram drawn from the first `shown` draws while the full run of `full` draws
 /// continues as provisional, in its title and its description.
 pub(super) fn mark_provisional(fig: &mut crate::figure::Figure, shown: usize, full: usize) {
-    fig.title = format!("{} (provisional)", fig.title);
-    fig.description = format!(
-        "Provisional: from the first {shown} draws while the run of {full} continues. {}",
-        fig.description
+    fig.title = t!("uncertainty-provisional-title", title = &fig.title);
+    fig.description = t!(
+        "uncertainty-provisional-description",
+        shown = shown,
+        full = full,
+        description = &fig.description
     );
 }
 
