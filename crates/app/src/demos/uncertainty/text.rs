@@ -42,17 +42,11 @@ pub(super) fn short(v: f64, sig: usize) -> String {
     number::fixed(trimmed.parse().unwrap_or(v), decimals)
 }
 
-/// A count with thin-space thousands separators ("100 000").
+/// A count of draws in the language's digits.
 fn count_text(n: usize) -> String {
-    let digits = n.to_string();
-    let mut out = String::with_capacity(digits.len() + 4);
-    for (i, ch) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i).is_multiple_of(3) {
-            out.push('\u{2009}');
-        }
-        out.push(ch);
-    }
-    out
+    // Digit grouping follows the language (Intl: `10 000` in French, `10.000` in
+    // Portuguese); English keeps the plain form, as everywhere in the app.
+    crate::i18n::number::fixed(n as f64, 0)
 }
 
 /// A band member's legend label: its name and, where defined, its ζ.
