@@ -3,7 +3,7 @@
 
 use super::locale::{self, Locale, Source};
 use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 
 /// The English catalogue, the source of every message id and the fallback.
 pub const ENGLISH_FTL: &str = include_str!("../../locales/en.ftl");
@@ -24,6 +24,14 @@ thread_local! {
         bundles: Vec::new(),
         missing: std::collections::BTreeSet::new(),
     });
+    /// The active language's number rules, readable while `STATE` is borrowed (Fluent
+    /// calls the number formatter in the middle of `format`).
+    static RULES: Cell<&'static str> = const { Cell::new("en") };
+}
+
+/// The CLDR rules of the active language (see [`Locale::rules`]).
+pub fn active_rules() -> &'static str {
+    RULES.with(Cell::get)
 }
 
 /// Formats Fluent number arguments (counts) with the active language's digits.
@@ -107,6 +115,7 @@ pub fn is_loaded(l: &Locale) -> bool {
 /// shows English until [`load`] brings it.
 pub fn set_active(l: &'static Locale) {
     STATE.with(|s| s.borrow_mut().active = l);
+    RULES.with(|r| r.set(l.rules));
 }
 
 /// The active language.

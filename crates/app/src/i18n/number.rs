@@ -60,7 +60,7 @@ mod imp {
     }
 
     pub(super) fn fixed(v: f64, decimals: usize) -> Option<String> {
-        let rules = super::super::catalogue::active().rules;
+        let rules = super::super::catalogue::active_rules();
         if rules == "en" {
             return None; // English keeps the plain form, as the snapshots and SI style do
         }
