@@ -715,6 +715,7 @@ async function main() {
       /** Message ids shown in English since the last call (the active catalogue lacks them). */
       missingMessages: () => [...app.wasm.takeMissingMessages()],
       language: () => ({ ...activeLanguage() }),
+      languages: () => languages().map((l) => ({ ...l })),
     });
   } catch (err) {
     app.root.replaceChildren();
