@@ -163,6 +163,18 @@ test('the language menu lists every language by its own name and switches page a
   await en.context.close();
 });
 
+test('a Spanish browser gets the Spanish page; notices about bad URL values are Spanish too', async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&zeta=abc`, { locale: 'es-ES' });
+  assert.equal(await page.getAttribute('html', 'lang'), 'es');
+  assert.equal(await page.textContent('button.reset'), 'Restablecer valores');
+  assert.equal(await page.textContent('#share-button'), 'Compartir / Insertar');
+  assert.equal(await page.textContent('button.play'), 'Reproducir');
+  assert.equal(await page.getAttribute('[data-readout="regime"]', 'data-value'), 'underdamped');
+  assert.match(await page.textContent('#notices'), /no es un número/);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('a catalogue that cannot be downloaded leaves the page in English, with a notice', async () => {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
   const page = await context.newPage();
