@@ -191,6 +191,22 @@ test('a catalogue that cannot be downloaded leaves the page in English, with a n
   await context.close();
 });
 
+test('the service worker keeps the chosen catalogue for an offline visit', async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&lang=fr`);
+  await page.evaluate(async () => (await navigator.serviceWorker.ready).active.state);
+  await page.reload();
+  await page.waitForFunction(() => navigator.serviceWorker.controller !== null);
+  await page.waitForSelector('html[data-ready="true"]');
+  await context.setOffline(true);
+  await page.reload();
+  await page.waitForSelector('html[data-ready="true"]');
+  assert.equal(await page.getAttribute('html', 'lang'), 'fr');
+  assert.equal(await page.textContent('#share-button'), 'Partager / Intégrer');
+  assert.equal(await page.textContent('#notices'), '');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 /** Layout problems of the page as it is: sideways scroll and clipped control text. */
 function layoutProblems(page) {
   return page.evaluate(() => {
