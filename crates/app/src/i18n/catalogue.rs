@@ -29,7 +29,9 @@ thread_local! {
     static RULES: Cell<&'static str> = const { Cell::new("en") };
 }
 
-/// The CLDR rules of the active language (see [`Locale::rules`]).
+/// The CLDR rules of the active language (see [`Locale::rules`]); read by the browser's
+/// number formatting.
+#[cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
 pub fn active_rules() -> &'static str {
     RULES.with(Cell::get)
 }
