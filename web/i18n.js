@@ -16,7 +16,6 @@ const STORE_KEY = 'zeta-lang';
 let wasm = null;
 
 /** The active language: {tag, name, dir, rules, pseudo, file?, loaded}. */
-export let LANG = 'en';
 let active = { tag: 'en', name: 'English', dir: 'ltr', rules: 'en', pseudo: false, loaded: true };
 /** The fetched catalogues by tag, to load again into a fresh module instance. */
 const fetched = new Map();
@@ -100,13 +99,13 @@ export async function useLanguage(module, requested) {
       fetched.set(entry.tag, text);
       const problems = wasm.loadCatalogue(entry.tag, text);
       if (problems.length) console.warn(`Zeta Lab: ${entry.file}:`, problems);
+      entry = wasm.setLanguage(entry.tag); // the same language, now loaded
     } catch (err) {
       problem = { name: entry.name, text: (err && err.message) || String(err) };
       entry = wasm.setLanguage('en');
     }
   }
   active = entry;
-  LANG = entry.tag;
   translatePage();
   if (problem) console.warn('Zeta Lab: catalogue not loaded:', problem.text);
   return { entry, problem };
