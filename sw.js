@@ -4,10 +4,14 @@
 const BUILD = '__ZETA_BUILD__';
 const FILES = ['./'];
 const CACHE = `zeta-lab-${BUILD}`;
+// Language catalogues are not installed up front: a visitor downloads only the one the
+// page asks for, and the fetch handler below keeps it for the next (or an offline) visit.
+const CATALOGUE = /\/locales\/[^/]+\.ftl$/;
+const INSTALL = FILES.filter((f) => !/^locales\//.test(f));
 
 self.addEventListener('install', (event) => {
   event.waitUntil(
-    caches.open(CACHE).then((cache) => cache.addAll(FILES)).then(() => self.skipWaiting()),
+    caches.open(CACHE).then((cache) => cache.addAll(INSTALL)).then(() => self.skipWaiting()),
   );
 });
 
@@ -19,11 +23,27 @@ self.addEventListener('activate', (event) => {
   );
 });
 
-// Network first for pages (so a new build shows at once when online), cache first for the
-// versioned assets; either way the cache answers when the network does not.
+// Network first for pages and catalogues (so a new build or translation shows at once when
+// online), cache first for the versioned assets; either way the cache answers when the
+// network does not.
 self.addEventListener('fetch', (event) => {
   const req = event.request;
-  if (req.method !== 'GET' || new URL(req.url).origin !== self.location.origin) return;
+  const url = new URL(req.url);
+  if (req.method !== 'GET' || url.origin !== self.location.origin) return;
+  if (CATALOGUE.test(url.pathname)) {
+    event.respondWith(
+      fetch(req)
+        .then((res) => {
+          if (res.ok) {
+            const copy = res.clone();
+            caches.open(CACHE).then((c) => c.put(req, copy));
+          }
+          return res;
+        })
+        .catch(() => caches.match(req, { ignoreSearch: true }).then((hit) => hit || Response.error())),
+    );
+    return;
+  }
   if (req.mode === 'navigate') {
     event.respondWith(
       fetch(req)

@@ -28,6 +28,8 @@ install_apt() {
   command -v chromium >/dev/null 2>&1 || missing+=(chromium)
   command -v chromedriver >/dev/null 2>&1 || missing+=(chromium-driver)
   command -v gzip >/dev/null 2>&1 || missing+=(gzip)
+  # A CJK font, so the Chinese interface shows real glyphs in headless Chromium.
+  fc-list :lang=zh 2>/dev/null | grep -q . || missing+=(fonts-wqy-zenhei)
   if ((${#missing[@]})); then
     log "apt-get install ${missing[*]}"
     local sudo=""

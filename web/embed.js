@@ -21,12 +21,7 @@ import { notify } from './ui.js';
 import { decodeToken, encodeToken, loaded, parsePresets, tokenInText, tokenNotice, viewQuery } from './state.js';
 import { setupPrediction } from './predict.js';
 import { cancelPendingWrite } from './url.js';
-import { LANG } from './i18n.js';
-
-const FULLSCREEN = {
-  en: ['Full screen', 'Exit full screen'],
-  es: ['Pantalla completa', 'Salir de pantalla completa'],
-};
+import { t } from './i18n.js';
 
 const MAX_KEYS = 64;
 const THEMES = ['light', 'dark', 'projector'];
@@ -134,10 +129,10 @@ function addPresets(view, presets) {
   const box = document.createElement('div');
   box.className = 'presets lecturer-presets';
   box.setAttribute('role', 'group');
-  box.setAttribute('aria-label', 'Lecturer presets');
+  box.setAttribute('aria-label', t('lecturerPresets'));
   const title = document.createElement('span');
   title.className = 'presets-label';
-  title.textContent = 'Lecturer presets';
+  title.textContent = t('lecturerPresets');
   box.append(title);
   for (const p of presets) {
     const b = document.createElement('button');
@@ -160,8 +155,7 @@ function addFullscreenButton() {
   const button = document.createElement('button');
   button.type = 'button';
   button.className = 'zeta-fullscreen';
-  const words = FULLSCREEN[LANG] || FULLSCREEN.en;
-  const label = () => words[document.fullscreenElement ? 1 : 0];
+  const label = () => (document.fullscreenElement ? t('exitFullScreen') : t('fullScreen'));
   button.textContent = label();
   button.setAttribute('aria-pressed', String(Boolean(document.fullscreenElement)));
   button.addEventListener('click', () => {
@@ -252,7 +246,7 @@ export function applyToken(h, token) {
   }
   const q = new URLSearchParams(dec.query);
   if (!demoList().some((d) => d.id === q.get('demo'))) {
-    const error = `This saved view names no demo this page has (“${String(q.get('demo')).slice(0, 40)}”); nothing was changed.`;
+    const error = t('tokenNoDemo', { demo: String(q.get('demo')).slice(0, 40) });
     if (notices) notify(notices, error, 'warn');
     return false;
   }
@@ -300,7 +294,7 @@ function wireRestore(h) {
     const { readStamp } = await import('../zeta-app.js');
     const token = file.size <= 20e6 ? readStamp(new Uint8Array(await file.arrayBuffer())) : undefined;
     if (token) applyToken(h, token);
-    else notify(document.getElementById('notices'), 'This file carries no Zeta Lab view (only PNG, SVG and CSV exported by Zeta Lab do).', 'warn');
+    else notify(document.getElementById('notices'), t('noStamp'), 'warn');
   });
   document.addEventListener('paste', (ev) => {
     const target = ev.target;

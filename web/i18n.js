@@ -1,135 +1,129 @@
-// Interface strings of the page itself, one table per language. (Strings that come from
-// the demos are translated in Rust: crates/app/src/i18n/.) `?lang=` wins, then the
-// browser's languages; English otherwise.
-const STRINGS = {
-  en: {
-    skip: 'Skip to the demo',
-    demo: 'Demo',
-    share: 'Share / Embed',
-    loading: 'Loading the solver…',
-    footer: 'Zeta Lab — every number on this page is computed in Rust (compiled to WebAssembly) from closed-form solutions.',
-    parameters: 'Parameters',
-    readouts: 'Readouts',
-    about: 'About this demo',
-    plotInView: 'Plot in view',
-    presets: 'Presets',
-    reset: 'Reset to defaults',
-    exactValue: 'exact value',
-    exportGroup: 'Export {plot}',
-    download: 'Download {plot} as {format}',
-    play: 'Play',
-    pause: 'Pause',
-    soundOn: 'Sound on',
-    soundOff: 'Sound off',
-    soundHint: 'Hear x(t): pitch follows displacement',
-    animTime: 'Animation time',
-    timeWords: 'time {t} seconds',
-    schematic: 'Animated schematic',
-    dismiss: 'Dismiss notice',
-    failed: 'Something went wrong and the demo was restarted: {text}',
-    noDemo: 'There is no demo called “{id}”; showing {fallback}.',
-    noWasm: 'The solver could not be loaded ({text}). This page needs WebAssembly.',
-    copy: 'Copy',
-    equation: 'Equation',
-    tourHead: 'The paper, figure by figure',
-    tourOpen: 'Open this state in the demo',
-    tourPaper: 'The paper says',
-    tourApp: 'The app computes',
-    tourConfirmed: 'Confirmed.',
-    tourDiffers: 'Differs.',
-    copied: 'Copied',
-    copyManual: 'Select and copy (Ctrl+C)',
-    shareTitle: 'Share or embed “{title}”',
-    embedView: ' Embed view (no site header)',
-    autoplay: ' Start the animation',
-    theme: 'Theme ',
-    width: ' Width ',
-    height: ' Height ',
-    slidersShown: 'Sliders shown',
-    slidersLocked: 'Sliders locked',
-    plotsShown: 'Plots shown',
-    link: 'Link',
-    embedCode: 'Embed code',
-    preview: 'Preview of the embedded demo',
-    close: 'Close',
-  },
-  es: {
-    skip: 'Ir a la demostración',
-    demo: 'Demostración',
-    share: 'Compartir / Insertar',
-    loading: 'Cargando el resolvedor…',
-    footer: 'Zeta Lab — cada número de esta página se calcula en Rust (compilado a WebAssembly) con soluciones analíticas.',
-    parameters: 'Parámetros',
-    readouts: 'Resultados',
-    about: 'Acerca de esta demostración',
-    plotInView: 'Gráfica a la vista',
-    presets: 'Ajustes predefinidos',
-    reset: 'Restablecer valores',
-    exactValue: 'valor exacto',
-    exportGroup: 'Exportar {plot}',
-    download: 'Descargar {plot} como {format}',
-    play: 'Reproducir',
-    pause: 'Pausa',
-    soundOn: 'Sonido sí',
-    soundOff: 'Sonido no',
-    soundHint: 'Escuchar x(t): el tono sigue al desplazamiento',
-    animTime: 'Tiempo de la animación',
-    timeWords: 'tiempo {t} segundos',
-    schematic: 'Esquema animado',
-    dismiss: 'Cerrar aviso',
-    failed: 'Algo salió mal y la demostración se reinició: {text}',
-    noDemo: 'No hay ninguna demostración llamada «{id}»; se muestra {fallback}.',
-    noWasm: 'No se pudo cargar el resolvedor ({text}). Esta página necesita WebAssembly.',
-    copy: 'Copiar',
-    equation: 'Ecuación',
-    tourHead: 'El artículo, figura por figura',
-    tourOpen: 'Abrir este estado en la demostración',
-    tourPaper: 'El artículo dice',
-    tourApp: 'La aplicación calcula',
-    tourConfirmed: 'Confirmado.',
-    tourDiffers: 'Difiere.',
-    copied: 'Copiado',
-    copyManual: 'Seleccione y copie (Ctrl+C)',
-    shareTitle: 'Compartir o insertar «{title}»',
-    embedView: ' Vista insertada (sin cabecera)',
-    autoplay: ' Iniciar la animación',
-    theme: 'Tema ',
-    width: ' Ancho ',
-    height: ' Alto ',
-    slidersShown: 'Deslizadores visibles',
-    slidersLocked: 'Deslizadores bloqueados',
-    plotsShown: 'Gráficas visibles',
-    link: 'Enlace',
-    embedCode: 'Código para insertar',
-    preview: 'Vista previa de la demostración insertada',
-    close: 'Cerrar',
-  },
+// The page's language. Every string the page shows is a message of the Fluent catalogues
+// (crates/app/locales/<tag>.ftl): the page's own are `page-…` ids, written here as
+// `t('camelKey')` (→ `page-camel-key`) so the catalogue tests find them. The wasm module
+// holds the catalogues and does the formatting (plurals, argument order); English is
+// compiled in and is the fallback for any message a catalogue lacks.
+//
+// The language: `lang=` in the address, else the visitor's last choice (localStorage),
+// else the browser's languages; negotiated in Rust against the list in
+// crates/app/src/i18n/locale.rs. Only the active language's catalogue is fetched, once
+// the module has started and before the first plot; if that fails the page stays English
+// and says so.
+
+const STORE_KEY = 'zeta-lang';
+
+/** The module's exports once started (null before: t() then gives the page's English). */
+let wasm = null;
+
+/** The active language: {tag, name, dir, rules, pseudo, file?, loaded}. */
+let active = { tag: 'en', name: 'English', dir: 'ltr', rules: 'en', pseudo: false, loaded: true };
+/** The fetched catalogues by tag, to load again into a fresh module instance. */
+const fetched = new Map();
+
+// Before the module starts only the "cannot load the solver" notice can be shown.
+const BEFORE_START = {
+  'page-no-wasm': 'The solver could not be loaded ({ $text }). This page needs WebAssembly.',
 };
 
-function pick() {
-  const wanted = [new URLSearchParams(window.location.search).get('lang'), ...(navigator.languages || [navigator.language])];
-  for (const tag of wanted) {
-    const primary = String(tag || '').split(/[-_]/)[0].toLowerCase();
-    if (primary in STRINGS) return primary;
-  }
-  return 'en';
+/** The message id of the page key `camelKey`: `page-camel-key`. */
+function pageId(key) {
+  return `page-${key.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`)}`;
 }
 
-export const LANG = pick();
-
-/** The string `key` in the page language, with `{name}` placeholders filled from `vars`. */
+/** The string `key` (a `page-…` message) in the page language, with `vars` as its arguments. */
 export function t(key, vars = {}) {
-  const s = STRINGS[LANG][key] ?? STRINGS.en[key] ?? key;
-  return s.replace(/\{(\w+)\}/g, (_, k) => String(vars[k] ?? ''));
+  const id = pageId(key);
+  if (wasm) return wasm.message(id, vars);
+  const s = BEFORE_START[id] ?? key;
+  return s.replace(/\{ \$(\w+) \}/g, (_, k) => String(vars[k] ?? ''));
 }
 
-/** A number in the page language (decimal comma in Spanish). */
+/** A number in the page language's CLDR rules (pseudo-locales: English's). */
 export function num(value, digits) {
-  return new Intl.NumberFormat(LANG, { minimumFractionDigits: digits, maximumFractionDigits: digits }).format(value);
+  return new Intl.NumberFormat(active.rules || 'en', { minimumFractionDigits: digits, maximumFractionDigits: digits }).format(value);
 }
 
-/** Translates the static page: elements carrying data-i18n="key". */
+/** The locale whose rules format numbers (for Intl elsewhere on the page). */
+export function numberLocale() {
+  return active.rules || 'en';
+}
+
+/** The languages the module offers: [{tag, name, dir, rules, pseudo, file?, loaded}]. */
+export function languages() {
+  return wasm ? wasm.languages() : [active];
+}
+
+/** The active language's entry. */
+export function activeLanguage() {
+  return active;
+}
+
+function remembered() {
+  try {
+    return window.localStorage.getItem(STORE_KEY);
+  } catch {
+    return null;
+  }
+}
+
+/** Remembers the visitor's choice for the next visit (ignored where storage is off). */
+export function remember(tag) {
+  try {
+    window.localStorage.setItem(STORE_KEY, tag);
+  } catch {
+    // private mode or storage disabled: the choice lasts for this page only
+  }
+}
+
+/** The requested tags, most wanted first: `lang=`, the remembered choice, the browser's. */
+export function requestedLanguages(search = window.location.search) {
+  const fromUrl = new URLSearchParams(search).get('lang');
+  const list = [fromUrl, remembered(), ...(navigator.languages || [navigator.language])];
+  return list.filter((s) => typeof s === 'string' && /^[A-Za-z0-9-]{1,35}$/.test(s));
+}
+
+/**
+ * Makes the best language for `requested` active (fetching its catalogue if it has one
+ * not loaded yet). Resolves to `{entry, problem}`: `problem` is set when the catalogue
+ * could not be fetched or read, and the page then stays English.
+ */
+export async function useLanguage(module, requested) {
+  wasm = module;
+  let entry = wasm.setLanguage(requested.join(','));
+  let problem = null;
+  if (entry.file && !entry.loaded) {
+    try {
+      const res = await fetch(new URL(`../${entry.file}`, import.meta.url));
+      if (!res.ok) throw new Error(`HTTP ${res.status}`);
+      const text = await res.text();
+      fetched.set(entry.tag, text);
+      const problems = wasm.loadCatalogue(entry.tag, text);
+      if (problems.length) console.warn(`Zeta Lab: ${entry.file}:`, problems);
+      entry = wasm.setLanguage(entry.tag); // the same language, now loaded
+    } catch (err) {
+      problem = { name: entry.name, text: (err && err.message) || String(err) };
+      entry = wasm.setLanguage('en');
+    }
+  }
+  active = entry;
+  translatePage();
+  if (problem) console.warn('Zeta Lab: catalogue not loaded:', problem.text);
+  return { entry, problem };
+}
+
+/** Brings a fresh module instance (after a recovery) to the active language. */
+export function adoptInstance(module) {
+  wasm = module;
+  for (const [tag, text] of fetched) module.loadCatalogue(tag, text);
+  module.setLanguage(active.tag);
+}
+
+/** Translates the static page (elements carrying data-i18n="key") and sets lang and dir. */
 export function translatePage() {
-  document.documentElement.lang = LANG;
+  document.documentElement.lang = active.tag;
+  document.documentElement.dir = active.dir === 'rtl' ? 'rtl' : 'ltr';
+  if (!wasm) return;
   for (const el of document.querySelectorAll('[data-i18n]')) el.textContent = t(el.dataset.i18n);
+  document.querySelector('.site-header nav')?.setAttribute('aria-label', t('demosNav'));
+  document.querySelector('.site-header .languages')?.setAttribute('aria-label', t('languageNav'));
 }

@@ -2,18 +2,18 @@
 // declaration, and redraws at most once per animation frame while controls move.
 // No physics here: every number comes from the Session (Rust).
 import './state.js'; // first: expands a state= token in the address before anything reads it
-import init, { demoList, setLanguage } from '../zeta-app.js';
+import init from '../zeta-app.js';
 import * as firstInstance from '../zeta-app.js';
 import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
 import { fillLiveCells } from './live-table.js';
 import { applyConditions } from './conditional.js';
 import { renderTour } from './tour.js';
-import { currentQuery, demoFromUrl, writeState } from './url.js';
+import { cancelPendingWrite, currentQuery, demoFromUrl, queryFor, writeState } from './url.js';
 import { download } from './download.js';
 import { applyEmbedView, connectHost, embedOptions } from './embed.js';
 import { createSonifier } from './sound.js';
 import { openShareDialog } from './share.js';
-import { LANG, num, t, translatePage } from './i18n.js';
+import { activeLanguage, adoptInstance, languages, num, remember, requestedLanguages, t, translatePage, useLanguage } from './i18n.js';
 
 const DEFAULT_DEMO = 'regimes';
 const ANNOUNCE_DELAY_MS = 1200;
@@ -102,7 +102,7 @@ async function reinstantiate() {
   // A new URL is a new ES module record, so the glue instantiates the wasm afresh.
   const glue = await import(`../zeta-app.js?instance=${app.instances}`);
   await glue.default({ module_or_path: WASM_URL });
-  glue.setLanguage(LANG);
+  adoptInstance(glue);
   app.wasm = glue;
   app.session = new glue.Session(app.demoId);
   app.session.applyQuery(currentQuery()); // keeps range./step. overrides after a recovery
@@ -276,7 +276,7 @@ function markProvisional(keys) {
   const now = new Set(keys);
   for (const [key, item] of app.view.readouts) {
     item.toggleAttribute('data-provisional', now.has(key));
-    if (now.has(key)) item.querySelector('dd').textContent += ' (provisional)';
+    if (now.has(key)) item.querySelector('dd').textContent = t('provisional', { value: item.querySelector('dd').textContent });
   }
   for (const fig of document.querySelectorAll('[data-plot-wrap]')) {
     const on = now.has(fig.dataset.plotWrap);
@@ -606,15 +606,63 @@ function openDemo(id, query) {
 
 function buildMenu(list) {
   const select = document.getElementById('demo-select');
+  select.replaceChildren();
   for (const d of list) {
     const opt = document.createElement('option');
     opt.value = d.id;
     opt.textContent = d.title;
     select.append(opt);
   }
+}
+
+function wireMenu() {
+  const select = document.getElementById('demo-select');
   select.addEventListener('change', () => {
     openDemo(select.value, null);
     syncUrl();
+  });
+}
+
+/** The language menu: every language by its own name; a pseudo-locale only while active. */
+function buildLanguageMenu() {
+  const select = document.getElementById('lang-select');
+  const current = activeLanguage();
+  select.replaceChildren();
+  for (const l of languages()) {
+    if (l.pseudo && l.tag !== current.tag) continue;
+    const opt = document.createElement('option');
+    opt.value = l.tag;
+    opt.lang = l.pseudo ? 'en' : l.tag;
+    opt.textContent = l.name;
+    select.append(opt);
+  }
+  select.value = current.tag;
+}
+
+/**
+ * Switches the page and the demo to language `tag`, keeping the demo's values: the
+ * choice goes into the address (`lang=`) and is remembered for the next visit.
+ */
+async function switchLanguage(tag) {
+  remember(tag);
+  const values = app.session ? app.session.values() : [];
+  const q = new URLSearchParams(window.location.search);
+  q.set('lang', tag);
+  history.replaceState(null, '', `?${q.toString()}${window.location.hash}`);
+  const { problem } = await useLanguage(app.wasm, [tag]);
+  buildLanguageMenu();
+  buildMenu(app.wasm.demoList());
+  cancelPendingWrite();
+  const query = queryFor(app.demoId, values);
+  history.replaceState(null, '', query + window.location.hash);
+  openDemo(app.demoId, query);
+  if (problem) notify(app.notices, t('catalogueFailed', problem), 'warn');
+}
+
+function wireLanguageMenu() {
+  const select = document.getElementById('lang-select');
+  select.addEventListener('change', () => {
+    switchLanguage(select.value).catch(reportFailure);
   });
 }
 
@@ -662,7 +710,13 @@ async function main() {
   try {
     const wasm = await init({ module_or_path: WASM_URL });
     // Read-only diagnostics for the soak test and curious lecturers.
-    window.zetaDiagnostics = Object.freeze({ wasmBytes: () => wasm.memory.buffer.byteLength });
+    window.zetaDiagnostics = Object.freeze({
+      wasmBytes: () => wasm.memory.buffer.byteLength,
+      /** Message ids shown in English since the last call (the active catalogue lacks them). */
+      missingMessages: () => [...app.wasm.takeMissingMessages()],
+      language: () => ({ ...activeLanguage() }),
+      languages: () => languages().map((l) => ({ ...l })),
+    });
   } catch (err) {
     app.root.replaceChildren();
     const p = document.createElement('p');
@@ -671,9 +725,13 @@ async function main() {
     app.root.append(p);
     return;
   }
-  setLanguage(LANG);
-  const list = demoList();
+  const { problem } = await useLanguage(app.wasm, requestedLanguages());
+  if (problem) notify(app.notices, t('catalogueFailed', problem), 'warn');
+  buildLanguageMenu();
+  wireLanguageMenu();
+  const list = app.wasm.demoList();
   buildMenu(list);
+  wireMenu();
   const wanted = demoFromUrl();
   const known = list.some((d) => d.id === wanted);
   if (wanted !== null && !known) {

@@ -10,44 +10,7 @@
 // value (default 10 %). The form works with the keyboard alone (type, Enter); the result
 // is announced through a polite live region and receives focus.
 import { parseNumber } from '../zeta-app.js';
-import { LANG } from './i18n.js';
-
-// The box's own words (the readout labels arrive translated from Rust).
-const WORDS = {
-  en: {
-    title: 'Predict first',
-    hint: 'The plots and the {label} stay hidden until you predict it. Type your prediction and press Enter.',
-    field: 'Your prediction of the {label}{unit}',
-    reveal: 'Reveal',
-    nan: '“{text}” is not a number. Type a number such as 0.25.',
-    undefined: 'The {label} is not defined for these parameters; change them and try again.',
-    result: 'You predicted {p}; the {label} is {v}: {how}, {within} the tolerance {tol}.',
-    exact: 'exactly right',
-    high: '{d} too high',
-    low: '{d} too low',
-    inside: 'within',
-    outside: 'outside',
-  },
-  es: {
-    title: 'Primero, prediga',
-    hint: 'Las gráficas y «{label}» quedan ocultas hasta que haga su predicción. Escríbala y pulse Intro.',
-    field: 'Su predicción de «{label}»{unit}',
-    reveal: 'Mostrar',
-    nan: '«{text}» no es un número. Escriba un número como 0.25.',
-    undefined: '«{label}» no está definido con estos parámetros; cámbielos y vuelva a intentarlo.',
-    result: 'Predijo {p}; «{label}» vale {v}: {how}, {within} de la tolerancia {tol}.',
-    exact: 'exacto',
-    high: '{d} por encima',
-    low: '{d} por debajo',
-    inside: 'dentro',
-    outside: 'fuera',
-  },
-};
-
-function w(key, vars = {}) {
-  const s = (WORDS[LANG] || WORDS.en)[key] ?? WORDS.en[key];
-  return s.replace(/\{(\w+)\}/g, (_, k) => String(vars[k] ?? ''));
-}
+import { numberLocale, t } from './i18n.js';
 
 const VERB = { id: 'http://adlnet.gov/expapi/verbs/answered', display: { 'en-US': 'answered' } };
 const INTERACTION = 'http://adlnet.gov/expapi/activities/cmi.interaction';
@@ -70,7 +33,7 @@ export function tolerance(raw, value) {
   return pct ? { abs: Math.abs(value) * n / 100, text: `±${n} %` } : { abs: n, text: `±${n}` };
 }
 
-const show = (v) => new Intl.NumberFormat(LANG, { maximumSignificantDigits: 4, useGrouping: false }).format(v);
+const show = (v) => new Intl.NumberFormat(numberLocale(), { maximumSignificantDigits: 4, useGrouping: false }).format(v);
 
 /**
  * Hides the plots and readout `opts.predict` of `view` behind a prediction form.
@@ -97,16 +60,16 @@ export function setupPrediction(view, opts, io) {
   if (live) live.setAttribute('aria-live', 'off');
   const unit = spec.unit ? ` ${spec.unit}` : '';
   const box = el('section', { class: 'zeta-predict', 'aria-labelledby': 'zeta-predict-title' });
-  box.append(el('h2', { id: 'zeta-predict-title' }, w('title')));
-  box.append(el('p', { id: 'zeta-predict-hint' }, w('hint', { label: spec.label })));
+  box.append(el('h2', { id: 'zeta-predict-title' }, t('predictTitle')));
+  box.append(el('p', { id: 'zeta-predict-hint' }, t('predictHint', { label: spec.label })));
   // Not a <form> submission: sandboxed frames without allow-forms never fire `submit`.
   const form = el('div', { class: 'zeta-predict-form', role: 'group', 'aria-labelledby': 'zeta-predict-title' });
   const input = el('input', {
     id: 'zeta-predict-input', type: 'text', inputmode: 'decimal', autocomplete: 'off',
     'aria-describedby': 'zeta-predict-hint zeta-predict-error', enterkeyhint: 'done',
   });
-  const button = el('button', { type: 'button' }, w('reveal'));
-  form.append(el('label', { for: 'zeta-predict-input' }, w('field', { label: spec.label, unit: unit ? ` (${spec.unit})` : '' })), input, button);
+  const button = el('button', { type: 'button' }, t('predictReveal'));
+  form.append(el('label', { for: 'zeta-predict-input' }, (unit ? t('predictFieldUnit', { label: spec.label, unit: spec.unit }) : t('predictField', { label: spec.label }))), input, button);
   const error = el('p', { id: 'zeta-predict-error', class: 'zeta-predict-error', role: 'alert' });
   const result = el('p', { id: 'zeta-predict-result', class: 'zeta-predict-result', role: 'status', 'aria-live': 'polite', tabindex: '-1' });
   box.append(form, error, result);
@@ -127,13 +90,13 @@ export function setupPrediction(view, opts, io) {
     const prediction = parseNumber(input.value.replace(',', '.'));
     const value = Number(item.getAttribute('data-value'));
     if (prediction === undefined) {
-      error.textContent = w('nan', { text: input.value.slice(0, 40) });
+      error.textContent = t('predictNan', { text: input.value.slice(0, 40), example: show(0.25) });
       input.setAttribute('aria-invalid', 'true');
       input.focus();
       return;
     }
     if (item.getAttribute('data-value') === '' || !Number.isFinite(value)) {
-      error.textContent = w('undefined', { label: spec.label });
+      error.textContent = t('predictUndefined', { label: spec.label });
       return;
     }
     error.textContent = '';
@@ -150,11 +113,12 @@ export function setupPrediction(view, opts, io) {
     input.readOnly = true;
     button.disabled = true;
     const d = `${show(Math.abs(difference))}${unit}`;
-    const how = difference === 0 ? w('exact') : w(difference > 0 ? 'high' : 'low', { d });
-    result.textContent = w('result', {
+    const how = difference === 0 ? t('predictExact') : difference > 0 ? t('predictHigh', { d }) : t('predictLow', { d });
+    const words = {
       p: `${show(prediction)}${unit}`, label: spec.label, v: `${show(value)}${unit}`, how,
-      within: w(success ? 'inside' : 'outside'), tol: `${tol.text}${tol.text.endsWith('%') ? '' : unit}`,
-    });
+      tol: `${tol.text}${tol.text.endsWith('%') ? '' : unit}`,
+    };
+    result.textContent = success ? t('predictResultInside', words) : t('predictResultOutside', words);
     result.classList.toggle('ok', success);
     result.focus();
     const ctx = io.context();

@@ -1,4 +1,4 @@
-import { t } from './i18n.js';
+import { languages, t } from './i18n.js';
 import { encodeToken, formatPresets, parsePresets, viewQuery } from './state.js';
 
 // The "Share / Embed" dialog: builds the link, the <iframe> snippet and the state token for
@@ -82,24 +82,29 @@ function checkboxList(legend, items, checked, group) {
 /** Per-slider range and step overrides: a small table of number boxes (empty = declared). */
 function rangeTable(spec) {
   const box = el('fieldset', { class: 'share-ranges' });
-  box.append(el('legend', {}, 'Slider ranges and steps (leave empty to keep the declared ones)'));
+  box.append(el('legend', {}, t('shareRanges')));
   const table = el('table', {});
   const head = el('tr', {});
-  for (const h of ['slider', 'from', 'to', 'step']) head.append(el('th', { scope: 'col' }, h));
+  for (const h of [t('shareColSlider'), t('shareColFrom'), t('shareColTo'), t('shareColStep')]) head.append(el('th', { scope: 'col' }, h));
   table.append(head);
   const rows = [];
   for (const p of spec.params.filter((p) => p.kind === 'slider')) {
     const tr = el('tr', {});
     tr.append(el('th', { scope: 'row' }, `${p.label} (${p.key})`));
-    const cell = (what, placeholder) => {
+    const cell = (what, placeholder, label) => {
       const input = el('input', { type: 'number', id: `share-${what}-${p.key}`, placeholder: String(placeholder), step: 'any',
-        'aria-label': `${p.label}: ${what}` });
+        'aria-label': label });
       const td = el('td', {});
       td.append(input);
       tr.append(td);
       return input;
     };
-    rows.push({ p, lo: cell('min', p.min), hi: cell('max', p.max), step: cell('step', p.step) });
+    rows.push({
+      p,
+      lo: cell('min', p.min, t('shareRangeFrom', { label: p.label })),
+      hi: cell('max', p.max, t('shareRangeTo', { label: p.label })),
+      step: cell('step', p.step, t('shareRangeStep', { label: p.label })),
+    });
     table.append(tr);
   }
   box.append(table);
@@ -115,13 +120,13 @@ function rangeTable(spec) {
 /** "Predict, then reveal": which readout to predict, and the tolerance. */
 function predictionTask(spec) {
   const box = el('fieldset', { class: 'share-list' });
-  box.append(el('legend', {}, 'Prediction task'));
+  box.append(el('legend', {}, t('sharePredictTask')));
   const select = el('select', { id: 'share-predict' });
-  select.append(el('option', { value: '' }, 'none'));
+  select.append(el('option', { value: '' }, t('shareNone')));
   for (const r of spec.readouts) select.append(el('option', { value: r.key }, `${r.label}${r.unit ? ` (${r.unit})` : ''}`));
   const tol = el('input', { type: 'text', id: 'share-tol', value: '10%', size: '6' });
-  box.append(el('label', { for: 'share-predict' }, 'Students predict '), select,
-    el('label', { for: 'share-tol' }, ' within '), tol);
+  box.append(el('label', { for: 'share-predict' }, t('sharePredict')), select,
+    el('label', { for: 'share-tol' }, t('sharePredictWithin')), tol);
   return { box, readout: () => select.value, tol: () => tol.value.trim() };
 }
 
@@ -132,21 +137,21 @@ let authored = '';
 /** Named lecturer presets carried in the link (`presets=`). */
 function presetEditor(values) {
   const box = el('fieldset', { class: 'share-list share-presets' });
-  box.append(el('legend', {}, 'Lecturer presets (carried in the link)'));
-  const name = el('input', { type: 'text', id: 'share-preset-name', maxlength: '40', placeholder: 'e.g. Light damping' });
-  const add = el('button', { type: 'button', id: 'share-preset-add' }, 'Add the values on screen');
+  box.append(el('legend', {}, t('sharePresets')));
+  const name = el('input', { type: 'text', id: 'share-preset-name', maxlength: '40', placeholder: t('sharePresetExample') });
+  const add = el('button', { type: 'button', id: 'share-preset-add' }, t('sharePresetAdd'));
   const text = el('input', { type: 'text', id: 'share-presets', value: authored, 'aria-describedby': 'share-presets-help' });
-  const help = el('p', { id: 'share-presets-help', class: 'share-help' }, 'Format: name:key=value,key=value; next name:…');
+  const help = el('p', { id: 'share-presets-help', class: 'share-help' }, t('sharePresetFormat'));
   add.addEventListener('click', () => {
-    const label = name.value.trim() || `Preset ${parsePresets(text.value).length + 1}`;
+    const label = name.value.trim() || t('sharePresetDefault', { n: parsePresets(text.value).length + 1 });
     text.value = formatPresets([...parsePresets(text.value), { label, values: values.map(([k, v]) => [k, String(v)]) }]);
     name.value = '';
     text.dispatchEvent(new Event('input', { bubbles: true }));
   });
   const row1 = el('div', {});
-  row1.append(el('label', { for: 'share-preset-name' }, 'Name '), name, add);
+  row1.append(el('label', { for: 'share-preset-name' }, t('sharePresetName')), name, add);
   const row2 = el('div', {});
-  row2.append(el('label', { for: 'share-presets' }, 'Presets '), text);
+  row2.append(el('label', { for: 'share-presets' }, t('sharePresetList')), text);
   box.append(row1, row2, help);
   return { box, value: () => { authored = text.value.trim(); return formatPresets(parsePresets(authored)); } };
 }
@@ -162,9 +167,13 @@ export function openShareDialog({ demoId, values, spec }) {
   embed.checked = true;
   const autoplay = el('input', { type: 'checkbox', id: 'share-autoplay' });
   const theme = el('select', { id: 'share-theme' });
-  for (const [v, label] of [['auto', 'auto'], ['light', 'light'], ['dark', 'dark'], ['projector', 'projector (high contrast)']]) theme.append(el('option', { value: v }, label));
+  for (const [v, label] of [['auto', t('themeAuto')], ['light', t('themeLight')], ['dark', t('themeDark')], ['projector', t('themeProjector')]]) {
+    theme.append(el('option', { value: v }, label));
+  }
+  // The visitor's own language, or one of the real languages (by their own names).
   const lang = el('select', { id: 'share-lang' });
-  for (const [v, label] of [['auto', 'visitor’s language'], ['en', 'English'], ['es', 'Español']]) lang.append(el('option', { value: v }, label));
+  lang.append(el('option', { value: 'auto' }, t('shareVisitorLanguage')));
+  for (const l of languages().filter((x) => !x.pseudo)) lang.append(el('option', { value: l.tag, lang: l.tag }, l.name));
   const fullscreen = el('input', { type: 'checkbox', id: 'share-fullscreen' });
   fullscreen.checked = true;
   const width = el('input', { type: 'number', id: 'share-width', value: '800', min: '320', max: '4000' });
@@ -175,16 +184,16 @@ export function openShareDialog({ demoId, values, spec }) {
     d.append(input, el('label', { for: input.id }, text));
     return d;
   };
-  opts.append(row(embed, t('embedView')), row(autoplay, t('autoplay')), row(fullscreen, ' Full-screen button'));
+  opts.append(row(embed, t('embedView')), row(autoplay, t('autoplay')), row(fullscreen, t('shareFullscreen')));
   const sizes = el('div', { class: 'share-sizes' });
-  sizes.append(el('label', { for: 'share-theme' }, t('theme')), theme, el('label', { for: 'share-lang' }, ' Language '), lang,
+  sizes.append(el('label', { for: 'share-theme' }, t('theme')), theme, el('label', { for: 'share-lang' }, t('shareLanguage')), lang,
     el('label', { for: 'share-width' }, t('width')), width, el('label', { for: 'share-height' }, t('height')), height);
   opts.append(sizes);
   const params = spec.params.map((p) => [p.key, `${p.label} (${p.key})`]);
   const shown = checkboxList(t('slidersShown'), params, () => true, 'shown');
   const locked = checkboxList(t('slidersLocked'), params, () => false, 'locked');
   const plots = checkboxList(t('plotsShown'), spec.plots.map((p) => [p.key, p.title]), () => true, 'plots');
-  const readouts = checkboxList('Readouts shown', spec.readouts.map((r) => [r.key, r.label]), () => true, 'readouts');
+  const readouts = checkboxList(t('readoutsShown'), spec.readouts.map((r) => [r.key, r.label]), () => true, 'readouts');
   const lists = el('div', { class: 'share-lists' });
   lists.append(shown.box, locked.box, plots.box, readouts.box);
   const ranges = rangeTable(spec);
@@ -196,7 +205,7 @@ export function openShareDialog({ demoId, values, spec }) {
   const snippet = el('textarea', { readonly: '', rows: '3', id: 'share-snippet', 'aria-label': t('embedCode') });
   const copySnippet = el('button', { type: 'button' }, t('copy'));
   const preview = el('iframe', { title: t('preview'), sandbox: 'allow-scripts allow-same-origin', class: 'share-preview' });
-  const token = el('input', { type: 'text', readonly: '', id: 'share-token', 'aria-label': 'State token' });
+  const token = el('input', { type: 'text', readonly: '', id: 'share-token', 'aria-label': t('stateToken') });
   const copyToken = el('button', { type: 'button' }, t('copy'));
   const close = el('button', { type: 'button', class: 'share-close' }, t('close'));
 
@@ -205,7 +214,7 @@ export function openShareDialog({ demoId, values, spec }) {
   const snipRow = el('div', { class: 'share-row' });
   snipRow.append(el('label', { for: 'share-snippet' }, t('embedCode')), snippet, copySnippet);
   const tokenRow = el('div', { class: 'share-row' });
-  tokenRow.append(el('label', { for: 'share-token' }, 'State token'), token, copyToken);
+  tokenRow.append(el('label', { for: 'share-token' }, t('stateToken')), token, copyToken);
   dialog.append(opts, lists, ranges.box, task.box, presets.box, linkRow, snipRow, tokenRow, preview, close);
 
   let timer = null;

@@ -14,6 +14,8 @@
 // Imported first by main.js: a `state=` in the address is expanded into the query before
 // any other module reads it (explicit keys in the address win over the token's).
 
+import { t } from './i18n.js';
+
 export const TOKEN_VERSION = '1';
 /** View options carried by a token, in token order. */
 export const VIEW_KEYS = ['embed', 'controls', 'lock', 'plots', 'readouts', 'theme', 'lang', 'autoplay',
@@ -74,18 +76,18 @@ export function encodeToken(query) {
 /** `{query}` from a token, or `{error}` saying why it cannot be read. */
 export function decodeToken(token) {
   if (typeof token !== 'string' || token.length > MAX_TOKEN || !/^[A-Za-z0-9_.-]+$/.test(token)) {
-    return { error: 'This saved view is not a Zeta Lab state token.' };
+    return { get error() { return t('tokenInvalid'); } };
   }
   const dot = token.indexOf('.');
   const version = dot < 0 ? '' : token.slice(0, dot);
   if (version !== TOKEN_VERSION) {
-    return { error: `This saved view has format version “${version.slice(0, 8)}”, which this page cannot read; nothing was changed.` };
+    return { get error() { return t('tokenVersion', { version: version.slice(0, 8) }); } };
   }
   try {
     const query = new TextDecoder('utf-8', { fatal: true }).decode(fromBase64Url(token.slice(dot + 1)));
     return { query };
   } catch {
-    return { error: 'This saved view is damaged and cannot be read; nothing was changed.' };
+    return { get error() { return t('tokenDamaged'); } };
   }
 }
 
@@ -121,7 +123,7 @@ export function expandSearch(search) {
   const dec = decodeToken(token.trim());
   url.delete('state');
   if (dec.error) {
-    loaded.notice = dec.error;
+    loaded.notice = dec; // its error is read (in the page's language) when shown
     return '?' + url.toString();
   }
   const q = new URLSearchParams(dec.query);
@@ -132,15 +134,18 @@ export function expandSearch(search) {
 
 /** The notice for a token with missing or unknown keys, given the demo's parameter keys. */
 export function tokenNotice(paramKeys) {
-  if (loaded.notice) return loaded.notice;
+  if (loaded.notice) return loaded.notice.error;
   if (!loaded.keys) return null;
   const known = new Set(['demo', 'state', 'origin', ...VIEW_KEYS, ...ANIM_KEYS, ...paramKeys]);
   const missing = paramKeys.filter((k) => !loaded.keys.has(k));
   const unknown = [...loaded.keys].filter((k) => !known.has(k) && !isOverrideKey(k));
-  const parts = [];
-  if (missing.length) parts.push(`${missing.join(', ')} ${missing.length === 1 ? 'is' : 'are'} not in it and start${missing.length === 1 ? 's' : ''} at the default`);
-  if (unknown.length) parts.push(`${unknown.slice(0, 8).join(', ')} ${unknown.length === 1 ? 'is' : 'are'} not known here and ${unknown.length === 1 ? 'was' : 'were'} ignored`);
-  return parts.length ? `This saved view comes from another version of Zeta Lab: ${parts.join('; ')}.` : null;
+  const keys = (list) => list.slice(0, 8).join(', ');
+  if (missing.length && unknown.length) {
+    return t('tokenOtherVersionBoth', { missing: keys(missing), n: missing.length, unknown: keys(unknown), m: unknown.length });
+  }
+  if (missing.length) return t('tokenOtherVersionMissing', { missing: keys(missing), n: missing.length });
+  if (unknown.length) return t('tokenOtherVersionUnknown', { unknown: keys(unknown), m: unknown.length });
+  return null;
 }
 
 /** The token inside a pasted link or text (`…?state=1.xxx…` or a bare token), or null. */

@@ -151,7 +151,9 @@ function buildReadouts(spec) {
 /** One plot: canvas with its overlay and read-out tip, caption (its text alternative), exports. */
 function buildFigure(p, exports) {
   const fig = el('figure', { class: 'plot', 'data-plot-wrap': p.key });
-  const stage = el('div', { class: 'plot-stage' });
+  // Plots read left to right in every language (as printed maths does): their text is
+  // drawn with the canvas's direction, so the stage keeps `ltr` on a right-to-left page.
+  const stage = el('div', { class: 'plot-stage', dir: 'ltr' });
   const canvas = el('canvas', { 'data-plot': p.key, role: 'img', 'aria-label': p.title, tabindex: '0' });
   canvas.style.aspectRatio = String(p.aspect);
   const overlay = el('canvas', { class: 'overlay', 'aria-hidden': 'true' });
@@ -242,7 +244,7 @@ export function buildDemo(root, spec) {
 
 function buildAnimation(parent) {
   const fig = el('figure', { class: 'schematic' });
-  const canvas = el('canvas', { 'data-plot': 'schematic', role: 'img', 'aria-label': t('schematic') });
+  const canvas = el('canvas', { 'data-plot': 'schematic', role: 'img', 'aria-label': t('schematic'), dir: 'ltr' });
   const bar = el('div', { class: 'anim-bar' });
   const play = el('button', { type: 'button', class: 'play', 'aria-pressed': 'false' }, t('play'));
   const scrub = el('input', { type: 'range', min: '0', max: '1000', step: '1', value: '0', 'aria-label': t('animTime') });

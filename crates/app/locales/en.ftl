@@ -59,6 +59,75 @@ page-link = Link
 page-embed-code = Embed code
 page-preview = Preview of the embedded demo
 page-close = Close
+page-language = Language
+page-language-nav = Language
+page-demos-nav = Demos
+page-no-script = Zeta Lab needs JavaScript and WebAssembly.
+page-catalogue-failed = The { $name } catalogue could not be loaded ({ $text }); the page is in English.
+page-provisional = { $value } (provisional)
+page-readouts-shown = Readouts shown
+page-state-token = State token
+page-theme-auto = auto
+page-theme-light = light
+page-theme-dark = dark
+page-theme-projector = projector (high contrast)
+page-share-visitor-language = visitor’s language
+page-share-language = {" "}Language{" "}
+page-share-fullscreen = {" "}Full-screen button
+page-share-ranges = Slider ranges and steps (leave empty to keep the declared ones)
+page-share-col-slider = slider
+page-share-col-from = from
+page-share-col-to = to
+page-share-col-step = step
+page-share-range-from = { $label }: min
+page-share-range-to = { $label }: max
+page-share-range-step = { $label }: step
+page-share-predict-task = Prediction task
+page-share-none = none
+page-share-predict = Students predict{" "}
+page-share-predict-within = {" "}within{" "}
+page-share-presets = Lecturer presets (carried in the link)
+page-share-preset-example = e.g. Light damping
+page-share-preset-add = Add the values on screen
+page-share-preset-format = Format: name:key=value,key=value; next name:…
+page-share-preset-default = Preset { $n }
+page-share-preset-name = Name{" "}
+page-share-preset-list = Presets{" "}
+page-lecturer-presets = Lecturer presets
+page-full-screen = Full screen
+page-exit-full-screen = Exit full screen
+page-no-stamp = This file carries no Zeta Lab view (only PNG, SVG and CSV exported by Zeta Lab do).
+page-token-invalid = This saved view is not a Zeta Lab state token.
+page-token-version = This saved view has format version “{ $version }”, which this page cannot read; nothing was changed.
+page-token-damaged = This saved view is damaged and cannot be read; nothing was changed.
+page-token-no-demo = This saved view names no demo this page has (“{ $demo }”); nothing was changed.
+page-token-other-version-missing = This saved view comes from another version of Zeta Lab: { $missing } { $n ->
+        [one] is not in it and starts
+       *[other] are not in it and start
+    } at the default.
+page-token-other-version-unknown = This saved view comes from another version of Zeta Lab: { $unknown } { $m ->
+        [one] is not known here and was
+       *[other] are not known here and were
+    } ignored.
+page-token-other-version-both = This saved view comes from another version of Zeta Lab: { $missing } { $n ->
+        [one] is not in it and starts
+       *[other] are not in it and start
+    } at the default; { $unknown } { $m ->
+        [one] is not known here and was
+       *[other] are not known here and were
+    } ignored.
+page-predict-title = Predict first
+page-predict-hint = The plots and the { $label } stay hidden until you predict it. Type your prediction and press Enter.
+page-predict-field = Your prediction of the { $label }
+page-predict-field-unit = Your prediction of the { $label } ({ $unit })
+page-predict-reveal = Reveal
+page-predict-nan = “{ $text }” is not a number. Type a number such as { $example }.
+page-predict-undefined = The { $label } is not defined for these parameters; change them and try again.
+page-predict-result-inside = You predicted { $p }; the { $label } is { $v }: { $how }, within the tolerance { $tol }.
+page-predict-result-outside = You predicted { $p }; the { $label } is { $v }: { $how }, outside the tolerance { $tol }.
+page-predict-exact = exactly right
+page-predict-high = { $d } too high
+page-predict-low = { $d } too low
 
 ## Plots
 

@@ -51,6 +51,75 @@ page-link = Enlace
 page-embed-code = Código para insertar
 page-preview = Vista previa de la demostración insertada
 page-close = Cerrar
+page-language = Idioma
+page-language-nav = Idioma
+page-demos-nav = Demostraciones
+page-no-script = Zeta Lab necesita JavaScript y WebAssembly.
+page-catalogue-failed = No se pudo cargar el catálogo de { $name } ({ $text }); la página se muestra en inglés.
+page-provisional = { $value } (provisional)
+page-readouts-shown = Resultados visibles
+page-state-token = Código de estado
+page-theme-auto = automático
+page-theme-light = claro
+page-theme-dark = oscuro
+page-theme-projector = proyector (alto contraste)
+page-share-visitor-language = idioma del visitante
+page-share-language = {" "}Idioma{" "}
+page-share-fullscreen = {" "}Botón de pantalla completa
+page-share-ranges = Rangos y pasos de los deslizadores (vacío = los declarados)
+page-share-col-slider = deslizador
+page-share-col-from = desde
+page-share-col-to = hasta
+page-share-col-step = paso
+page-share-range-from = { $label }: mínimo
+page-share-range-to = { $label }: máximo
+page-share-range-step = { $label }: paso
+page-share-predict-task = Tarea de predicción
+page-share-none = ninguna
+page-share-predict = Los estudiantes predicen{" "}
+page-share-predict-within = {" "}con tolerancia{" "}
+page-share-presets = Ajustes del docente (incluidos en el enlace)
+page-share-preset-example = p. ej. Amortiguamiento ligero
+page-share-preset-add = Añadir los valores en pantalla
+page-share-preset-format = Formato: nombre:clave=valor,clave=valor; otro nombre:…
+page-share-preset-default = Ajuste { $n }
+page-share-preset-name = Nombre{" "}
+page-share-preset-list = Ajustes{" "}
+page-lecturer-presets = Ajustes del docente
+page-full-screen = Pantalla completa
+page-exit-full-screen = Salir de pantalla completa
+page-no-stamp = Este archivo no contiene ninguna vista de Zeta Lab (solo la llevan los PNG, SVG y CSV exportados por Zeta Lab).
+page-token-invalid = Esta vista guardada no es un código de estado de Zeta Lab.
+page-token-version = Esta vista guardada tiene la versión de formato «{ $version }», que esta página no puede leer; no se cambió nada.
+page-token-damaged = Esta vista guardada está dañada y no se puede leer; no se cambió nada.
+page-token-no-demo = Esta vista guardada nombra una demostración que esta página no tiene («{ $demo }»); no se cambió nada.
+page-token-other-version-missing = Esta vista guardada procede de otra versión de Zeta Lab: { $n ->
+        [one] { $missing } no figura en ella y toma el valor por defecto.
+       *[other] { $missing } no figuran en ella y toman el valor por defecto.
+    }
+page-token-other-version-unknown = Esta vista guardada procede de otra versión de Zeta Lab: { $m ->
+        [one] { $unknown } no se conoce aquí y se ignoró.
+       *[other] { $unknown } no se conocen aquí y se ignoraron.
+    }
+page-token-other-version-both = Esta vista guardada procede de otra versión de Zeta Lab: { $n ->
+        [one] { $missing } no figura en ella y toma el valor por defecto
+       *[other] { $missing } no figuran en ella y toman el valor por defecto
+    }; { $m ->
+        [one] { $unknown } no se conoce aquí y se ignoró.
+       *[other] { $unknown } no se conocen aquí y se ignoraron.
+    }
+page-predict-title = Primero, prediga
+page-predict-hint = Las gráficas y «{ $label }» quedan ocultas hasta que haga su predicción. Escríbala y pulse Intro.
+page-predict-field = Su predicción de «{ $label }»
+page-predict-field-unit = Su predicción de «{ $label }» ({ $unit })
+page-predict-reveal = Mostrar
+page-predict-nan = «{ $text }» no es un número. Escriba un número como { $example }.
+page-predict-undefined = «{ $label }» no está definido con estos parámetros; cámbielos y vuelva a intentarlo.
+page-predict-result-inside = Predijo { $p }; «{ $label }» vale { $v }: { $how }, dentro de la tolerancia { $tol }.
+page-predict-result-outside = Predijo { $p }; «{ $label }» vale { $v }: { $how }, fuera de la tolerancia { $tol }.
+page-predict-exact = exacto
+page-predict-high = { $d } por encima
+page-predict-low = { $d } por debajo
 
 ## Gráficas
 

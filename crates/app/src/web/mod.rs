@@ -37,6 +37,8 @@ struct LanguageEntry {
     tag: &'static str,
     name: &'static str,
     dir: crate::i18n::Dir,
+    /// The locale whose CLDR rules format numbers (`Intl`): a pseudo-locale's base.
+    rules: &'static str,
     pseudo: bool,
     /// The catalogue file to fetch (absent: built in).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -50,13 +52,14 @@ fn entry(l: &'static crate::i18n::Locale) -> LanguageEntry {
         tag: l.tag,
         name: l.name,
         dir: l.dir,
+        rules: l.rules,
         pseudo: l.is_pseudo(),
         file: l.file(),
         loaded: crate::i18n::is_loaded(l),
     }
 }
 
-/// `[{tag, name, dir, pseudo, file?, loaded}]` of every interface language.
+/// `[{tag, name, dir, rules, pseudo, file?, loaded}]` of every interface language.
 #[wasm_bindgen]
 pub fn languages() -> Result<JsValue, JsError> {
     to_js(&crate::i18n::LOCALES.iter().map(entry).collect::<Vec<_>>())
