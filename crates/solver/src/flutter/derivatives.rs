@@ -27,11 +27,12 @@
 //! digits, and the solver tests check that the closed form reproduces every node.
 //!
 //! **1940 H-section: a teaching approximation, not values read from a publication.** The
-//! published wind-tunnel curves for the Tacoma H-section (Scanlan & Tomko, 1971, J. Eng.
-//! Mech. Div. ASCE 97(EM6); reproduced by Billah & Scanlan, 1991, Am. J. Phys. 59(2)
-//! 118–124) could not be consulted when these tables were written (searched again for
-//! this version: the stored copies of both papers and of the later re-measurements reach
-//! only their first pages), so no value below is attributed to a figure or page of them.
+//! published wind-tunnel curves for the Tacoma H-section (Scanlan & Tomko, "Airfoil and
+//! bridge deck flutter derivatives", J. Eng. Mech. Div. ASCE 97(EM6), 1971, 1717–1737;
+//! reproduced by Billah & Scanlan, Am. J. Phys. 59(2), 1991, 118–124) could not be
+//! consulted when this table was written (searched again for this version: the copies
+//! within reach held only the papers' first pages, and no open data set or code tabulates
+//! the values), so no value below is attributed to a figure or page of them.
 //! What the table does take from that literature is the *shape* the papers describe: for
 //! the bluff H-section, `A₂*` is slightly negative at low reduced velocity and changes
 //! sign, turning positive and growing, as `U/(fB)` rises — which is why the deck fluttered
