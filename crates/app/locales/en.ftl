@@ -467,7 +467,7 @@ resonance-beats-dies-out = none (the free motion dies out first)
 
 flutter-no-oscillation = no oscillation
 flutter-series-h-section = 1940 H-section (teaching approx.)
-flutter-series-box = streamlined box (teaching approx.)
+flutter-series-box = streamlined box (flat plate, Theodorsen)
 flutter-series-simplest = A₂* the simplest picture amounts to
 flutter-series-simplest-line = simplest picture ζ_s − g·U
 flutter-axis-reduced-velocity = reduced velocity U/(f·B) = 2π/K
@@ -480,10 +480,10 @@ flutter-lower-pole = lower pole
 flutter-amplitude = amplitude ±a(t)
 flutter-limit-cycle = limit cycle ±{ $amplitude }
 flutter-describe-derivative = A₂* against reduced velocity for { $model ->
-        [h] the 1940 H-section
-        [box] the streamlined box
-       *[simplest] the simplest picture
-    } (teaching approximation, not measured values): the twist grows where A₂* rises above 4Iζ_s/(ρB⁴).
+        [h] the 1940 H-section (teaching approximation, not measured values)
+        [box] the streamlined box, idealised as a thin flat plate (Theodorsen's exact potential-flow values)
+       *[simplest] the simplest picture (the A₂* its straight line in U amounts to)
+    }: the twist grows where A₂* rises above 4Iζ_s/(ρB⁴).
 flutter-describe-derivative-now = { $description } At U = { $speed } (K = { $k }, U/(fB) = { $reduced_velocity }) A₂* = { $a2 }, { $side ->
         [above] above
        *[below] below
@@ -1112,7 +1112,7 @@ integrators-table-dp45-5 = stable: rejected steps shrink h
 ### flutter
 
 flutter-title = Flutter: the Tacoma Narrows bridge
-flutter-summary = A steady wind can feed a twisting bridge deck energy through its own motion. Scanlan wrote the wind's moment on a twisting deck with flutter derivatives measured in wind tunnels: A₂* multiplies the twist rate (a damping term) and A₃* the twist (a stiffness term), both functions of the reduced frequency K = Bω/U. The deck's damping ratio becomes ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I): for the bluff H-section of the 1940 Tacoma deck A₂* changes sign as the wind rises, and once it passes the threshold 4Iζ_s/(ρB⁴) any small twist grows at the deck's own torsional frequency (near 0.2 Hz) — flutter, not resonance: a steady wind has no frequency to match, the motion makes its own forcing. The frequency is found by iteration at each wind speed, since K depends on it. Linear theory lets the twist grow for ever; here the wind's damping term is assumed to halve at a twist θ_s, which bounds the motion in a large limit cycle, as on 7 November 1940, when in winds of about 42 mph the twist grew within the hour until the deck tore apart. Teaching approximations, stated as such: A₂* and A₃* are smooth curves shaped like the published H-section and airfoil-like results (Scanlan & Tomko 1971; Billah & Scanlan 1991), not values read from them; I, ζ_s and θ_s are assumed. A streamlined box, whose A₂* stays negative, never flutters in this range. The simplest picture ζ_eff = ζ_s − g·U is kept for comparison.
+flutter-summary = A steady wind can feed a twisting bridge deck energy through its own motion. Scanlan wrote the wind's moment on a twisting deck with flutter derivatives measured in wind tunnels: A₂* multiplies the twist rate (a damping term) and A₃* the twist (a stiffness term), both functions of the reduced frequency K = Bω/U. The deck's damping ratio becomes ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I): for the bluff H-section of the 1940 Tacoma deck A₂* changes sign as the wind rises, and once it passes the threshold 4Iζ_s/(ρB⁴) any small twist grows at the deck's own torsional frequency (near 0.2 Hz) — flutter, not resonance: a steady wind has no frequency to match, the motion makes its own forcing. The frequency is found by iteration at each wind speed, since K depends on it. Linear theory lets the twist grow for ever; here the wind's damping term is assumed to halve at a twist θ_s, which bounds the motion in a large limit cycle, as on 7 November 1940, when in winds of about 42 mph the twist grew within the hour until the deck tore apart. Stated as such: the H-section's A₂* and A₃* are a teaching approximation, smooth curves shaped like the published wind-tunnel results (Scanlan & Tomko 1971; Billah & Scanlan 1991), not values read from them; I, ζ_s and θ_s are assumed. The streamlined box is idealised as a thin flat plate, whose A₂* and A₃* are exact in potential flow (Theodorsen 1935): its A₂* stays negative, so it never flutters in this range. The simplest picture ζ_eff = ζ_s − g·U is kept for comparison.
 flutter-param-U = wind speed
 flutter-param-model = model of the wind's moment
 flutter-param-model-scanlan = flutter derivatives (Scanlan)

@@ -459,7 +459,7 @@ resonance-beats-dies-out = ninguno (el movimiento libre se extingue antes)
 
 flutter-no-oscillation = sin oscilación
 flutter-series-h-section = sección en H de 1940 (aprox. didáctica)
-flutter-series-box = cajón aerodinámico (aprox. didáctica)
+flutter-series-box = cajón aerodinámico (placa plana, Theodorsen)
 flutter-series-simplest = A₂* equivalente a la imagen más simple
 flutter-series-simplest-line = imagen más simple ζ_s − g·U
 flutter-axis-reduced-velocity = velocidad reducida U/(f·B) = 2π/K
@@ -472,10 +472,10 @@ flutter-lower-pole = polo inferior
 flutter-amplitude = amplitud ±a(t)
 flutter-limit-cycle = ciclo límite ±{ $amplitude }
 flutter-describe-derivative = A₂* frente a la velocidad reducida para { $model ->
-        [h] la sección en H de 1940
-        [box] el cajón aerodinámico
-       *[simplest] la imagen más simple
-    } (aproximación didáctica, no valores medidos): el giro crece donde A₂* supera 4Iζ_s/(ρB⁴).
+        [h] la sección en H de 1940 (aproximación didáctica, no valores medidos)
+        [box] el cajón aerodinámico, idealizado como una placa plana delgada (valores exactos de Theodorsen en flujo potencial)
+       *[simplest] la imagen más simple (el A₂* al que equivale su recta en U)
+    }: el giro crece donde A₂* supera 4Iζ_s/(ρB⁴).
 flutter-describe-derivative-now = { $description } Con U = { $speed } (K = { $k }, U/(fB) = { $reduced_velocity }), A₂* = { $a2 }, { $side ->
         [above] por encima del
        *[below] por debajo del
@@ -1107,7 +1107,7 @@ integrators-table-dp45-5 = estable: los pasos rechazados reducen h
 ### flutter
 
 flutter-title = Flameo: el puente de Tacoma Narrows
-flutter-summary = Un viento constante puede aportar energía a un tablero de puente que gira a través de su propio movimiento. Scanlan escribió el momento del viento sobre un tablero que gira con derivadas de flameo medidas en túneles de viento: A₂* multiplica la velocidad de giro (un término de amortiguamiento) y A₃* el giro (un término de rigidez), ambas funciones de la frecuencia reducida K = Bω/U. El coeficiente de amortiguamiento del tablero pasa a ser ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I): en la sección en H, poco aerodinámica, del tablero de Tacoma de 1940 A₂* cambia de signo al aumentar el viento, y en cuanto supera el umbral 4Iζ_s/(ρB⁴) cualquier pequeño giro crece a la frecuencia de torsión propia del tablero (cerca de 0,2 Hz): flameo, no resonancia; un viento constante no tiene ninguna frecuencia con la que coincidir, el movimiento crea su propia excitación. La frecuencia se obtiene por iteración a cada velocidad del viento, ya que K depende de ella. La teoría lineal deja crecer el giro sin fin; aquí se supone que el término de amortiguamiento del viento se reduce a la mitad con un giro θ_s, lo que acota el movimiento en un gran ciclo límite, como el 7 de noviembre de 1940, cuando con vientos de unas 42 mph el giro creció en menos de una hora hasta que el tablero se rompió. Aproximaciones didácticas, declaradas como tales: A₂* y A₃* son curvas suaves con la forma de los resultados publicados para la sección en H y para perfiles aerodinámicos (Scanlan y Tomko 1971; Billah y Scanlan 1991), no valores leídos de ellos; I, ζ_s y θ_s son supuestos. Un cajón aerodinámico, cuyo A₂* sigue siendo negativo, nunca entra en flameo en este intervalo. La imagen más simple ζ_eff = ζ_s − g·U se mantiene para comparar.
+flutter-summary = Un viento constante puede aportar energía a un tablero de puente que gira a través de su propio movimiento. Scanlan escribió el momento del viento sobre un tablero que gira con derivadas de flameo medidas en túneles de viento: A₂* multiplica la velocidad de giro (un término de amortiguamiento) y A₃* el giro (un término de rigidez), ambas funciones de la frecuencia reducida K = Bω/U. El coeficiente de amortiguamiento del tablero pasa a ser ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I): en la sección en H, poco aerodinámica, del tablero de Tacoma de 1940 A₂* cambia de signo al aumentar el viento, y en cuanto supera el umbral 4Iζ_s/(ρB⁴) cualquier pequeño giro crece a la frecuencia de torsión propia del tablero (cerca de 0,2 Hz): flameo, no resonancia; un viento constante no tiene ninguna frecuencia con la que coincidir, el movimiento crea su propia excitación. La frecuencia se obtiene por iteración a cada velocidad del viento, ya que K depende de ella. La teoría lineal deja crecer el giro sin fin; aquí se supone que el término de amortiguamiento del viento se reduce a la mitad con un giro θ_s, lo que acota el movimiento en un gran ciclo límite, como el 7 de noviembre de 1940, cuando con vientos de unas 42 mph el giro creció en menos de una hora hasta que el tablero se rompió. Declarado como tal: A₂* y A₃* de la sección en H son una aproximación didáctica, curvas suaves con la forma de los resultados publicados de túnel de viento (Scanlan y Tomko 1971; Billah y Scanlan 1991), no valores leídos de ellos; I, ζ_s y θ_s son supuestos. El cajón aerodinámico se idealiza como una placa plana delgada, cuyos A₂* y A₃* son exactos en flujo potencial (Theodorsen 1935): su A₂* sigue siendo negativo, así que nunca entra en flameo en este intervalo. La imagen más simple ζ_eff = ζ_s − g·U se mantiene para comparar.
 flutter-param-U = velocidad del viento
 flutter-param-model = modelo del momento del viento
 flutter-param-model-scanlan = derivadas de flameo (Scanlan)

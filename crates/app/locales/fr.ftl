@@ -715,7 +715,7 @@ resonance-preset-5 = Isolation, r = 3
 
 flutter-no-oscillation = pas d'oscillation
 flutter-series-h-section = section en H de 1940 (approx. pédagogique)
-flutter-series-box = caisson profilé (approx. pédagogique)
+flutter-series-box = caisson profilé (plaque plane, Theodorsen)
 flutter-series-simplest = A₂* équivalent au modèle le plus simple
 flutter-series-simplest-line = modèle le plus simple ζ_s − g·U
 flutter-axis-reduced-velocity = vitesse réduite U/(f·B) = 2π/K
@@ -728,10 +728,10 @@ flutter-lower-pole = pôle inférieur
 flutter-amplitude = amplitude ±a(t)
 flutter-limit-cycle = cycle limite ±{ $amplitude }
 flutter-describe-derivative = A₂* en fonction de la vitesse réduite pour { $model ->
-        [h] la section en H de 1940
-        [box] le caisson profilé
-       *[simplest] le modèle le plus simple
-    } (approximation pédagogique, pas des valeurs mesurées) : la rotation croît là où A₂* dépasse 4Iζ_s/(ρB⁴).
+        [h] la section en H de 1940 (approximation pédagogique, pas des valeurs mesurées)
+        [box] le caisson profilé, idéalisé en plaque plane mince (valeurs exactes de Theodorsen en écoulement potentiel)
+       *[simplest] le modèle le plus simple (l'A₂* auquel équivaut sa droite en U)
+    } : la rotation croît là où A₂* dépasse 4Iζ_s/(ρB⁴).
 flutter-describe-derivative-now = { $description } À U = { $speed } (K = { $k }, U/(fB) = { $reduced_velocity }), A₂* = { $a2 }, { $side ->
         [above] au-dessus du
        *[below] en dessous du
@@ -777,7 +777,7 @@ flutter-drawn-note = ({ $drawn })
 flutter-schematic = Section du tablier du pont à t = { $time } : rotation de { $twist } ({ $drawn }), vent de { $wind } venant de la gauche.
 flutter-wind = vent U = { $speed }
 flutter-title = Flottement : le pont de Tacoma Narrows
-flutter-summary = Un vent constant peut fournir de l'énergie à un tablier de pont en torsion par l'intermédiaire de son propre mouvement. Scanlan a écrit le moment du vent sur un tablier en torsion à l'aide de dérivées de flottement mesurées en soufflerie : A₂* multiplie la vitesse de rotation (un terme d'amortissement) et A₃* la rotation (un terme de raideur), toutes deux fonctions de la fréquence réduite K = Bω/U. Le taux d'amortissement du tablier devient ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I) : pour la section en H non profilée du tablier de Tacoma de 1940, A₂* change de signe quand le vent forcit, et dès qu'il dépasse le seuil 4Iζ_s/(ρB⁴), toute petite rotation croît à la fréquence de torsion propre du tablier (près de 0,2 Hz) — c'est du flottement, pas de la résonance : un vent constant n'a aucune fréquence à laquelle s'accorder, le mouvement crée sa propre excitation. La fréquence est obtenue par itération à chaque vitesse de vent, puisque K en dépend. La théorie linéaire laisse la rotation croître indéfiniment ; ici, on suppose que le terme d'amortissement du vent est divisé par deux pour une rotation θ_s, ce qui borne le mouvement sur un grand cycle limite, comme le 7 novembre 1940, quand, par un vent d'environ 42 mph, la rotation a crû en moins d'une heure jusqu'à la rupture du tablier. Approximations pédagogiques, présentées comme telles : A₂* et A₃* sont des courbes lisses ayant l'allure des résultats publiés pour la section en H et pour des sections proches d'un profil d'aile (Scanlan et Tomko 1971 ; Billah et Scanlan 1991), et non des valeurs relevées dans ces travaux ; I, ζ_s et θ_s sont supposés. Un caisson profilé, dont l'A₂* reste négatif, n'entre jamais en flottement dans cette plage. Le modèle le plus simple ζ_eff = ζ_s − g·U est conservé pour comparaison.
+flutter-summary = Un vent constant peut fournir de l'énergie à un tablier de pont en torsion par l'intermédiaire de son propre mouvement. Scanlan a écrit le moment du vent sur un tablier en torsion à l'aide de dérivées de flottement mesurées en soufflerie : A₂* multiplie la vitesse de rotation (un terme d'amortissement) et A₃* la rotation (un terme de raideur), toutes deux fonctions de la fréquence réduite K = Bω/U. Le taux d'amortissement du tablier devient ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I) : pour la section en H non profilée du tablier de Tacoma de 1940, A₂* change de signe quand le vent forcit, et dès qu'il dépasse le seuil 4Iζ_s/(ρB⁴), toute petite rotation croît à la fréquence de torsion propre du tablier (près de 0,2 Hz) — c'est du flottement, pas de la résonance : un vent constant n'a aucune fréquence à laquelle s'accorder, le mouvement crée sa propre excitation. La fréquence est obtenue par itération à chaque vitesse de vent, puisque K en dépend. La théorie linéaire laisse la rotation croître indéfiniment ; ici, on suppose que le terme d'amortissement du vent est divisé par deux pour une rotation θ_s, ce qui borne le mouvement sur un grand cycle limite, comme le 7 novembre 1940, quand, par un vent d'environ 42 mph, la rotation a crû en moins d'une heure jusqu'à la rupture du tablier. Présenté comme tel : les A₂* et A₃* de la section en H sont une approximation pédagogique, des courbes lisses ayant l'allure des résultats publiés en soufflerie (Scanlan et Tomko 1971 ; Billah et Scanlan 1991), et non des valeurs relevées dans ces travaux ; I, ζ_s et θ_s sont supposés. Le caisson profilé est idéalisé en plaque plane mince, dont les A₂* et A₃* sont exacts en écoulement potentiel (Theodorsen 1935) : son A₂* reste négatif, il n'entre donc jamais en flottement dans cette plage. Le modèle le plus simple ζ_eff = ζ_s − g·U est conservé pour comparaison.
 flutter-param-U = vitesse du vent
 flutter-param-model = modèle du moment du vent
 flutter-param-model-scanlan = dérivées de flottement (Scanlan)

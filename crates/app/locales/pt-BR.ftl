@@ -715,7 +715,7 @@ resonance-preset-5 = Isolamento, r = 3
 
 flutter-no-oscillation = sem oscilação
 flutter-series-h-section = seção em H de 1940 (aprox. didática)
-flutter-series-box = caixão aerodinâmico (aprox. didática)
+flutter-series-box = caixão aerodinâmico (placa plana, Theodorsen)
 flutter-series-simplest = A₂* equivalente ao modelo mais simples
 flutter-series-simplest-line = modelo mais simples ζ_s − g·U
 flutter-axis-reduced-velocity = velocidade reduzida U/(f·B) = 2π/K
@@ -728,10 +728,10 @@ flutter-lower-pole = polo inferior
 flutter-amplitude = amplitude ±a(t)
 flutter-limit-cycle = ciclo limite ±{ $amplitude }
 flutter-describe-derivative = A₂* em função da velocidade reduzida para { $model ->
-        [h] a seção em H de 1940
-        [box] o caixão aerodinâmico
-       *[simplest] o modelo mais simples
-    } (aproximação didática, não valores medidos): a torção cresce onde A₂* ultrapassa 4Iζ_s/(ρB⁴).
+        [h] a seção em H de 1940 (aproximação didática, não valores medidos)
+        [box] o caixão aerodinâmico, idealizado como uma placa plana delgada (valores exatos de Theodorsen em escoamento potencial)
+       *[simplest] o modelo mais simples (o A₂* a que equivale sua reta em U)
+    }: a torção cresce onde A₂* ultrapassa 4Iζ_s/(ρB⁴).
 flutter-describe-derivative-now = { $description } Com U = { $speed } (K = { $k }, U/(fB) = { $reduced_velocity }), A₂* = { $a2 }, { $side ->
         [above] acima do
        *[below] abaixo do
@@ -777,7 +777,7 @@ flutter-drawn-note = ({ $drawn })
 flutter-schematic = Seção transversal do tabuleiro da ponte em t = { $time }: torcida { $twist } ({ $drawn }), vento de { $wind } vindo da esquerda.
 flutter-wind = vento U = { $speed }
 flutter-title = Flutter: a ponte de Tacoma Narrows
-flutter-summary = Um vento constante pode fornecer energia a um tabuleiro de ponte em torção por meio do seu próprio movimento. Scanlan escreveu o momento do vento sobre um tabuleiro em torção com derivadas de flutter medidas em túneis de vento: A₂* multiplica a velocidade de torção (um termo de amortecimento) e A₃* a torção (um termo de rigidez), ambas funções da frequência reduzida K = Bω/U. A razão de amortecimento do tabuleiro passa a ser ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I): para a seção em H, pouco aerodinâmica, do tabuleiro de Tacoma de 1940, A₂* muda de sinal à medida que o vento aumenta, e assim que ultrapassa o limiar 4Iζ_s/(ρB⁴) qualquer pequena torção cresce na frequência de torção própria do tabuleiro (perto de 0,2 Hz) — flutter (drapejamento), não ressonância: um vento constante não tem frequência a ser sintonizada, o próprio movimento gera sua excitação. A frequência é obtida por iteração em cada velocidade do vento, já que K depende dela. A teoria linear deixa a torção crescer indefinidamente; aqui se supõe que o termo de amortecimento do vento cai à metade com uma torção θ_s, o que limita o movimento a um grande ciclo limite, como em 7 de novembro de 1940, quando, com ventos de cerca de 42 mph, a torção cresceu em menos de uma hora até o tabuleiro se romper. Aproximações didáticas, declaradas como tais: A₂* e A₃* são curvas suaves com a forma dos resultados publicados para a seção em H e para seções semelhantes a aerofólios (Scanlan e Tomko 1971; Billah e Scanlan 1991), e não valores lidos deles; I, ζ_s e θ_s são supostos. Um caixão aerodinâmico, cujo A₂* permanece negativo, nunca entra em flutter nessa faixa. O modelo mais simples ζ_eff = ζ_s − g·U é mantido para comparação.
+flutter-summary = Um vento constante pode fornecer energia a um tabuleiro de ponte em torção por meio do seu próprio movimento. Scanlan escreveu o momento do vento sobre um tabuleiro em torção com derivadas de flutter medidas em túneis de vento: A₂* multiplica a velocidade de torção (um termo de amortecimento) e A₃* a torção (um termo de rigidez), ambas funções da frequência reduzida K = Bω/U. A razão de amortecimento do tabuleiro passa a ser ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I): para a seção em H, pouco aerodinâmica, do tabuleiro de Tacoma de 1940, A₂* muda de sinal à medida que o vento aumenta, e assim que ultrapassa o limiar 4Iζ_s/(ρB⁴) qualquer pequena torção cresce na frequência de torção própria do tabuleiro (perto de 0,2 Hz) — flutter (drapejamento), não ressonância: um vento constante não tem frequência a ser sintonizada, o próprio movimento gera sua excitação. A frequência é obtida por iteração em cada velocidade do vento, já que K depende dela. A teoria linear deixa a torção crescer indefinidamente; aqui se supõe que o termo de amortecimento do vento cai à metade com uma torção θ_s, o que limita o movimento a um grande ciclo limite, como em 7 de novembro de 1940, quando, com ventos de cerca de 42 mph, a torção cresceu em menos de uma hora até o tabuleiro se romper. Declarado como tal: A₂* e A₃* da seção em H são uma aproximação didática, curvas suaves com a forma dos resultados publicados de túnel de vento (Scanlan e Tomko 1971; Billah e Scanlan 1991), e não valores lidos deles; I, ζ_s e θ_s são supostos. O caixão aerodinâmico é idealizado como uma placa plana delgada, cujos A₂* e A₃* são exatos em escoamento potencial (Theodorsen 1935): seu A₂* permanece negativo, portanto nunca entra em flutter nessa faixa. O modelo mais simples ζ_eff = ζ_s − g·U é mantido para comparação.
 flutter-param-U = velocidade do vento
 flutter-param-model = modelo do momento do vento
 flutter-param-model-scanlan = derivadas de flutter (Scanlan)

@@ -715,7 +715,7 @@ resonance-preset-5 = 隔振，r = 3
 
 flutter-no-oscillation = 无振荡
 flutter-series-h-section = 1940 年 H 形截面（教学近似）
-flutter-series-box = 流线型箱梁（教学近似）
+flutter-series-box = 流线型箱梁（薄平板，Theodorsen）
 flutter-series-simplest = 最简模型等效的 A₂*
 flutter-series-simplest-line = 最简模型 ζ_s − g·U
 flutter-axis-reduced-velocity = 折减风速 U/(f·B) = 2π/K
@@ -728,10 +728,10 @@ flutter-lower-pole = 下极点
 flutter-amplitude = 振幅 ±a(t)
 flutter-limit-cycle = 极限环 ±{ $amplitude }
 flutter-describe-derivative = { $model ->
-        [h] 1940 年 H 形截面
-        [box] 流线型箱梁
-       *[simplest] 最简模型
-    }的 A₂* 随折减风速的变化（教学近似，并非实测值）：A₂* 超过 4Iζ_s/(ρB⁴) 时扭转增大。
+        [h] 1940 年 H 形截面的 A₂* 随折减风速的变化（教学近似，并非实测值）
+        [box] 流线型箱梁（理想化为薄平板，取 Theodorsen 势流精确值）的 A₂* 随折减风速的变化
+       *[simplest] 最简模型的 A₂* 随折减风速的变化（即其关于 U 的直线所相当的 A₂*）
+    }：A₂* 超过 4Iζ_s/(ρB⁴) 时扭转增大。
 flutter-describe-derivative-now = { $description }在 U = { $speed }（K = { $k }，U/(fB) = { $reduced_velocity }）时，A₂* = { $a2 }，{ $side ->
         [above] 高于
        *[below] 低于
@@ -777,7 +777,7 @@ flutter-drawn-note = （{ $drawn }）
 flutter-schematic = t = { $time } 时的桥面截面：扭转 { $twist }（{ $drawn }），风速 { $wind }，风从左侧吹来。
 flutter-wind = 风速 U = { $speed }
 flutter-title = 颤振：塔科马海峡大桥
-flutter-summary = 稳定的风可以通过扭转桥面自身的运动向其输入能量。Scanlan 用风洞中测得的颤振导数描述风作用在扭转桥面上的力矩：A₂* 乘以扭转角速度（阻尼项），A₃* 乘以扭转角（刚度项），二者都是折减频率 K = Bω/U 的函数。桥面的阻尼比变为 ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I)：对于 1940 年塔科马桥面的钝体 H 形截面，A₂* 随风速增大而改变符号，一旦超过阈值 4Iζ_s/(ρB⁴)，任何微小扭转都会以桥面自身的扭转频率（约 0.2 Hz）增长——这是颤振，不是共振：稳定的风没有可以匹配的频率，运动自己产生激励。由于 K 依赖于频率，在每个风速下用迭代求频率。线性理论让扭转无限增长；这里假设风的阻尼项在扭转角 θ_s 时减半，从而把运动限制在一个大的极限环内，正如 1940 年 11 月 7 日那样：在约 42 mph 的风中，扭转在一小时内不断增大，直到桥面撕裂。教学近似，特此说明：A₂* 和 A₃* 是光滑曲线，形状仿照已发表的 H 形截面和类翼型截面结果（Scanlan 与 Tomko 1971；Billah 与 Scanlan 1991），并非从中读取的数值；I、ζ_s 和 θ_s 为假设值。流线型箱梁的 A₂* 始终为负，在此范围内从不发生颤振。保留最简模型 ζ_eff = ζ_s − g·U 以作比较。
+flutter-summary = 稳定的风可以通过扭转桥面自身的运动向其输入能量。Scanlan 用风洞中测得的颤振导数描述风作用在扭转桥面上的力矩：A₂* 乘以扭转角速度（阻尼项），A₃* 乘以扭转角（刚度项），二者都是折减频率 K = Bω/U 的函数。桥面的阻尼比变为 ζ_eff ≈ ζ_s − ρB⁴A₂*(K)/(4I)：对于 1940 年塔科马桥面的钝体 H 形截面，A₂* 随风速增大而改变符号，一旦超过阈值 4Iζ_s/(ρB⁴)，任何微小扭转都会以桥面自身的扭转频率（约 0.2 Hz）增长——这是颤振，不是共振：稳定的风没有可以匹配的频率，运动自己产生激励。由于 K 依赖于频率，在每个风速下用迭代求频率。线性理论让扭转无限增长；这里假设风的阻尼项在扭转角 θ_s 时减半，从而把运动限制在一个大的极限环内，正如 1940 年 11 月 7 日那样：在约 42 mph 的风中，扭转在一小时内不断增大，直到桥面撕裂。特此说明：H 形截面的 A₂* 和 A₃* 是教学近似，即形状仿照已发表风洞结果（Scanlan 与 Tomko 1971；Billah 与 Scanlan 1991）的光滑曲线，并非从中读取的数值；I、ζ_s 和 θ_s 为假设值。流线型箱梁理想化为薄平板，其 A₂* 和 A₃* 在势流中是精确的（Theodorsen 1935）：它的 A₂* 始终为负，因此在此范围内从不发生颤振。保留最简模型 ζ_eff = ζ_s − g·U 以作比较。
 flutter-param-U = 风速
 flutter-param-model = 风致力矩模型
 flutter-param-model-scanlan = 颤振导数（Scanlan）

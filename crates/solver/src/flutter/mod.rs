@@ -2,8 +2,8 @@
 //! negative and the twisting grows (the 1940 Tacoma Narrows failure).
 //!
 //! Two models: [`scanlan::ScanlanModel`], the deck on Scanlan's flutter derivatives
-//! `A₂*(K)`, `A₃*(K)` (tabulated in [`derivatives`]) with an amplitude-dependent bound on the
-//! motion, and, here, [`FlutterModel`], the *simplest picture*:
+//! `A₂*(K)`, `A₃*(K)` (tabulated in [`derivatives`]; the streamlined box's are the flat
+//! plate's of [`theodorsen`]) with an amplitude-dependent bound on the motion, and, here, [`FlutterModel`], the *simplest picture*:
 //!
 //! Model: one torsional mode of the deck, angle `θ(t)` \[rad\],
 //!
@@ -37,6 +37,7 @@
 
 pub mod derivatives;
 pub mod scanlan;
+pub mod theodorsen;
 
 pub use derivatives::{DeckSection, DerivativeTable};
 pub use scanlan::{FlutterState, ScanlanConfig, ScanlanModel, TwistHistory};

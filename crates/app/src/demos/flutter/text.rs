@@ -22,12 +22,13 @@ pub(super) const SUMMARY: &str =
      is found by iteration at each wind speed, since K depends on it. Linear theory lets the \
      twist grow for ever; here the wind's damping term is assumed to halve at a twist θ_s, \
      which bounds the motion in a large limit cycle, as on 7 November 1940, when in winds of \
-     about 42 mph the twist grew within the hour until the deck tore apart. Teaching \
-     approximations, stated as such: A₂* and A₃* are smooth curves shaped like the published \
-     H-section and airfoil-like results (Scanlan & Tomko 1971; Billah & Scanlan 1991), not \
-     values read from them; I, ζ_s and θ_s are assumed. A streamlined box, whose A₂* stays \
-     negative, never flutters in this range. The simplest picture ζ_eff = ζ_s − g·U is kept \
-     for comparison.";
+     about 42 mph the twist grew within the hour until the deck tore apart. Stated as such: \
+     the H-section's A₂* and A₃* are a teaching approximation, smooth curves shaped like the \
+     published wind-tunnel results (Scanlan & Tomko 1971; Billah & Scanlan 1991), not values \
+     read from them; I, ζ_s and θ_s are assumed. The streamlined box is idealised as a thin \
+     flat plate, whose A₂* and A₃* are exact in potential flow (Theodorsen 1935): its A₂* \
+     stays negative, so it never flutters in this range. The simplest picture \
+     ζ_eff = ζ_s − g·U is kept for comparison.";
 
 pub(super) const EQUATION: &str = "<math display=\"block\"><mtable>\
 <mtr><mtd><mover><mi>θ</mi><mo>¨</mo></mover><mo>+</mo><mrow><mo>[</mo><mn>2</mn>\
