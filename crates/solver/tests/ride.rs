@@ -200,7 +200,6 @@ fn the_block_solves_equal_the_full_lyapunov_equation() {
             unsprung_mass: 10.0,
             k_t: 500_000.0,
             c_t: 300.0,
-            ..TwoDofConfig::default()
         },
     ];
     let other = Weighting { f5: 1.0, ..W_K };

@@ -866,6 +866,16 @@ pub const WHOLE: &[(&str, &str)] = &[
     ("storey drift u [m]", "deriva de planta u [m]"),
     ("floor mass m [kg]", "masa del forjado m [kg]"),
     ("temperature excess T₂ [K]", "exceso de temperatura T₂ [K]"),
+    // ---- design: comfort as ISO 2631-1 a_w of the two-DOF car (issue 14)
+    ("Every cell of the map is one quarter car (sprung mass m on spring k and damper c), coloured by the chosen metric: settling time and peak rebound of the free response released from rest at x₀ = 60 mm (not a step response: the band and the rebound are relative to x₀), peak transmissibility, or ride comfort as ISO 2631-1 measures it: a_w, the RMS body acceleration weighted by the W_k filter (how much a seated person feels each frequency), stationary on a random ISO 8608 road at speed V. For comfort each cell is the two-DOF car (this body on the wheel m_u and tyre k_t set below, from the Lyapunov equation): the same numbers as the quarter-car-2dof demo for the same car; the readouts also give the unweighted RMS. Dashed lines join designs of equal damping ratio ζ = c/(2√(km)). The Pareto front holds the designs no other beats in both comfort and settling. Click the map (or a point of the front) to choose a design; move the mass to see the whole map shift.",
+     "Cada celda del mapa es un cuarto de vehículo (masa suspendida m sobre un resorte k y un amortiguador c), coloreada según la métrica elegida: tiempo de establecimiento y rebote máximo de la respuesta libre al soltarlo desde el reposo en x₀ = 60 mm (no es una respuesta al escalón: la banda y el rebote son relativos a x₀), transmisibilidad máxima, o el confort de marcha tal como lo mide ISO 2631-1: a_w, la aceleración RMS de la carrocería ponderada con el filtro W_k (cuánto siente una persona sentada cada frecuencia), estacionaria en una carretera aleatoria ISO 8608 a la velocidad V. Para el confort cada celda es el cuarto de vehículo de dos grados de libertad (esta carrocería sobre la rueda m_u y el neumático k_t elegidos abajo, con la ecuación de Lyapunov): los mismos números que la demo quarter-car-2dof para el mismo vehículo; las lecturas dan también el valor RMS sin ponderar. Las líneas a trazos unen diseños de igual coeficiente de amortiguamiento ζ = c/(2√(km)). El frente de Pareto reúne los diseños que ningún otro supera a la vez en confort y en establecimiento. Haz clic en el mapa (o en un punto del frente) para elegir un diseño; mueve la masa para ver cómo se desplaza todo el mapa."),
+    ("a_w: RMS body acceleration weighted by ISO 2631-1 W_k (two-DOF car, stationary on the ISO 8608 road at speed V)", "a_w: aceleración RMS de la carrocería ponderada con W_k de ISO 2631-1 (cuarto de vehículo de dos grados de libertad, estacionaria en la carretera ISO 8608 a la velocidad V)"),
+    ("RMS body acceleration, unweighted (same car and road)", "aceleración RMS de la carrocería, sin ponderar (mismo vehículo y carretera)"),
+    ("comfort a_w (W_k-weighted RMS body acceleration)", "confort a_w (aceleración RMS de la carrocería ponderada con W_k)"),
+    ("comfort: speed", "confort: velocidad"),
+    ("comfort: tyre stiffness", "confort: rigidez del neumático"),
+    ("comfort: wheel (unsprung) mass", "confort: masa de la rueda (no suspendida)"),
+    ("No design on the grid has both a settling time and a comfort value a_w.", "Ningún diseño de la malla tiene a la vez tiempo de establecimiento y valor de confort a_w."),
 ];
 
 /// Phrases inside generated sentences.
@@ -1396,6 +1406,22 @@ pub const PHRASES: &[(&str, &str)] = &[
     ("; A has ζ = ", "; A tiene ζ = "),
     ("not reachable within the sliders: B would need ", "no alcanzable dentro de los controles: B necesitaría "),
     (", outside ", ", fuera de "),
+    // ---- design: comfort as ISO 2631-1 a_w of the two-DOF car (issue 14)
+    ("Comfort a_w (W_k-weighted RMS body acceleration)", "Confort a_w (aceleración RMS de la carrocería ponderada con W_k)"),
+    ("comfort a_w (W_k-weighted RMS body acceleration)", "confort a_w (aceleración RMS de la carrocería ponderada con W_k)"),
+    ("Comfort a_w (W_k): ", "Confort a_w (W_k): "),
+    (" of the two-DOF car (wheel ", " del cuarto de vehículo de dos grados de libertad (rueda "),
+    (" kg, tyre ", " kg, neumático "),
+    (" kN/m), stationary on ", " kN/m), estacionaria en "),
+    (", two-DOF car, stationary on ", ", cuarto de vehículo de dos grados de libertad, estacionaria en "),
+    ("an ISO 8608 class ", "una carretera ISO 8608 de clase "),
+    ("(ISO 8608 class ", "(carretera ISO 8608 de clase "),
+    (" road at ", " a "),
+    (", over k ", ", para k "),
+    ("a_w, W_k-weighted RMS body acceleration", "a_w, aceleración RMS de la carrocería ponderada con W_k"),
+    (" with a_w = ", " con a_w = "),
+    (", to the smoothest, ", ", hasta el más suave, "),
+    (" Comfort a_w: the W_k-weighted RMS body acceleration of the two-DOF car on ", " Confort a_w: la aceleración RMS de la carrocería ponderada con W_k del cuarto de vehículo de dos grados de libertad en "),
 ];
 
 #[cfg(test)]
