@@ -335,11 +335,13 @@ const NW: usize = 8;
 /// A_ccᵀ·Q_cw + Q_cw·A_ww + A_wcᵀ·Q_ww + c_cᵀ·c_w = 0          (Sylvester, 5×8, by 2-column
 ///                                                             blocks: A_ww is block lower
 ///                                                             triangular, one section each)
-/// A_ccᵀ·Q_cc + Q_cc·A_cc + S + Sᵀ + c_cᵀ·c_c = 0,  S = Q_cw·A_wc   (5×5)
+/// A_ccᵀ·Q_cc + Q_cc·A_cc + M = 0,  M = S + Sᵀ + c_cᵀ·c_c,  S = Q_cw·A_wc   (5×5)
 /// ```
 ///
-/// The unweighted values come from the car's own covariance `A_cc·P + P·A_ccᵀ + q·b_c·b_cᵀ
-/// = 0`. Agrees with [`stationary_weighted`] to rounding (tests: 1e-9 relative).
+/// and `q·b_cᵀ·Q_cc·b_c = trace(M·P)` with `P` the car's own covariance, `A_cc·P + P·A_ccᵀ +
+/// q·b_c·b_cᵀ = 0` (the last equation is never solved), which also gives the unweighted
+/// values. So each car costs one 15-unknown and four 10-unknown solves. Agrees with
+/// [`stationary_weighted`] to rounding (tests: 1e-9 relative).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ride {
     /// `A_ww`, row-major.
@@ -387,7 +389,7 @@ impl Ride {
                 m[r][s] = c_w[r] * c_w[s];
             }
         }
-        let q_ww = lyapunov_small(&a_t, &m).ok_or(ModelError::OutOfRange {
+        let q_ww = lyapunov_small::<NW, 36>(&a_t, &m).ok_or(ModelError::OutOfRange {
             name: "frequency weighting",
             reason: "the weighting filter must be stable (positive corners and qualities)",
         })?;
@@ -421,109 +423,91 @@ impl Ride {
         class: IsoClass,
         speed: f64,
     ) -> Result<Stationary, ModelError> {
-        let v = positive("speed", "m/s", speed)?;
-        let undamped = ModelError::OutOfRange {
+        let sys = CarRoad::new(car, class, speed)?;
+        let undamped = || ModelError::OutOfRange {
             name: "suspension damping",
             reason: "the response to a random road never settles without damping",
         };
-        let c = car.config();
-        let (ms, mu) = (c.sprung_mass, c.unsprung_mass);
-        let road_pole = TAU * ROAD_CUT_ON * v;
-        let accel = [-c.k_s / ms, c.k_s / ms, -c.c_s / ms, c.c_s / ms, 0.0];
-        let mut a = [[0.0; NC]; NC];
-        a[0][2] = 1.0;
-        a[1][3] = 1.0;
-        a[2] = accel;
-        a[3] = [
-            c.k_s / mu,
-            -(c.k_s + c.k_t) / mu,
-            c.c_s / mu,
-            -(c.c_s + c.c_t) / mu,
-            (c.k_t - c.c_t * road_pole) / mu,
-        ];
-        a[4][4] = -road_pole;
-        let mut b = [0.0; NC];
-        b[3] = c.c_t / mu;
-        b[4] = 1.0;
-        let q = 0.5 * (TAU * ISO_N0).powi(2) * class.g_d_n0() * v;
-        // Covariance of the car and road.
-        let mut m = [[0.0; NC]; NC];
-        for r in 0..NC {
-            for s in 0..NC {
-                m[r][s] = q * b[r] * b[s];
-            }
-        }
-        let p = lyapunov_small(&a, &m).ok_or(undamped.clone())?;
-        let quad = |x: &[[f64; NC]; NC], u: &[f64; NC]| {
-            let mut s = 0.0;
-            for r in 0..NC {
-                for t in 0..NC {
-                    s += u[r] * x[r][t] * u[t];
-                }
-            }
-            s
-        };
-        // Sylvester: A_ccᵀ·X + X·A_ww = R, R = −a·(Q_ww·g + h·c_w)ᵀ.
-        let mut qg = [0.0; NW];
-        for (s, qs) in qg.iter_mut().enumerate() {
-            let row: f64 = (0..NW).map(|t| self.q_ww[s][t] * self.g[t]).sum();
-            *qs = row + self.h * self.c_w[s];
-        }
-        let mut x = [[0.0; NW]; NC];
-        for blk in (0..NW / 2).rev() {
-            let cols = [2 * blk, 2 * blk + 1];
-            // 10 unknowns X[r][cols[e]], index r + 5·e.
-            let mut mat = [0.0; 100];
-            let mut rhs = [0.0; 10];
-            for (e, &s) in cols.iter().enumerate() {
-                for r in 0..NC {
-                    let row = r + NC * e;
-                    let mut known = -accel[r] * qg[s];
-                    for (pcol, xp) in x[r].iter().enumerate().skip(2 * blk + 2) {
-                        known -= xp * self.a_ww[pcol][s];
-                    }
-                    rhs[row] = known;
-                    for k in 0..NC {
-                        mat[row * 10 + k + NC * e] += a[k][r];
-                    }
-                    for (f, &t) in cols.iter().enumerate() {
-                        mat[row * 10 + r + NC * f] += self.a_ww[t][s];
-                    }
-                }
-            }
-            let sol = gauss(&mut mat, &mut rhs, 10).ok_or(undamped.clone())?;
-            for (e, &s) in cols.iter().enumerate() {
-                for (r, xr) in x.iter_mut().enumerate() {
-                    xr[s] = sol[r + NC * e];
-                }
-            }
-        }
-        // Q_cc: A_ccᵀ·Q + Q·A_cc + S + Sᵀ + h²·a·aᵀ = 0 with S = X·g·aᵀ.
-        let xg: [f64; NC] = std::array::from_fn(|r| (0..NW).map(|t| x[r][t] * self.g[t]).sum());
-        let mut a_t = [[0.0; NC]; NC];
-        let mut m = [[0.0; NC]; NC];
-        for r in 0..NC {
-            for s in 0..NC {
-                a_t[r][s] = a[s][r];
-                m[r][s] =
-                    xg[r] * accel[s] + accel[r] * xg[s] + self.h * self.h * accel[r] * accel[s];
-            }
-        }
-        let q_cc = lyapunov_small(&a_t, &m).ok_or(undamped)?;
+        let p = sys.covariance().ok_or_else(undamped)?;
+        let weighted = self.weighted_variance(&sys, &p).ok_or_else(undamped)?;
         let rms = |var: f64| var.max(0.0).sqrt();
         Ok(Stationary {
-            rms_body_acceleration: rms(quad(&p, &accel)),
-            rms_weighted_body_acceleration: rms(q * quad(&q_cc, &b)),
+            rms_body_acceleration: rms(quad(&p, &sys.accel)),
+            rms_weighted_body_acceleration: rms(weighted),
             rms_tyre_deflection: rms(quad(&p, &[0.0, 1.0, 0.0, 0.0, -1.0])),
             rms_suspension_travel: rms(quad(&p, &[1.0, -1.0, 0.0, 0.0, 0.0])),
         })
+    }
+
+    /// The weighted body acceleration's variance `q·b_cᵀ·Q_cc·b_c` (m²/s⁴) by the
+    /// Sylvester solve of the type docs, given the car's covariance `p`; `None` if singular.
+    fn weighted_variance(&self, sys: &CarRoad, p: &[[f64; NC]; NC]) -> Option<f64> {
+        let (a, accel) = (&sys.a, &sys.accel);
+        // Sylvester: A_ccᵀ·X + X·A_ww = R, R = −a·(Q_ww·g + h·c_w)ᵀ.
+        let qg: [f64; NW] = std::array::from_fn(|s| {
+            let row: f64 = (0..NW).map(|t| self.q_ww[s][t] * self.g[t]).sum();
+            row + self.h * self.c_w[s]
+        });
+        // By 2-column blocks, last first: with D the block's 2×2 of A_ww (D₀₁ = 1 by
+        // construction) and known right-hand sides r₀, r₁, the block's columns solve
+        // Aᵀx₀ + D₀₀x₀ + D₁₀x₁ = r₀, Aᵀx₁ + D₀₁x₀ + D₁₁x₁ = r₁; eliminating x₀ leaves
+        // ((Aᵀ)² + tr D·Aᵀ + det D·I)·x₁ = (Aᵀ + D₀₀)·r₁ − D₀₁·r₀ (5 unknowns).
+        let at: [[f64; NC]; NC] = std::array::from_fn(|r| std::array::from_fn(|k| a[k][r]));
+        let at2: [[f64; NC]; NC] = std::array::from_fn(|r| {
+            std::array::from_fn(|k| (0..NC).map(|t| at[r][t] * at[t][k]).sum())
+        });
+        let mul = |m: &[[f64; NC]; NC], v: &[f64; NC]| -> [f64; NC] {
+            std::array::from_fn(|r| (0..NC).map(|k| m[r][k] * v[k]).sum())
+        };
+        let mut x = [[0.0; NW]; NC];
+        for blk in (0..NW / 2).rev() {
+            let (s0, s1) = (2 * blk, 2 * blk + 1);
+            let d = |p: usize, q: usize| self.a_ww[p][q];
+            let (d00, d01, d10, d11) = (d(s0, s0), d(s0, s1), d(s1, s0), d(s1, s1));
+            if d01 == 0.0 {
+                return None;
+            }
+            let rhs = |s: usize| -> [f64; NC] {
+                std::array::from_fn(|r| {
+                    let later: f64 = (2 * blk + 2..NW).map(|p| x[r][p] * self.a_ww[p][s]).sum();
+                    -accel[r] * qg[s] - later
+                })
+            };
+            let (r0, r1) = (rhs(s0), rhs(s1));
+            let (tr, det) = (d00 + d11, d00 * d11 - d01 * d10);
+            let mut m: [[f64; NC]; NC] = std::array::from_fn(|r| {
+                std::array::from_fn(|k| at2[r][k] + tr * at[r][k] + if r == k { det } else { 0.0 })
+            });
+            let atr1 = mul(&at, &r1);
+            let mut v: [f64; NC] = std::array::from_fn(|r| atr1[r] + d00 * r1[r] - d01 * r0[r]);
+            let x1 = gauss(&mut m, &mut v)?;
+            let atx1 = mul(&at, &x1);
+            for r in 0..NC {
+                x[r][s1] = x1[r];
+                x[r][s0] = (r1[r] - atx1[r] - d11 * x1[r]) / d01;
+            }
+        }
+        // q·b_cᵀ·Q_cc·b_c with A_ccᵀ·Q_cc + Q_cc·A_cc + M = 0, M = S + Sᵀ + h²·a·aᵀ and
+        // S = X·g·aᵀ, equals trace(M·P) with P the car's covariance (A_cc·P + P·A_ccᵀ +
+        // q·b_c·b_cᵀ = 0): trace(Q·q·b·bᵀ) = −trace(Q·(A·P + P·Aᵀ)) = trace(M·P).
+        let xg: [f64; NC] = std::array::from_fn(|r| (0..NW).map(|t| x[r][t] * self.g[t]).sum());
+        let h2 = self.h * self.h;
+        let mut trace = 0.0;
+        for r in 0..NC {
+            for t in 0..NC {
+                let m = xg[r] * accel[t] + accel[r] * xg[t] + h2 * accel[r] * accel[t];
+                trace += m * p[t][r];
+            }
+        }
+        Some(trace)
     }
 
     /// RMS weighted body acceleration (m/s², as
     /// [`Stationary::rms_weighted_body_acceleration`]) of the car `base` with each suspension
     /// `(k_s, c_s)` of the grid `k_axis × c_axis`, rows `rows` of `c_axis`, written to
     /// `out[row·k_axis.len() + col]` (NaN where the car is invalid or does not settle;
-    /// indices beyond `out` are skipped). The unweighted value goes to `unweighted` alike.
+    /// indices beyond `out` are skipped). The unweighted value goes to `unweighted` alike
+    /// (an empty slice skips it).
     #[allow(clippy::too_many_arguments)]
     pub fn weighted_rows(
         &self,
@@ -555,62 +539,119 @@ impl Ride {
     }
 }
 
-/// Solves the `n×n` system `m·x = rhs` (row-major `m`) by Gaussian elimination with partial
-/// pivoting; `None` when (numerically) singular.
-fn gauss(m: &mut [f64], rhs: &mut [f64], n: usize) -> Option<Vec<f64>> {
-    let scale = m.iter().fold(0.0f64, |s, v| s.max(v.abs()));
-    for col in 0..n {
-        let pivot =
-            (col..n).max_by(|&x, &y| m[x * n + col].abs().total_cmp(&m[y * n + col].abs()))?;
-        let pv = m[pivot * n + col];
+/// The car and road block of [`stationary_weighted`]'s system: `A_cc`, `b_c`, the body
+/// acceleration row `a` and the noise intensity `q`.
+struct CarRoad {
+    a: [[f64; NC]; NC],
+    b: [f64; NC],
+    accel: [f64; NC],
+    q: f64,
+}
+
+impl CarRoad {
+    fn new(car: &TwoDof, class: IsoClass, speed: f64) -> Result<Self, ModelError> {
+        let v = positive("speed", "m/s", speed)?;
+        let c = car.config();
+        let (ms, mu) = (c.sprung_mass, c.unsprung_mass);
+        let road_pole = TAU * ROAD_CUT_ON * v;
+        let accel = [-c.k_s / ms, c.k_s / ms, -c.c_s / ms, c.c_s / ms, 0.0];
+        let mut a = [[0.0; NC]; NC];
+        a[0][2] = 1.0;
+        a[1][3] = 1.0;
+        a[2] = accel;
+        a[3] = [
+            c.k_s / mu,
+            -(c.k_s + c.k_t) / mu,
+            c.c_s / mu,
+            -(c.c_s + c.c_t) / mu,
+            (c.k_t - c.c_t * road_pole) / mu,
+        ];
+        a[4][4] = -road_pole;
+        let mut b = [0.0; NC];
+        b[3] = c.c_t / mu;
+        b[4] = 1.0;
+        let q = 0.5 * (TAU * ISO_N0).powi(2) * class.g_d_n0() * v;
+        Ok(Self { a, b, accel, q })
+    }
+
+    /// The car and road's covariance `P`: `A_cc·P + P·A_ccᵀ + q·b_c·b_cᵀ = 0`.
+    fn covariance(&self) -> Option<[[f64; NC]; NC]> {
+        let m: [[f64; NC]; NC] =
+            std::array::from_fn(|r| std::array::from_fn(|s| self.q * self.b[r] * self.b[s]));
+        lyapunov_small::<NC, 15>(&self.a, &m)
+    }
+}
+
+/// `uᵀ·X·u`.
+fn quad(x: &[[f64; NC]; NC], u: &[f64; NC]) -> f64 {
+    let mut s = 0.0;
+    for r in 0..NC {
+        for t in 0..NC {
+            s += u[r] * x[r][t] * u[t];
+        }
+    }
+    s
+}
+
+/// Solves the `N×N` system `m·x = rhs` by Gaussian elimination with partial pivoting, on
+/// the stack; `None` when (numerically) singular.
+fn gauss<const N: usize>(m: &mut [[f64; N]; N], rhs: &mut [f64; N]) -> Option<[f64; N]> {
+    let scale = m.iter().flatten().fold(0.0f64, |s, v| s.max(v.abs()));
+    for col in 0..N {
+        let pivot = (col..N).max_by(|&x, &y| m[x][col].abs().total_cmp(&m[y][col].abs()))?;
+        let pv = m[pivot][col];
         if !pv.is_finite() || pv.abs() <= 1e-14 * scale {
             return None;
         }
-        if pivot != col {
-            for k in 0..n {
-                m.swap(col * n + k, pivot * n + k);
-            }
-            rhs.swap(col, pivot);
-        }
-        for row in col + 1..n {
-            let f = m[row * n + col] / pv;
+        m.swap(col, pivot);
+        rhs.swap(col, pivot);
+        let (top, rest) = m.split_at_mut(col + 1);
+        let prow = &top[col];
+        for (k, row) in rest.iter_mut().enumerate() {
+            let f = row[col] / pv;
             if f != 0.0 {
-                for k in col..n {
-                    m[row * n + k] -= f * m[col * n + k];
+                for (x, p) in row[col..].iter_mut().zip(&prow[col..]) {
+                    *x -= f * p;
                 }
-                rhs[row] -= f * rhs[col];
+                rhs[col + 1 + k] -= f * rhs[col];
             }
         }
     }
-    let mut x = vec![0.0; n];
-    for r in (0..n).rev() {
-        let s: f64 = (r + 1..n).map(|k| m[r * n + k] * x[k]).sum();
-        x[r] = (rhs[r] - s) / m[r * n + r];
+    let mut x = [0.0; N];
+    for r in (0..N).rev() {
+        let s: f64 = (r + 1..N).map(|k| m[r][k] * x[k]).sum();
+        x[r] = (rhs[r] - s) / m[r][r];
     }
     x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
 /// The symmetric `X` with `A·X + X·Aᵀ + M = 0` (`M` symmetric), as [`lyapunov`] for a
-/// `K×K` system; `None` when singular or a diagonal entry is negative or not finite.
-fn lyapunov_small<const K: usize>(a: &[[f64; K]; K], m: &[[f64; K]; K]) -> Option<[[f64; K]; K]> {
+/// `K×K` system in its `NN = K(K+1)/2` unknowns; `None` when singular or a diagonal entry
+/// is negative or not finite.
+fn lyapunov_small<const K: usize, const NN: usize>(
+    a: &[[f64; K]; K],
+    m: &[[f64; K]; K],
+) -> Option<[[f64; K]; K]> {
+    if NN != K * (K + 1) / 2 {
+        return None;
+    }
     let idx = |i: usize, j: usize| {
         let (lo, hi) = if i <= j { (i, j) } else { (j, i) };
         lo * K - lo * (lo + 1) / 2 + hi
     };
-    let n = K * (K + 1) / 2;
-    let mut mat = vec![0.0; n * n];
-    let mut rhs = vec![0.0; n];
+    let mut mat = [[0.0; NN]; NN];
+    let mut rhs = [0.0; NN];
     for i in 0..K {
         for j in i..K {
             let r = idx(i, j);
             for k in 0..K {
-                mat[r * n + idx(k, j)] += a[i][k];
-                mat[r * n + idx(i, k)] += a[j][k];
+                mat[r][idx(k, j)] += a[i][k];
+                mat[r][idx(i, k)] += a[j][k];
             }
             rhs[r] = -m[i][j];
         }
     }
-    let x = gauss(&mut mat, &mut rhs, n)?;
+    let x = gauss(&mut mat, &mut rhs)?;
     let out: [[f64; K]; K] = std::array::from_fn(|i| std::array::from_fn(|j| x[idx(i, j)]));
     (0..K).all(|i| out[i][i] >= 0.0).then_some(out)
 }

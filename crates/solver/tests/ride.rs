@@ -252,6 +252,10 @@ fn weighted_rows_fill_the_grid_cell_by_cell() {
     let base = TwoDofConfig::default();
     ride.weighted_rows(base, IsoClass::B, 15.0, (&k, &c), 0..2, &mut w, &mut u);
     assert!(w[..3].iter().chain(&u[..3]).all(|v| v.is_nan()), "c_s = 0");
+    // Without the unweighted map (its solve skipped): the same weighted values.
+    let mut alone = vec![-1.0; 6];
+    ride.weighted_rows(base, IsoClass::B, 15.0, (&k, &c), 0..2, &mut alone, &mut []);
+    assert_eq!(format!("{alone:?}"), format!("{w:?}"));
     for (col, &k_s) in k.iter().enumerate() {
         let car = TwoDof::new(TwoDofConfig {
             k_s,
