@@ -10,7 +10,7 @@ import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
 
-const DEFAULTS = { m: 300, metric: 0, band: 5, road: 1, k_min: 10000, k_max: 60000, c_min: 500, c_max: 8000, k: 24000, c: 2000, n: 100 };
+const DEFAULTS = { m: 300, mu: 40, kt: 200000, metric: 0, band: 5, road: 2, V: 10, k_min: 10000, k_max: 60000, c_min: 500, c_max: 8000, k: 24000, c: 2000, n: 100 };
 const PLOTS = ['map', 'pareto', 'response'];
 
 const num = async (page, key) => Number(await readout(page, key));
@@ -58,7 +58,11 @@ test('every slider moves from the keyboard and changes readouts or pixels', asyn
   // selected design's readouts change (the map's range only moves the map)]
   const sliders = {
     m: [301, 'map', true],
+    // The two-DOF car and road behind comfort: the Pareto front and a_w move.
+    mu: [41, 'pareto', true],
+    kt: [201000, 'pareto', true],
     band: [5.5, 'response', true],
+    V: [10.5, 'pareto', true],
     k_min: [10500, 'map', false],
     k_max: [60500, 'map', false],
     c_min: [550, 'map', false],

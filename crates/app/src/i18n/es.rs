@@ -1409,19 +1409,18 @@ pub const PHRASES: &[(&str, &str)] = &[
     // ---- design: comfort as ISO 2631-1 a_w of the two-DOF car (issue 14)
     ("Comfort a_w (W_k-weighted RMS body acceleration)", "Confort a_w (aceleración RMS de la carrocería ponderada con W_k)"),
     ("comfort a_w (W_k-weighted RMS body acceleration)", "confort a_w (aceleración RMS de la carrocería ponderada con W_k)"),
-    ("Comfort a_w (W_k): ", "Confort a_w (W_k): "),
     (" of the two-DOF car (wheel ", " del cuarto de vehículo de dos grados de libertad (rueda "),
     (" kg, tyre ", " kg, neumático "),
     (" kN/m), stationary on ", " kN/m), estacionaria en "),
-    (", two-DOF car, stationary on ", ", cuarto de vehículo de dos grados de libertad, estacionaria en "),
     ("an ISO 8608 class ", "una carretera ISO 8608 de clase "),
-    ("(ISO 8608 class ", "(carretera ISO 8608 de clase "),
     (" road at ", " a "),
     (", over k ", ", para k "),
-    ("a_w, W_k-weighted RMS body acceleration", "a_w, aceleración RMS de la carrocería ponderada con W_k"),
     (" with a_w = ", " con a_w = "),
     (", to the smoothest, ", ", hasta el más suave, "),
     (" Comfort a_w: the W_k-weighted RMS body acceleration of the two-DOF car on ", " Confort a_w: la aceleración RMS de la carrocería ponderada con W_k del cuarto de vehículo de dos grados de libertad en "),
+    (" (class ", " (carretera de clase "),
+    (" road, ", ", "),
+    ("a_w (W_k-weighted RMS)", "a_w (RMS ponderada con W_k)"),
 ];
 
 #[cfg(test)]

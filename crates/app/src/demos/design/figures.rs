@@ -132,7 +132,7 @@ pub(super) fn pareto(d: &DesignSpace, p: &P, r: &Results) -> Figure {
     let mut fig = Figure::plot(
         PARETO_TITLE,
         Axis::linear(format!("settling time into ±{} % of x₀", p.band), "s", xr),
-        Axis::linear(text::comfort_axis(p), "m/s²", yr),
+        Axis::linear(text::COMFORT_AXIS, "m/s²", yr),
     );
     if let Some((ik, kcol)) = d.column_near(p.k) {
         let n = d.k_axis.len();

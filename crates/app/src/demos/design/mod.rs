@@ -299,20 +299,25 @@ impl Model for DesignSpace {
                     |r| r.sel.overshoot,
                 ),
                 // Plain: accelerations stay in m/s² (no "mm/s²").
-                ReadoutDef::plain(
+                // The road and speed written beside the value, as the label cannot vary.
+                ReadoutDef::formatted(
                     "accel_rms",
                     "a_w: RMS body acceleration weighted by ISO 2631-1 W_k (two-DOF car, \
                      stationary on the ISO 8608 road at speed V)",
                     "m/s²",
-                    3,
-                    |r| r.sel.accel_rms,
+                    |r| {
+                        let a = r.sel.accel_rms?;
+                        Some((a, text::with_road(a, &r.key)))
+                    },
                 ),
-                ReadoutDef::plain(
+                ReadoutDef::formatted(
                     "accel_unweighted",
                     "RMS body acceleration, unweighted (same car and road)",
                     "m/s²",
-                    3,
-                    |r| r.sel.ride.map(|s| s.rms_body_acceleration),
+                    |r| {
+                        let a = r.sel.ride?.rms_body_acceleration;
+                        Some((a, text::with_road(a, &r.key)))
+                    },
                 ),
                 ReadoutDef::formatted("grid_size", "grid size (cells)", "", |r| {
                     let (n, cells) = (r.grid, r.grid * r.grid);

@@ -1,7 +1,7 @@
 //! The design demo's prose: summary, equation, metric names and the figures' text
 //! alternatives.
 
-use super::{Metric, Results, P, X0};
+use super::{Metric, Results, SweepKey, P, X0};
 use crate::figure::Figure;
 use crate::format::{si, significant};
 use crate::spec::Preset;
@@ -84,7 +84,7 @@ impl Metric {
         let of = match self {
             Metric::SettlingTime => format!(" into ±{band} % of x₀, free response from rest"),
             Metric::PeakRebound => ", free response from rest".to_string(),
-            Metric::AccelRms => format!(", two-DOF car, stationary on {}", road_text(p)),
+            Metric::AccelRms => String::new(),
             Metric::PeakTransmissibility => String::new(),
         };
         let scale = if log { ", logarithmic colours" } else { "" };
@@ -96,7 +96,7 @@ impl Metric {
         match self {
             Metric::SettlingTime => format!("Settling into ±{band} % of x₀"),
             Metric::PeakRebound => "Peak rebound (% of x₀)".into(),
-            Metric::AccelRms => "Comfort a_w (W_k)".into(),
+            Metric::AccelRms => "a_w (W_k)".into(),
             Metric::PeakTransmissibility => "Peak transmissibility |X/U|".into(),
         }
     }
@@ -112,13 +112,18 @@ pub(super) fn road_text(p: &P) -> String {
     format!("an ISO 8608 class {} road at {} m/s", p.road.letter(), p.v)
 }
 
-/// The Pareto plot's comfort axis.
-pub(super) fn comfort_axis(p: &P) -> String {
+/// An acceleration readout with its road: "1.01 m/s² (class C road, 10 m/s)".
+pub(super) fn with_road(a: f64, key: &SweepKey) -> String {
     format!(
-        "a_w, W_k-weighted RMS body acceleration ({})",
-        road_text(p).trim_start_matches("an ")
+        "{} (class {} road, {} m/s)",
+        with_unit(a, "m/s²", 3),
+        key.road.letter(),
+        key.v
     )
 }
+
+/// The Pareto plot's comfort axis (its road is in the caption and the map's).
+pub(super) const COMFORT_AXIS: &str = "a_w (W_k-weighted RMS)";
 
 /// `v` with its unit; accelerations stay in m/s² (no "mm/s²").
 pub(super) fn with_unit(v: f64, unit: &str, sig: usize) -> String {
