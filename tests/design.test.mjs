@@ -28,6 +28,9 @@ const shortName = (label) => label.replace(/[^A-Za-z0-9]+/g, '-').replace(/^-|-$
 for (const state of golden('design').states) {
   test(`"${state.name}" from the URL: readouts and text alternatives as recorded natively, every plot drawn`, async () => {
     const { page, errors, context } = await open(browser, `${server.url}?demo=design&${state.query}`);
+    // The recorded state is the full sweep: wait out the coarse stand-in (the two-DOF comfort
+    // cells make a 160 × 160 sweep take a few hundred ms in slices).
+    await page.waitForFunction(() => !document.querySelector('[data-provisional]'));
     await assertReadoutsMatch(page, state);
     for (const [i, plot] of PLOTS.entries()) {
       const [ink] = await canvasFingerprint(page, plot);
