@@ -80,7 +80,11 @@ impl Metric {
     /// The colour bar's label: the metric, relative to what, its unit and the scale.
     pub(super) fn bar_label(self, p: &P, log: bool) -> String {
         let band = p.band;
-        let (name, _, _) = self.describe();
+        let name = match self {
+            // Short enough for the bar's height; the caption says the rest.
+            Metric::AccelRms => COMFORT_AXIS,
+            _ => self.describe().0,
+        };
         let of = match self {
             Metric::SettlingTime => format!(" into ±{band} % of x₀, free response from rest"),
             Metric::PeakRebound => ", free response from rest".to_string(),
