@@ -1308,12 +1308,14 @@ quarter-car-2dof-preset-6 = Soft damper on a poor road
 ### design
 
 design-title = Design space (k, c)
-design-summary = Every cell of the map is one quarter car (sprung mass m on spring k and damper c), coloured by the chosen metric: settling time and peak rebound of the free response released from rest at x₀ = 60 mm (not a step response: the band and the rebound are relative to x₀), RMS body acceleration on a random ISO 8608 road at 72 km/h (the tyre filters the input above 10 Hz), or peak transmissibility. Dashed lines join designs of equal damping ratio ζ = c/(2√(km)). The Pareto front holds the designs no other beats in both comfort and settling. Click the map (or a point of the front) to choose a design; move the mass to see the whole map shift.
+design-summary = Every cell of the map is one quarter car (sprung mass m on spring k and damper c), coloured by the chosen metric: settling time and peak rebound of the free response released from rest at x₀ = 60 mm (not a step response: the band and the rebound are relative to x₀), peak transmissibility, or ride comfort as ISO 2631-1 measures it: a_w, the RMS body acceleration weighted by the W_k filter (how much a seated person feels each frequency), stationary on a random ISO 8608 road at speed V. For comfort each cell is the two-DOF car (this body on the wheel m_u and tyre k_t set below, from the Lyapunov equation): the same numbers as the quarter-car-2dof demo for the same car; the readouts also give the unweighted RMS. Dashed lines join designs of equal damping ratio ζ = c/(2√(km)). The Pareto front holds the designs no other beats in both comfort and settling. Click the map (or a point of the front) to choose a design; move the mass to see the whole map shift.
 design-param-m = sprung mass
+design-param-mu = comfort: wheel (unsprung) mass
+design-param-kt = comfort: tyre stiffness
 design-param-metric = map metric
 design-param-metric-settling-time = settling time (free response)
 design-param-metric-peak-rebound = peak rebound (free response)
-design-param-metric-accel-rms = RMS body acceleration (comfort)
+design-param-metric-accel-rms = comfort a_w (W_k-weighted RMS body acceleration)
 design-param-metric-peak-transmissibility = peak transmissibility |X/U|
 design-param-band = settling band, ± % of x₀ (free response)
 design-param-road = road (ISO 8608)
@@ -1321,6 +1323,7 @@ design-param-road-a = class A (very good)
 design-param-road-b = class B (good)
 design-param-road-c = class C (average)
 design-param-road-d = class D (poor)
+design-param-V = comfort: speed
 design-param-k-min = map: lowest spring rate
 design-param-k-max = map: highest spring rate
 design-param-c-min = map: lowest damper rate
@@ -1333,7 +1336,8 @@ design-readout-c = selected damper rate c
 design-readout-zeta = damping ratio ζ
 design-readout-settling-time = settling time into the ± band of x₀ (free response)
 design-readout-overshoot = peak rebound, % of x₀ (free response)
-design-readout-accel-rms = RMS body acceleration
+design-readout-accel-rms = a_w: RMS body acceleration weighted by ISO 2631-1 W_k (two-DOF car, stationary on the ISO 8608 road at speed V)
+design-readout-accel-unweighted = RMS body acceleration, unweighted (same car and road)
 design-readout-grid-size = grid size (cells)
 design-readout-compute-time = sweep compute time
 design-plot-map = Metric over (k, c) with iso-ζ lines

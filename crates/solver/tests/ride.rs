@@ -177,3 +177,95 @@ fn an_undamped_car_has_no_stationary_value_and_speed_is_checked() {
         (d.rms_weighted_body_acceleration / c.rms_weighted_body_acceleration - 2.0).abs() < 1e-9
     );
 }
+
+#[test]
+fn the_block_solves_equal_the_full_lyapunov_equation() {
+    // `Ride` splits the 13-state equation by its structure; same values to rounding, over
+    // soft to stiff, light to heavy, with and without tyre damping, every class and speed.
+    use zeta_solver::ride::{stationary_weighted, Ride, Weighting};
+    let ride = Ride::w_k();
+    let cars = [
+        TwoDofConfig::default(),
+        TwoDofConfig {
+            k_s: 5_000.0,
+            c_s: 100.0,
+            unsprung_mass: 150.0,
+            k_t: 50_000.0,
+            ..TwoDofConfig::default()
+        },
+        TwoDofConfig {
+            sprung_mass: 800.0,
+            k_s: 150_000.0,
+            c_s: 15_000.0,
+            unsprung_mass: 10.0,
+            k_t: 500_000.0,
+            c_t: 300.0,
+        },
+    ];
+    let other = Weighting { f5: 1.0, ..W_K };
+    let other_ride = Ride::new(&other).unwrap();
+    for cfg in cars {
+        let car = TwoDof::new(cfg).unwrap();
+        for (class, v) in [(IsoClass::A, 2.0), (IsoClass::C, 20.0), (IsoClass::H, 40.0)] {
+            for (full, fast) in [
+                (stationary(&car, class, v), ride.stationary(&car, class, v)),
+                (
+                    stationary_weighted(&car, class, v, &other),
+                    other_ride.stationary(&car, class, v),
+                ),
+            ] {
+                let (full, fast) = (full.unwrap(), fast.unwrap());
+                for (a, b) in [
+                    (full.rms_body_acceleration, fast.rms_body_acceleration),
+                    (
+                        full.rms_weighted_body_acceleration,
+                        fast.rms_weighted_body_acceleration,
+                    ),
+                    (full.rms_tyre_deflection, fast.rms_tyre_deflection),
+                    (full.rms_suspension_travel, fast.rms_suspension_travel),
+                ] {
+                    assert!(
+                        (a - b).abs() <= 1e-9 * b,
+                        "{cfg:?} {class:?} {v}: {a} vs {b}"
+                    );
+                }
+            }
+        }
+    }
+    let undamped = TwoDof::new(TwoDofConfig {
+        c_s: 0.0,
+        ..TwoDofConfig::default()
+    })
+    .unwrap();
+    assert!(ride.stationary(&undamped, IsoClass::C, 20.0).is_err());
+    let car = TwoDof::new(TwoDofConfig::default()).unwrap();
+    assert!(ride.stationary(&car, IsoClass::C, 0.0).is_err());
+    assert!(Ride::new(&Weighting { q1: -1.0, ..W_K }).is_err());
+}
+
+#[test]
+fn weighted_rows_fill_the_grid_cell_by_cell() {
+    use zeta_solver::ride::Ride;
+    let ride = Ride::w_k();
+    let (k, c) = ([10_000.0, 24_000.0, 40_000.0], [0.0, 1_500.0]);
+    let (mut w, mut u) = (vec![-1.0; 6], vec![-1.0; 6]);
+    let base = TwoDofConfig::default();
+    ride.weighted_rows(base, IsoClass::B, 15.0, (&k, &c), 0..2, &mut w, &mut u);
+    assert!(w[..3].iter().chain(&u[..3]).all(|v| v.is_nan()), "c_s = 0");
+    // Without the unweighted map (its solve skipped): the same weighted values.
+    let mut alone = vec![-1.0; 6];
+    ride.weighted_rows(base, IsoClass::B, 15.0, (&k, &c), 0..2, &mut alone, &mut []);
+    assert_eq!(format!("{alone:?}"), format!("{w:?}"));
+    for (col, &k_s) in k.iter().enumerate() {
+        let car = TwoDof::new(TwoDofConfig {
+            k_s,
+            c_s: 1_500.0,
+            ..base
+        })
+        .unwrap();
+        let s = stationary(&car, IsoClass::B, 15.0).unwrap();
+        let rel = |a: f64, b: f64| (a - b).abs() / b;
+        assert!(rel(w[3 + col], s.rms_weighted_body_acceleration) < 1e-9);
+        assert!(rel(u[3 + col], s.rms_body_acceleration) < 1e-9);
+    }
+}

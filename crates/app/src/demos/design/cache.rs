@@ -4,20 +4,41 @@
 
 use super::{DesignSpace, Road};
 use zeta_solver::design::map::nearest_index;
+use zeta_solver::two_dof::TwoDofConfig;
 
 /// Everything the sweep depends on; the map is recomputed only when this changes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct SweepKey {
     /// Sprung mass \[kg\].
     pub(super) m: f64,
+    /// Wheel mass \[kg\] and tyre stiffness \[N/m\] (comfort only).
+    pub(super) mu: f64,
+    pub(super) kt: f64,
     /// Settling band \[% of x₀\].
     pub(super) band: f64,
     pub(super) road: Road,
+    /// Speed \[m/s\] (comfort only).
+    pub(super) v: f64,
     /// Map edges \[N/m\] and \[N·s/m\].
     pub(super) k: (f64, f64),
     pub(super) c: (f64, f64),
     /// Cells per axis.
     pub(super) n: usize,
+}
+
+impl SweepKey {
+    /// The two-DOF car of the comfort metric, with a placeholder suspension (each cell sets
+    /// its own `k_s`, `c_s`); no tyre damping, as in the quarter-car-2dof demo.
+    pub(super) fn car(&self) -> TwoDofConfig {
+        TwoDofConfig {
+            sprung_mass: self.m,
+            unsprung_mass: self.mu,
+            k_s: 1.0,
+            c_s: 0.0,
+            k_t: self.kt,
+            c_t: 0.0,
+        }
+    }
 }
 
 impl DesignSpace {

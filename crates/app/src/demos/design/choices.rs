@@ -12,7 +12,8 @@ pub enum Metric {
     SettlingTime,
     /// Peak rebound of a release from rest.
     PeakRebound,
-    /// RMS body acceleration on the road.
+    /// Ride comfort: `a_w`, the `W_k`-weighted RMS body acceleration of the two-DOF car,
+    /// stationary on the road.
     AccelRms,
     /// Peak displacement transmissibility.
     PeakTransmissibility,
@@ -33,7 +34,7 @@ impl Choice for Metric {
         (
             Metric::AccelRms,
             "accel_rms",
-            "RMS body acceleration (comfort)",
+            "comfort a_w (W_k-weighted RMS body acceleration)",
         ),
         (
             Metric::PeakTransmissibility,
@@ -61,9 +62,9 @@ pub enum Road {
     /// Class A.
     A,
     /// Class B.
-    #[default]
     B,
-    /// Class C.
+    /// Class C (the quarter-car-2dof demo's default).
+    #[default]
     C,
     /// Class D.
     D,
@@ -79,6 +80,16 @@ impl Choice for Road {
 }
 
 impl Road {
+    /// The class's letter, as ISO 8608 writes it.
+    pub(super) fn letter(self) -> &'static str {
+        match self {
+            Road::A => "A",
+            Road::B => "B",
+            Road::C => "C",
+            Road::D => "D",
+        }
+    }
+
     /// The solver's ISO 8608 class.
     pub(super) fn class(self) -> IsoClass {
         match self {

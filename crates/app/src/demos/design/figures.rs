@@ -99,12 +99,12 @@ pub(super) fn map(d: &DesignSpace, p: &P, r: &Results) -> Figure {
         y_edges: (c0 / KILO, c1 / KILO),
         scale: colours.scale,
         log: colours.log,
-        label: p.metric.bar_label(p.band, colours.log),
+        label: p.metric.bar_label(p, colours.log),
     });
     fig.described(description)
 }
 
-/// `(settling time, RMS acceleration)` of the front's designs, in front order.
+/// `(settling time, a_w)` of the front's designs, in front order.
 fn front_points(d: &DesignSpace) -> Vec<(f64, f64)> {
     d.front
         .iter()
@@ -132,7 +132,7 @@ pub(super) fn pareto(d: &DesignSpace, p: &P, r: &Results) -> Figure {
     let mut fig = Figure::plot(
         PARETO_TITLE,
         Axis::linear(format!("settling time into ±{} % of x₀", p.band), "s", xr),
-        Axis::linear("RMS body acceleration", "m/s²", yr),
+        Axis::linear(text::COMFORT_AXIS, "m/s²", yr),
     );
     if let Some((ik, kcol)) = d.column_near(p.k) {
         let n = d.k_axis.len();
@@ -155,7 +155,7 @@ pub(super) fn pareto(d: &DesignSpace, p: &P, r: &Results) -> Figure {
             LineStyle::dotted(Ink::Green, 2.0),
         );
     }
-    let description = text::describe_pareto(&pts, sel_pt, p.band);
+    let description = text::describe_pareto(&pts, sel_pt, p);
     fig = fig.with_line("Pareto front", pts, LineStyle::solid(Ink::Blue, 2.5));
     if let Some(pt) = sel_pt {
         fig = fig.with_marker(Marker::dot("selected", pt, Ink::Vermillion));

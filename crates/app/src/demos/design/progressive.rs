@@ -11,6 +11,7 @@ use zeta_solver::design::sweep::{
     sweep_kc_into, sweep_kc_rows, sweep_kc_start, KcMaps, KcSweepConfig,
 };
 use zeta_solver::grid::cell_centre;
+use zeta_solver::ride::Ride;
 
 /// Cells per axis of the coarse sweep shown while the full one runs.
 pub(super) const COARSE_CELLS: usize = 25;
@@ -24,12 +25,34 @@ pub(super) const PROVISIONAL: [&str; 5] =
 pub(super) struct SweepJob {
     key: SweepKey,
     cfg: KcSweepConfig,
+    ride: Ride,
     k_axis: Vec<f64>,
     c_axis: Vec<f64>,
     maps: KcMaps,
     next_row: usize,
     /// Compute time so far \[ms\].
     ms: f64,
+}
+
+/// Rows `rows` of the comfort map: `a_w` of the two-DOF car of `key` in each cell (replacing
+/// the one-DOF figure the solver's sweep put there).
+fn comfort_rows(
+    ride: &Ride,
+    key: &SweepKey,
+    (k_axis, c_axis): (&[f64], &[f64]),
+    rows: std::ops::Range<usize>,
+    maps: &mut KcMaps,
+) {
+    let (class, axes) = (key.road.class(), (k_axis, c_axis));
+    ride.weighted_rows(
+        key.car(),
+        class,
+        key.v,
+        axes,
+        rows,
+        &mut maps.accel_rms,
+        &mut [],
+    );
 }
 
 /// Cell centres of `n` cells over `(lo, hi)`.
@@ -56,12 +79,16 @@ impl DesignSpace {
         cells(key.k, n, &mut self.k_axis);
         cells(key.c, n, &mut self.c_axis);
         sweep_kc_into(&self.k_axis, &self.c_axis, &cfg, &mut self.maps);
+        let ride = Ride::w_k();
+        let axes = (&self.k_axis[..], &self.c_axis[..]);
+        comfort_rows(&ride, &key, axes, 0..n, &mut self.maps);
         self.finish_maps(key, watch.elapsed_ms());
         self.provisional = n != key.n;
         if self.provisional {
             let mut job = SweepJob {
                 key,
                 cfg,
+                ride,
                 k_axis: Vec::new(),
                 c_axis: Vec::new(),
                 maps: KcMaps::default(),
@@ -104,6 +131,8 @@ impl DesignSpace {
                 &job.cfg,
                 &mut job.maps,
             );
+            let axes = (&job.k_axis[..], &job.c_axis[..]);
+            comfort_rows(&job.ride, &job.key, axes, row..row + 1, &mut job.maps);
             job.next_row += 1;
             if watch.elapsed_ms() >= budget_ms {
                 break;

@@ -101,11 +101,78 @@ fn iso_zeta_lines_lie_on_their_damping_ratio() {
 }
 
 #[test]
+fn a_map_cell_and_the_two_dof_demo_agree_on_comfort_for_the_same_car() {
+    // Cell (ix, iy) = (3, 7) of a 20 × 20 map: k = 10 000 + 3.5·2 500 = 18 750 N/m,
+    // c = 500 + 7.5·375 = 3 312.5 N·s/m. The same car in quarter-car-2dof (random road,
+    // no tyre damping in both): a_w and the unweighted RMS agree to 1e-9 relative (the
+    // map's block solves against the full 13-state Lyapunov equation; both are exact to
+    // rounding, at most 2e-12 apart over the sliders' ranges).
+    for (design, two_dof) in [
+        ("", "class=C&V=10"),
+        (
+            "m=420&mu=60&kt=150000&road=d&V=25",
+            "ms=420&mu=60&kt=150000&class=D&V=25",
+        ),
+    ] {
+        let query = format!("n=20&metric=accel_rms&{design}");
+        let car = crate::demos::testing::run(
+            "quarter-car-2dof",
+            &format!("road=random&ks=18750&cs=3312.5&{two_dof}"),
+        );
+        let a_w = number(&car, "stationary_weighted_accel");
+        let mut d = DesignSpace::default();
+        step(&mut d, &query);
+        let cell = d.maps.accel_rms[7 * 20 + 3];
+        assert_eq!(d.design_at(7 * 20 + 3), Some((18_750.0, 3_312.5)));
+        assert!(
+            (cell - a_w).abs() <= 1e-9 * a_w,
+            "{design}: {cell} vs {a_w}"
+        );
+        // The page's map shows that cell as ln(a_w) on its logarithmic colour bar.
+        let map = run(&query).figures.swap_remove(0).heatmap.unwrap();
+        let ln_a_w = zeta_solver::grid::log10(a_w) * std::f64::consts::LN_10;
+        assert!(map.log && (map.values[7 * 20 + 3] - ln_a_w).abs() < 1e-9);
+        // The selected design's readouts call the very function the two-DOF demo calls.
+        let sel = run(&format!("k=18750&c=3312.5&{design}"));
+        assert_eq!(number(&sel, "accel_rms"), a_w);
+        let unweighted = number(&car, "stationary_accel");
+        assert_eq!(number(&sel, "accel_unweighted"), unweighted);
+        assert!(a_w < unweighted, "W_k attenuates outside 4–12 Hz");
+    }
+}
+
+#[test]
+fn comfort_labels_say_weighted_two_dof_and_which_road() {
+    let spec = DesignSpace::declare().spec();
+    let label = |key: &str| spec.readouts.iter().find(|r| r.key == key).unwrap().label;
+    assert!(label("accel_rms").contains("weighted by ISO 2631-1 W_k"));
+    assert!(label("accel_unweighted").contains("unweighted"));
+    let f = run("metric=accel_rms&road=c&V=20");
+    let bar = &f.figures[0].heatmap.as_ref().unwrap().label;
+    assert!(bar.contains("W_k-weighted"), "{bar}");
+    assert!(f.figures[1].y.label.contains("W_k-weighted"));
+    // The road beside the value, in the map's caption and in the front's.
+    let shown = crate::demos::testing::text(&f, "accel_rms");
+    assert!(shown.ends_with("m/s² (class C road, 20 m/s)"), "{shown}");
+    for fig in &f.figures[..2] {
+        assert!(fig.description.contains("ISO 8608 class C road at 20 m/s"));
+    }
+    // The two-DOF demo's defaults: class C at 10 m/s, 40 kg wheel, 200 kN/m tyre.
+    let f = run("metric=accel_rms");
+    assert!(f.figures[0]
+        .description
+        .contains("wheel 40 kg, tyre 200 kN/m"));
+    assert!(f.figures[0].description.contains("class C road at 10 m/s"));
+}
+
+#[test]
 fn the_road_class_scales_only_the_comfort_metric() {
     // ISO 8608: each class has 4× the roughness of the one before, so 2× the RMS.
     let b = run("road=b");
     let c = run("road=c");
-    assert!((number(&c, "accel_rms") / number(&b, "accel_rms") - 2.0).abs() < 1e-12);
+    for key in ["accel_rms", "accel_unweighted"] {
+        assert!((number(&c, key) / number(&b, key) - 2.0).abs() < 1e-12);
+    }
     assert_eq!(number(&c, "settling_time"), number(&b, "settling_time"));
 }
 
@@ -174,7 +241,13 @@ fn progressive_updates_show_a_marked_coarse_sweep_then_exactly_the_full_one() {
     // Debug text: the figures hold NaN gaps, which `==` never equates.
     assert!(format!("{:?}", shown(&full)) == format!("{:?}", shown(&want)));
     // The selected design's own readouts never wait for the sweep.
-    for key in ["zeta", "settling_time", "overshoot", "accel_rms"] {
+    for key in [
+        "zeta",
+        "settling_time",
+        "overshoot",
+        "accel_rms",
+        "accel_unweighted",
+    ] {
         assert_eq!(number(&moved, key), number(&want, key), "{key}");
     }
 }

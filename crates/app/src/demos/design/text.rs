@@ -1,7 +1,7 @@
 //! The design demo's prose: summary, equation, metric names and the figures' text
 //! alternatives.
 
-use super::{Metric, Results, P, X0};
+use super::{Metric, Results, SweepKey, P, X0};
 use crate::figure::Figure;
 use crate::format::{si, significant};
 use crate::spec::Preset;
@@ -10,9 +10,14 @@ pub(super) const SUMMARY: &str =
     "Every cell of the map is one quarter car (sprung mass m on spring k and \
                       damper c), coloured by the chosen metric: settling time and peak rebound \
                       of the free response released from rest at x₀ = 60 mm (not a step \
-                      response: the band and the rebound are relative to x₀), RMS body acceleration on a random ISO 8608 road \
-                      at 72 km/h (the tyre filters the input above 10 Hz), or peak \
-                      transmissibility. Dashed lines join designs of equal damping ratio \
+                      response: the band and the rebound are relative to x₀), peak \
+                      transmissibility, or ride comfort as ISO 2631-1 measures it: a_w, the \
+                      RMS body acceleration weighted by the W_k filter (how much a seated \
+                      person feels each frequency), stationary on a random ISO 8608 road at \
+                      speed V. For comfort each cell is the two-DOF car (this body on the \
+                      wheel m_u and tyre k_t set below, from the Lyapunov equation): the same \
+                      numbers as the quarter-car-2dof demo for the same car; the readouts \
+                      also give the unweighted RMS. Dashed lines join designs of equal damping ratio \
                       ζ = c/(2√(km)). The Pareto front holds the designs no other beats in both \
                       comfort and settling. Click the map (or a point of the front) to choose a \
                       design; move the mass to see the whole map shift.";
@@ -29,7 +34,11 @@ impl Metric {
         match self {
             Metric::SettlingTime => ("settling time", "s", 1.0),
             Metric::PeakRebound => ("peak rebound", "%", 100.0),
-            Metric::AccelRms => ("RMS body acceleration", "m/s²", 1.0),
+            Metric::AccelRms => (
+                "comfort a_w (W_k-weighted RMS body acceleration)",
+                "m/s²",
+                1.0,
+            ),
             Metric::PeakTransmissibility => ("peak transmissibility |X/U|", "", 1.0),
         }
     }
@@ -45,8 +54,10 @@ impl Metric {
     }
 
     /// What the metric is relative to, after its name: the free response and its band
-    /// (`band` in % of x₀). Empty for the metrics that do not depend on x₀.
-    fn relative_to(self, band: f64) -> String {
+    /// (`band` in % of x₀), or the car and road of the comfort metric. Empty for peak
+    /// transmissibility.
+    fn relative_to(self, p: &P) -> String {
+        let band = p.band;
         match self {
             Metric::SettlingTime => format!(
                 " of the free response from x₀ = {} into ±{band} % of x₀,",
@@ -56,17 +67,29 @@ impl Metric {
                 " of the free response from x₀ = {}, in % of x₀,",
                 si(X0, "m", 2)
             ),
-            Metric::AccelRms | Metric::PeakTransmissibility => String::new(),
+            Metric::AccelRms => format!(
+                " of the two-DOF car (wheel {} kg, tyre {} kN/m), stationary on {},",
+                p.mu,
+                p.kt / 1e3,
+                road_text(p)
+            ),
+            Metric::PeakTransmissibility => String::new(),
         }
     }
 
     /// The colour bar's label: the metric, relative to what, its unit and the scale.
-    pub(super) fn bar_label(self, band: f64, log: bool) -> String {
-        let (name, _, _) = self.describe();
+    pub(super) fn bar_label(self, p: &P, log: bool) -> String {
+        let band = p.band;
+        let name = match self {
+            // Short enough for the bar's height; the caption says the rest.
+            Metric::AccelRms => COMFORT_AXIS,
+            _ => self.describe().0,
+        };
         let of = match self {
             Metric::SettlingTime => format!(" into ±{band} % of x₀, free response from rest"),
             Metric::PeakRebound => ", free response from rest".to_string(),
-            Metric::AccelRms | Metric::PeakTransmissibility => String::new(),
+            Metric::AccelRms => String::new(),
+            Metric::PeakTransmissibility => String::new(),
         };
         let scale = if log { ", logarithmic colours" } else { "" };
         format!("{name}{of} [{}]{scale}", self.bar_unit())
@@ -77,7 +100,7 @@ impl Metric {
         match self {
             Metric::SettlingTime => format!("Settling into ±{band} % of x₀"),
             Metric::PeakRebound => "Peak rebound (% of x₀)".into(),
-            Metric::AccelRms => "RMS acceleration".into(),
+            Metric::AccelRms => "a_w (W_k)".into(),
             Metric::PeakTransmissibility => "Peak transmissibility |X/U|".into(),
         }
     }
@@ -87,6 +110,24 @@ impl Metric {
         !matches!(self, Metric::PeakRebound)
     }
 }
+
+/// The comfort metric's road: "an ISO 8608 class C road at 10 m/s".
+pub(super) fn road_text(p: &P) -> String {
+    format!("an ISO 8608 class {} road at {} m/s", p.road.letter(), p.v)
+}
+
+/// An acceleration readout with its road: "1.01 m/s² (class C road, 10 m/s)".
+pub(super) fn with_road(a: f64, key: &SweepKey) -> String {
+    format!(
+        "{} (class {} road, {} m/s)",
+        with_unit(a, "m/s²", 3),
+        key.road.letter(),
+        key.v
+    )
+}
+
+/// The Pareto plot's comfort axis (its road is in the caption and the map's).
+pub(super) const COMFORT_AXIS: &str = "a_w (W_k-weighted RMS)";
 
 /// `v` with its unit; accelerations stay in m/s² (no "mm/s²").
 pub(super) fn with_unit(v: f64, unit: &str, sig: usize) -> String {
@@ -169,7 +210,7 @@ pub(super) fn describe_map(
          ({}) to yellow ({}){}. Dashed iso-ζ lines for ζ = 0.2, 0.3, 0.5, 0.7 and 1; × marks the lowest \
          cell, ● the selected design.",
         capitalise(name),
-        p.metric.relative_to(p.band),
+        p.metric.relative_to(p),
         span_text(key.k.0, key.k.1, "N/m"),
         span_text(key.c.0, key.c.1, "N·s/m"),
         r.grid,
@@ -184,34 +225,32 @@ pub(super) fn describe_map(
     )
 }
 
-/// The Pareto front in words, from its points `(settling time, RMS acceleration)` in
-/// front order.
-pub(super) fn describe_pareto(
-    front: &[(f64, f64)],
-    selected: Option<(f64, f64)>,
-    band: f64,
-) -> String {
+/// The Pareto front in words, from its points `(settling time, a_w)` in front order.
+pub(super) fn describe_pareto(front: &[(f64, f64)], selected: Option<(f64, f64)>, p: &P) -> String {
+    let band = p.band;
     let accel = |a: f64| with_unit(a, "m/s²", 3);
     let front_len = front.len();
     match (front.first(), front.last()) {
         (Some(a), Some(b)) => format!(
             "Pareto front of {} non-dominated designs: from the fastest, settling into ±{band} % \
-             of x₀ in {} with {} RMS acceleration, to the smoothest, {} with {}. {}",
+             of x₀ in {} with a_w = {}, to the smoothest, {} with a_w = {}. {} Comfort a_w: \
+             the W_k-weighted RMS body acceleration of the two-DOF car on {}.",
             front_len,
             si(a.0, "s", 3),
             accel(a.1),
-            accel(b.1),
             si(b.0, "s", 3),
+            accel(b.1),
             match selected {
                 Some((t, a)) => format!(
-                    "The selected design settles into ±{band} % of x₀ in {} with {}.",
+                    "The selected design settles into ±{band} % of x₀ in {} with a_w = {}.",
                     si(t, "s", 3),
                     accel(a)
                 ),
                 None => "The selected design has no settling time.".into(),
-            }
+            },
+            road_text(p),
         ),
-        _ => "No design on the grid has both a settling time and an RMS acceleration.".into(),
+        _ => "No design on the grid has both a settling time and a comfort value a_w.".into(),
     }
 }
 
