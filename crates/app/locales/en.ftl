@@ -664,6 +664,18 @@ uncertainty-no-finite-values = no finite values
 uncertainty-spec-limit = spec limit
 uncertainty-percentiles = 5th / 95th percentile
 
+## The lecturers' guide (docs/embedding.md and docs/parameters.<tag>.md)
+
+guide-parameters-heading = Parameters of every demo
+guide-parameters-note = The URL parameters of every demo, for links and embeds (see the guide, docs/embedding.md). Generated from the Rust declarations and this language's catalogue; a test fails if this list and the code differ.
+guide-column-key = key
+guide-column-quantity = quantity
+guide-column-unit = unit
+guide-column-range = range
+guide-column-default = default
+guide-log = log
+guide-readouts-plots = Readouts (`data-readout`): { $readouts }. Plots (`plots=`): { $plots }.
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

@@ -659,6 +659,18 @@ uncertainty-no-finite-values = ningún valor finito
 uncertainty-spec-limit = límite de especificación
 uncertainty-percentiles = percentiles 5 y 95
 
+## La guía para docentes (docs/embedding.md y docs/parameters.<tag>.md)
+
+guide-parameters-heading = Parámetros de cada demostración
+guide-parameters-note = Los parámetros de URL de cada demostración, para enlaces e inserciones (véase la guía, docs/embedding.md, en inglés). Generado a partir de las declaraciones en Rust y del catálogo de este idioma; una prueba falla si esta lista y el código difieren.
+guide-column-key = clave
+guide-column-quantity = magnitud
+guide-column-unit = unidad
+guide-column-range = intervalo
+guide-column-default = valor predeterminado
+guide-log = logarítmico
+guide-readouts-plots = Resultados (`data-readout`): { $readouts }. Gráficas (`plots=`): { $plots }.
+
 ## Declared strings (generated from the demo declarations)
 
 ### regimes

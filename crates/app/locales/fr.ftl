@@ -1320,3 +1320,16 @@ regime-neutral = neutre
 regime-divergent = divergent
 
 ## Démonstrations
+
+## Le guide des enseignants (docs/embedding.md et docs/parameters.<tag>.md)
+
+guide-parameters-heading = Paramètres de chaque démonstration
+guide-parameters-note = Les paramètres d’URL de chaque démonstration, pour les liens et l’intégration (voir le guide, docs/embedding.md, en anglais). Généré à partir des déclarations Rust et du catalogue de cette langue ; un test échoue si cette liste et le code diffèrent.
+guide-column-key = clé
+guide-column-quantity = grandeur
+guide-column-unit = unité
+guide-column-range = plage
+guide-column-default = valeur par défaut
+guide-log = logarithmique
+guide-readouts-plots = Résultats (`data-readout`) : { $readouts }. Graphiques (`plots=`) : { $plots }.
+

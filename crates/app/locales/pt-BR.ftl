@@ -1320,3 +1320,16 @@ regime-neutral = neutro
 regime-divergent = divergente
 
 ## Demonstrações
+
+## O guia para professores (docs/embedding.md e docs/parameters.<tag>.md)
+
+guide-parameters-heading = Parâmetros de cada demonstração
+guide-parameters-note = Os parâmetros de URL de cada demonstração, para links e incorporação (veja o guia, docs/embedding.md, em inglês). Gerado a partir das declarações em Rust e do catálogo deste idioma; um teste falha se esta lista e o código divergirem.
+guide-column-key = chave
+guide-column-quantity = grandeza
+guide-column-unit = unidade
+guide-column-range = intervalo
+guide-column-default = padrão
+guide-log = logarítmico
+guide-readouts-plots = Resultados (`data-readout`): { $readouts }. Gráficos (`plots=`): { $plots }.
+

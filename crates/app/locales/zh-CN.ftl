@@ -1305,3 +1305,16 @@ regime-neutral = 中性
 regime-divergent = 发散
 
 ## 演示
+
+## 教师指南（docs/embedding.md 与 docs/parameters.<tag>.md）
+
+guide-parameters-heading = 各演示的参数
+guide-parameters-note = 各演示的 URL 参数，用于链接和嵌入（参见英文指南 docs/embedding.md）。由 Rust 声明和本语言的目录生成；若此列表与代码不符，测试将失败。
+guide-column-key = 键
+guide-column-quantity = 物理量
+guide-column-unit = 单位
+guide-column-range = 范围
+guide-column-default = 默认值
+guide-log = 对数
+guide-readouts-plots = 读数（`data-readout`）：{ $readouts }。图（`plots=`）：{ $plots }。
+

@@ -178,9 +178,12 @@ fn used_ids() -> BTreeSet<String> {
     let mut used = BTreeSet::new();
     let mut rs = Vec::new();
     files(&root().join("src"), "rs", &mut rs);
+    files(&root().join("tests"), "rs", &mut rs);
+    rs.retain(|f| !f.ends_with("catalogues.rs"));
     for f in rs {
         let text = code_only(&std::fs::read_to_string(&f).unwrap());
         used.extend(literals_after(&text, "t!(", '"'));
+        used.extend(literals_after(&text, "message(", '"'));
     }
     let web = root().join("../../web");
     let mut js = Vec::new();
