@@ -1,6 +1,6 @@
 //! Parameters declared together with the field of the typed parameter struct they fill.
 
-use crate::spec::{ChoiceOption, ParamSpec};
+use crate::spec::{ChoiceOption, ParamSpec, Scale};
 
 /// A choice parameter's options as a typed enum: the page shows `label`, the URL carries
 /// `key`, the model step receives the variant.
@@ -32,6 +32,76 @@ pub trait Choice: Copy + PartialEq + 'static {
         Self::OPTIONS[self.index()].2
     }
 }
+
+/// Declares an enum and its [`Choice`] option table as one list, in menu order: each
+/// variant with its URL key and label (`#[default]` marks the default variant).
+///
+/// ```ignore
+/// choice_enum! {
+///     /// How the magnitude is shown.
+///     pub enum View {
+///         /// The plain ratio.
+///         #[default]
+///         Linear => ("linear", "linear |H|"),
+///         Db => ("db", "decibels"),
+///     }
+/// }
+/// ```
+macro_rules! choice_enum {
+    (
+        $(#[$meta:meta])*
+        $vis:vis enum $name:ident {
+            $($(#[$vmeta:meta])* $variant:ident => ($key:literal, $label:literal),)+
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Default, Clone, Copy, PartialEq, Eq)]
+        $vis enum $name {
+            $($(#[$vmeta])* $variant,)+
+        }
+
+        impl $crate::declare::Choice for $name {
+            const OPTIONS: &'static [(Self, &'static str, &'static str)] =
+                &[$(($name::$variant, $key, $label)),+];
+        }
+    };
+}
+pub(crate) use choice_enum;
+
+/// A quantity many demos declare alike: URL key, label, symbol and unit (each demo gives
+/// its own range, default and field; see [`Param::quantity`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Quantity {
+    key: &'static str,
+    label: &'static str,
+    symbol: &'static str,
+    unit: &'static str,
+}
+
+impl Quantity {
+    const fn new(
+        key: &'static str,
+        label: &'static str,
+        symbol: &'static str,
+        unit: &'static str,
+    ) -> Self {
+        Self {
+            key,
+            label,
+            symbol,
+            unit,
+        }
+    }
+}
+
+/// Natural frequency ωₙ \[rad/s\] (`wn`).
+pub const NATURAL_FREQUENCY: Quantity = Quantity::new("wn", "natural frequency", "ωₙ", "rad/s");
+/// Damping ratio ζ \[-\] (`zeta`).
+pub const DAMPING_RATIO: Quantity = Quantity::new("zeta", "damping ratio", "ζ", "");
+/// Initial displacement x₀ \[m\] (`x0`).
+pub const INITIAL_DISPLACEMENT: Quantity = Quantity::new("x0", "initial displacement", "x₀", "m");
+/// Initial velocity v₀ \[m/s\] (`v0`).
+pub const INITIAL_VELOCITY: Quantity = Quantity::new("v0", "initial velocity", "v₀", "m/s");
 
 /// Fills one field of the typed parameter struct `P` from a validated value.
 type Setter<P> = Box<dyn Fn(&mut P, f64)>;
@@ -75,6 +145,16 @@ impl<P: 'static> Param<P> {
         }
     }
 
+    /// A linear slider for a quantity many demos declare alike (e.g. [`DAMPING_RATIO`]).
+    pub fn quantity(
+        q: Quantity,
+        range: (f64, f64, f64),
+        default: f64,
+        set: fn(&mut P, f64),
+    ) -> Self {
+        Self::linear(q.key, q.label, q.symbol, q.unit, range, default, set)
+    }
+
     /// A checkbox, on or off by default.
     pub fn toggle(key: &'static str, label: &'static str, on: bool, set: fn(&mut P, bool)) -> Self {
         Self {
@@ -96,6 +176,12 @@ impl<P: 'static> Param<P> {
             spec: ParamSpec::choice(key, label, &options, default.index()),
             set: Box::new(move |p, v| set(p, C::from_index(v.max(0.0) as usize))),
         }
+    }
+
+    /// The same slider on a logarithmic scale (`min > 0`).
+    pub fn log_scale(mut self) -> Self {
+        self.spec.scale = Scale::Log;
+        self
     }
 
     /// The same parameter with its symbol set (e.g. a choice shown with a symbol).
