@@ -22,10 +22,10 @@
 mod param;
 mod readout;
 
+pub use crate::spec::Quantity;
 pub(crate) use param::choice_enum;
 pub use param::{
-    Choice, Param, Quantity, DAMPING_RATIO, INITIAL_DISPLACEMENT, INITIAL_VELOCITY,
-    NATURAL_FREQUENCY,
+    Choice, Param, DAMPING_RATIO, INITIAL_DISPLACEMENT, INITIAL_VELOCITY, NATURAL_FREQUENCY,
 };
 pub use readout::{Readout, ReadoutDef};
 

@@ -1,6 +1,6 @@
 //! Parameters declared together with the field of the typed parameter struct they fill.
 
-use crate::spec::{ChoiceOption, ParamSpec, Scale};
+use crate::spec::{ChoiceOption, ParamSpec, Quantity, Scale};
 
 /// A choice parameter's options as a typed enum: the page shows `label`, the URL carries
 /// `key`, the model step receives the variant.
@@ -68,32 +68,6 @@ macro_rules! choice_enum {
 }
 pub(crate) use choice_enum;
 
-/// A quantity many demos declare alike: URL key, label, symbol and unit (each demo gives
-/// its own range, default and field; see [`Param::quantity`]).
-#[derive(Debug, Clone, Copy)]
-pub struct Quantity {
-    key: &'static str,
-    label: &'static str,
-    symbol: &'static str,
-    unit: &'static str,
-}
-
-impl Quantity {
-    const fn new(
-        key: &'static str,
-        label: &'static str,
-        symbol: &'static str,
-        unit: &'static str,
-    ) -> Self {
-        Self {
-            key,
-            label,
-            symbol,
-            unit,
-        }
-    }
-}
-
 /// Natural frequency ωₙ \[rad/s\] (`wn`).
 pub const NATURAL_FREQUENCY: Quantity = Quantity::new("wn", "natural frequency", "ωₙ", "rad/s");
 /// Damping ratio ζ \[-\] (`zeta`).
@@ -102,6 +76,27 @@ pub const DAMPING_RATIO: Quantity = Quantity::new("zeta", "damping ratio", "ζ",
 pub const INITIAL_DISPLACEMENT: Quantity = Quantity::new("x0", "initial displacement", "x₀", "m");
 /// Initial velocity v₀ \[m/s\] (`v0`).
 pub const INITIAL_VELOCITY: Quantity = Quantity::new("v0", "initial velocity", "v₀", "m/s");
+
+/// The slider constructors of [`Param`], one per [`Scale`], all with the same arguments.
+macro_rules! sliders {
+    ($($(#[$doc:meta])* $name:ident: $scale:expr;)+) => {
+        $(
+            $(#[$doc])*
+            pub fn $name(
+                key: &'static str,
+                label: &'static str,
+                symbol: &'static str,
+                unit: &'static str,
+                range: (f64, f64, f64),
+                default: f64,
+                set: fn(&mut P, f64),
+            ) -> Self {
+                Self::quantity(Quantity::new(key, label, symbol, unit), range, default, set)
+                    .with_scale($scale)
+            }
+        )+
+    };
+}
 
 /// Fills one field of the typed parameter struct `P` from a validated value.
 type Setter<P> = Box<dyn Fn(&mut P, f64)>;
@@ -113,36 +108,11 @@ pub struct Param<P> {
 }
 
 impl<P: 'static> Param<P> {
-    /// A linear slider over `range = (min, max, step)`.
-    pub fn linear(
-        key: &'static str,
-        label: &'static str,
-        symbol: &'static str,
-        unit: &'static str,
-        range: (f64, f64, f64),
-        default: f64,
-        set: fn(&mut P, f64),
-    ) -> Self {
-        Self {
-            spec: ParamSpec::linear(key, label, symbol, unit, range, default),
-            set: Box::new(set),
-        }
-    }
-
-    /// A logarithmic slider over `range = (min, max, step)`, `min > 0`.
-    pub fn log(
-        key: &'static str,
-        label: &'static str,
-        symbol: &'static str,
-        unit: &'static str,
-        range: (f64, f64, f64),
-        default: f64,
-        set: fn(&mut P, f64),
-    ) -> Self {
-        Self {
-            spec: ParamSpec::log(key, label, symbol, unit, range, default),
-            set: Box::new(set),
-        }
+    sliders! {
+        /// A linear slider over `range = (min, max, step)`.
+        linear: Scale::Linear;
+        /// A logarithmic slider over `range = (min, max, step)`, `min > 0`.
+        log: Scale::Log;
     }
 
     /// A linear slider for a quantity many demos declare alike (e.g. [`DAMPING_RATIO`]).
@@ -152,7 +122,10 @@ impl<P: 'static> Param<P> {
         default: f64,
         set: fn(&mut P, f64),
     ) -> Self {
-        Self::linear(q.key, q.label, q.symbol, q.unit, range, default, set)
+        Self {
+            spec: ParamSpec::slider(q, range, default, Scale::Linear),
+            set: Box::new(set),
+        }
     }
 
     /// A checkbox, on or off by default.
@@ -179,8 +152,12 @@ impl<P: 'static> Param<P> {
     }
 
     /// The same slider on a logarithmic scale (`min > 0`).
-    pub fn log_scale(mut self) -> Self {
-        self.spec.scale = Scale::Log;
+    pub fn log_scale(self) -> Self {
+        self.with_scale(Scale::Log)
+    }
+
+    fn with_scale(mut self, scale: Scale) -> Self {
+        self.spec.scale = scale;
         self
     }
 
