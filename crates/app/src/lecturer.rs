@@ -8,7 +8,7 @@
 
 use crate::format::shortest;
 use crate::params::{parse_number, parse_query, Notice};
-use crate::spec::{DemoSpec, Kind, Scale};
+use crate::spec::{DemoSpec, Kind, ParamSpec, Scale};
 use crate::t;
 use serde::Serialize;
 
@@ -142,19 +142,14 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
     let mut notices = Vec::new();
     let pairs = parse_query(query);
     // Ranges first, so a step is checked against the narrowed span.
-    for (k, v) in pairs.iter().filter(|(k, _)| k.starts_with("range.")) {
-        let key = k.trim_start_matches("range.");
-        let Some(p) = spec
-            .params
-            .iter_mut()
-            .find(|p| p.key == key && p.kind == Kind::Slider)
-        else {
+    for (key, v) in overrides(&pairs, "range.") {
+        let Some(p) = slider_mut(spec, key) else {
             continue;
         };
         let bounds = v
             .split_once(',')
             .and_then(|(a, b)| Some((parse_number(a)?, parse_number(b)?)));
-        let shown: String = v.chars().take(40).filter(|c| !c.is_control()).collect();
+        let shown = shown(v);
         match bounds {
             Some((lo, hi)) => {
                 let lo = lo.clamp(p.min, p.max);
@@ -189,19 +184,14 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
             )),
         }
     }
-    for (k, v) in pairs.iter().filter(|(k, _)| k.starts_with("step.")) {
-        let key = k.trim_start_matches("step.");
-        let Some(p) = spec
-            .params
-            .iter_mut()
-            .find(|p| p.key == key && p.kind == Kind::Slider)
-        else {
+    for (key, v) in overrides(&pairs, "step.") {
+        let Some(p) = slider_mut(spec, key) else {
             continue;
         };
         match parse_number(v) {
             Some(s) if s > 0.0 && s <= p.max - p.min => p.step = s,
             _ => {
-                let shown: String = v.chars().take(40).filter(|c| !c.is_control()).collect();
+                let shown = shown(v);
                 notices.push(notice(
                     key,
                     t!(
@@ -217,6 +207,29 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
         }
     }
     notices
+}
+
+/// The `(key, value)` of each `<prefix><key>=<value>` pair.
+fn overrides<'a>(
+    pairs: &'a [(String, String)],
+    prefix: &'a str,
+) -> impl Iterator<Item = (&'a str, &'a str)> {
+    pairs
+        .iter()
+        .filter(move |(k, _)| k.starts_with(prefix))
+        .map(move |(k, v)| (k.trim_start_matches(prefix), v.as_str()))
+}
+
+/// The slider `key` of `spec` (toggles and choices have no range to narrow).
+fn slider_mut<'a>(spec: &'a mut DemoSpec, key: &str) -> Option<&'a mut ParamSpec> {
+    spec.params
+        .iter_mut()
+        .find(|p| p.key == key && p.kind == Kind::Slider)
+}
+
+/// A value as a notice quotes it: at most 40 characters, no control characters.
+fn shown(v: &str) -> String {
+    v.chars().take(40).filter(|c| !c.is_control()).collect()
 }
 
 #[cfg(target_arch = "wasm32")]
