@@ -7,7 +7,7 @@
 //! with [`parse_number`] and may only narrow the declared range, never widen it.
 
 use crate::format::shortest;
-use crate::params::{parse_number, parse_query, Notice};
+use crate::params::{parse_number, parse_query, shown, Notice};
 use crate::spec::{DemoSpec, Kind, ParamSpec, Scale};
 use crate::t;
 use serde::Serialize;
@@ -225,11 +225,6 @@ fn slider_mut<'a>(spec: &'a mut DemoSpec, key: &str) -> Option<&'a mut ParamSpec
     spec.params
         .iter_mut()
         .find(|p| p.key == key && p.kind == Kind::Slider)
-}
-
-/// A value as a notice quotes it: at most 40 characters, no control characters.
-fn shown(v: &str) -> String {
-    v.chars().take(40).filter(|c| !c.is_control()).collect()
 }
 
 #[cfg(target_arch = "wasm32")]
