@@ -42,32 +42,25 @@ fn every_required_claim_is_there_with_the_expected_verdict() {
     assert_eq!(t.claims.len(), CLAIMS.len());
 }
 
+/// Asserts that `text` quotes the text of readout `key` of `frame`.
+fn assert_shows(text: &str, frame: &crate::demos::Frame, key: &str) {
+    assert!(text.contains(&testing::text(frame, key)), "{key}: {text}");
+}
+
 #[test]
 fn values_are_the_linked_demos_own_readouts() {
     let t = tour();
     // ζ range under ±10 % mass: exact 1/√1.1 and 1/√0.9 (ζ ∝ 1/√m).
     let mass = claim(&t, "sec7-mass-tolerance");
     let f = testing::run("uncertainty", "system=0&m=300&k=24000&zeta=1&dm=10");
-    assert!(
-        mass.computed.contains(&testing::text(&f, "zeta_min")),
-        "{}",
-        mass.computed
-    );
-    assert!(
-        mass.computed.contains(&testing::text(&f, "zeta_max")),
-        "{}",
-        mass.computed
-    );
+    assert_shows(&mass.computed, &f, "zeta_min");
+    assert_shows(&mass.computed, &f, "zeta_max");
     let lo = testing::number(&f, "zeta_min");
     assert!((lo - 0.953_462_589_245_592).abs() < 1e-9, "{lo}");
     // Euler's verdict names its growth factor per step.
     let euler = claim(&t, "fig4-euler-error");
     let g = testing::run("integrators", "zeta=0.05&wn=2&h=0.3");
-    assert!(
-        euler.reason.contains(&testing::text(&g, "growth_euler")),
-        "{}",
-        euler.reason
-    );
+    assert_shows(&euler.reason, &g, "growth_euler");
     assert_eq!(euler.computed, testing::text(&g, "max_err_euler"));
 }
 
