@@ -99,6 +99,16 @@ fn tour_in(tag: &str, ftl: &str) -> (Tour, Vec<String>) {
     (t, missing)
 }
 
+/// Asserts that none of the paper's own messages (`paper-…`) is among the `missing` ids
+/// of the catalogue `tag`.
+fn assert_has_paper_messages(tag: &str, missing: &[String]) {
+    let ours: Vec<_> = missing
+        .iter()
+        .filter(|id| id.starts_with("paper-"))
+        .collect();
+    assert!(ours.is_empty(), "{tag}.ftl lacks {ours:?}");
+}
+
 fn spanish_tour() -> (Tour, Vec<String>) {
     tour_in("es", include_str!("../../../locales/es.ftl"))
 }
@@ -112,11 +122,7 @@ fn every_language_builds_the_whole_tour_from_its_own_catalogue() {
         ("zh-CN", include_str!("../../../locales/zh-CN.ftl")),
     ] {
         let (t, missing) = tour_in(tag, ftl);
-        let ours: Vec<_> = missing
-            .iter()
-            .filter(|id| id.starts_with("paper-"))
-            .collect();
-        assert!(ours.is_empty(), "{tag}.ftl lacks {ours:?}");
+        assert_has_paper_messages(tag, &missing);
         for (e, s) in en.exhibits.iter().zip(&t.exhibits) {
             assert_ne!(e.shows, s.shows, "{tag}: {}", e.id);
         }
@@ -132,11 +138,7 @@ fn every_language_builds_the_whole_tour_from_its_own_catalogue() {
 fn the_tour_is_built_in_spanish_with_no_english_left() {
     let (es, missing) = spanish_tour();
     let en = tour();
-    let ours: Vec<_> = missing
-        .iter()
-        .filter(|id| id.starts_with("paper-"))
-        .collect();
-    assert!(ours.is_empty(), "es.ftl lacks {ours:?}");
+    assert_has_paper_messages("es", &missing);
     // Every sentence of the tour is the catalogue's, not the English one.
     for (e, s) in en.exhibits.iter().zip(&es.exhibits) {
         assert_eq!((e.id, &e.link), (s.id, &s.link));
