@@ -8,7 +8,7 @@
 
 use crate::format::shortest;
 use crate::params::{parse_number, parse_query, shown, Notice};
-use crate::spec::{DemoSpec, Kind, ParamSpec, Scale};
+use crate::spec::{DemoSpec, Kind, ParamSpec, ReadoutSpec, Scale};
 use crate::t;
 use serde::Serialize;
 
@@ -63,16 +63,10 @@ pub struct ParamSchema {
     pub options: Vec<&'static str>,
 }
 
-/// One readout: `data-value` is a number in `unit` (or text for text readouts).
-#[derive(Debug, Clone, Serialize)]
-pub struct ReadoutSchema {
-    /// Key (`data-readout`, `predict=`, `readouts=`).
-    pub key: &'static str,
-    /// Human label (English).
-    pub label: &'static str,
-    /// Unit of the value.
-    pub unit: &'static str,
-}
+/// One readout, as the page declares it: key (`data-readout`, `predict=`, `readouts=`),
+/// English label, and the unit of `data-value` (a number in `unit`, or text for text
+/// readouts).
+pub type ReadoutSchema = ReadoutSpec;
 
 /// One plot (`plots=`, `zeta:export`).
 #[derive(Debug, Clone, Serialize)]
@@ -107,15 +101,7 @@ pub fn schema(spec: &DemoSpec) -> Schema {
                 options: p.options.iter().map(|o| o.key).collect(),
             })
             .collect(),
-        readouts: spec
-            .readouts
-            .iter()
-            .map(|r| ReadoutSchema {
-                key: r.key,
-                label: r.label,
-                unit: r.unit,
-            })
-            .collect(),
+        readouts: spec.readouts.clone(),
         plots: spec
             .plots
             .iter()
