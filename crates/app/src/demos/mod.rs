@@ -212,40 +212,31 @@ impl<M: Model> Demo for Typed<M> {
 /// Makes a fresh demo.
 type Factory = fn() -> Box<dyn Demo>;
 
+/// `model` with its declaration, as a demo the registry holds.
+fn boxed<M: Model>(model: M) -> Box<dyn Demo> {
+    Box::new(Typed::new(model))
+}
+
 /// Every demo, in menu order: the one list. The id here must equal the declaration's
 /// (checked by the registry test).
 const REGISTRY: &[(&str, Factory)] = &[
-    ("regimes", || Box::new(Typed::new(regimes::Regimes))),
-    ("quarter-car", || {
-        Box::new(Typed::new(quarter_car::QuarterCar::new()))
-    }),
-    ("rlc", || Box::new(Typed::new(rlc::Rlc))),
-    ("analogy", || Box::new(Typed::new(analogy::Analogy))),
+    ("regimes", || boxed(regimes::Regimes)),
+    ("quarter-car", || boxed(quarter_car::QuarterCar::new())),
+    ("rlc", || boxed(rlc::Rlc)),
+    ("analogy", || boxed(analogy::Analogy)),
     ("universality", || {
-        Box::new(Typed::new(universality::Universality::default()))
+        boxed(universality::Universality::default())
     }),
-    ("resonance", || {
-        Box::new(Typed::new(resonance::Resonance::default()))
-    }),
-    ("integrators", || {
-        Box::new(Typed::new(integrators::Integrators::new()))
-    }),
-    ("flutter", || {
-        Box::new(Typed::new(flutter::Flutter::default()))
-    }),
-    ("nonlinear", || {
-        Box::new(Typed::new(nonlinear::Nonlinear::default()))
-    }),
+    ("resonance", || boxed(resonance::Resonance::default())),
+    ("integrators", || boxed(integrators::Integrators::new())),
+    ("flutter", || boxed(flutter::Flutter::default())),
+    ("nonlinear", || boxed(nonlinear::Nonlinear::default())),
     ("quarter-car-2dof", || {
-        Box::new(Typed::new(quarter_car_2dof::QuarterCar2Dof::default()))
+        boxed(quarter_car_2dof::QuarterCar2Dof::default())
     }),
-    ("design", || {
-        Box::new(Typed::new(design::DesignSpace::default()))
-    }),
-    ("uncertainty", || {
-        Box::new(Typed::new(uncertainty::Uncertainty::default()))
-    }),
-    ("paper", || Box::new(Typed::new(paper::Paper))),
+    ("design", || boxed(design::DesignSpace::default())),
+    ("uncertainty", || boxed(uncertainty::Uncertainty::default())),
+    ("paper", || boxed(paper::Paper)),
 ];
 
 /// Ids of every demo, in menu order.
