@@ -4,10 +4,7 @@
 # the same site as a low-end device (4× CPU, phone screen, Slow 4G; bench/lowend.mjs).
 # `bash scripts/bench.sh --low-end` runs only the low-end part.
 set -euo pipefail
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$ROOT"
-bash scripts/setup.sh
-export PATH="$HOME/.cargo/bin:$PATH"
+source "$(dirname "${BASH_SOURCE[0]}")/ready.sh"
 echo "== machine: $(nproc) cores, $(uname -m), $(date -u +%Y-%m-%d)"
 if [ "${1:-}" = "--low-end" ]; then
   bash scripts/build.sh

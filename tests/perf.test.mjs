@@ -70,12 +70,22 @@ function slide(page, key, value, preset = '') {
   );
 }
 
-test('design: a moved mass shows a coarse map marked provisional, then the full sweep; a sweep overtaken by a preset is never shown', { skip }, async () => {
-  const { page, errors, context } = await open(browser, `${server.url}?demo=design`);
+/**
+ * Opens demo `id` and waits for its full study, records the finals of plot `plot`, then
+ * moves slider `key` to `value` and overtakes that study with `preset` (see `slide`):
+ * the page, and the marks of the frame that drew the moved slider.
+ */
+async function overtake(id, plot, [key, value], preset) {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=${id}`);
   await settled(page);
-  await recordFinals(page, 'map');
+  await recordFinals(page, plot);
+  const now = await slide(page, key, value, preset);
+  return { page, errors, context, now };
+}
+
+test('design: a moved mass shows a coarse map marked provisional, then the full sweep; a sweep overtaken by a preset is never shown', { skip }, async () => {
   const preset = 'Laden car 500 kg, same parts';
-  const now = await slide(page, 'm', 420, preset);
+  const { page, errors, context, now } = await overtake('design', 'map', ['m', 420], preset);
   assert.ok(now.readouts.includes('grid_size') && now.plots.includes('map') && now.plots.includes('pareto'), JSON.stringify(now));
   assert.ok(Object.values(now.texts).every((t) => t.endsWith(' (provisional)')), JSON.stringify(now.texts));
   assert.equal(now.texts.grid_size, '25 × 25 = 625 (100 × 100 on the way) (provisional)');
@@ -99,11 +109,8 @@ test('design: a moved mass shows a coarse map marked provisional, then the full 
 });
 
 test('uncertainty: a moved tolerance shows the first 1000 draws marked provisional, then the full run; an overtaken run is never shown', { skip }, async () => {
-  const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty`);
-  await settled(page);
-  await recordFinals(page, 'hist');
   const preset = 'ζ = 0.7 design under ±10 % mass';
-  const now = await slide(page, 'dm', 17, preset);
+  const { page, errors, context, now } = await overtake('uncertainty', 'hist', ['dm', 17], preset);
   for (const key of ['yield', 'zeta_p5', 'zeta_p95', 'Q_p5', 'Q_p95', 'draws']) assert.ok(now.readouts.includes(key), `${key} marked`);
   assert.ok(!now.readouts.includes('zeta_min'), 'the exact ranges are final at once');
   assert.deepEqual(now.plots.sort(), ['hist', 'zeta_hist']);

@@ -234,6 +234,13 @@ pub struct Heatmap {
     pub label: String,
 }
 
+impl Heatmap {
+    /// Whether there are cells and a value for each (otherwise only the colour bar is drawn).
+    pub fn has_every_cell(&self) -> bool {
+        self.nx > 0 && self.ny > 0 && self.values.len() >= self.nx * self.ny
+    }
+}
+
 /// One plot.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {

@@ -7,8 +7,8 @@
 //! with [`parse_number`] and may only narrow the declared range, never widen it.
 
 use crate::format::shortest;
-use crate::params::{parse_number, parse_query, Notice};
-use crate::spec::{DemoSpec, Kind, Scale};
+use crate::params::{parse_number, parse_query, shown, Notice};
+use crate::spec::{DemoSpec, Kind, ParamSpec, ReadoutSpec, Scale};
 use crate::t;
 use serde::Serialize;
 
@@ -63,16 +63,10 @@ pub struct ParamSchema {
     pub options: Vec<&'static str>,
 }
 
-/// One readout: `data-value` is a number in `unit` (or text for text readouts).
-#[derive(Debug, Clone, Serialize)]
-pub struct ReadoutSchema {
-    /// Key (`data-readout`, `predict=`, `readouts=`).
-    pub key: &'static str,
-    /// Human label (English).
-    pub label: &'static str,
-    /// Unit of the value.
-    pub unit: &'static str,
-}
+/// One readout, as the page declares it: key (`data-readout`, `predict=`, `readouts=`),
+/// English label, and the unit of `data-value` (a number in `unit`, or text for text
+/// readouts).
+pub type ReadoutSchema = ReadoutSpec;
 
 /// One plot (`plots=`, `zeta:export`).
 #[derive(Debug, Clone, Serialize)]
@@ -107,15 +101,7 @@ pub fn schema(spec: &DemoSpec) -> Schema {
                 options: p.options.iter().map(|o| o.key).collect(),
             })
             .collect(),
-        readouts: spec
-            .readouts
-            .iter()
-            .map(|r| ReadoutSchema {
-                key: r.key,
-                label: r.label,
-                unit: r.unit,
-            })
-            .collect(),
+        readouts: spec.readouts.clone(),
         plots: spec
             .plots
             .iter()
@@ -142,19 +128,14 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
     let mut notices = Vec::new();
     let pairs = parse_query(query);
     // Ranges first, so a step is checked against the narrowed span.
-    for (k, v) in pairs.iter().filter(|(k, _)| k.starts_with("range.")) {
-        let key = k.trim_start_matches("range.");
-        let Some(p) = spec
-            .params
-            .iter_mut()
-            .find(|p| p.key == key && p.kind == Kind::Slider)
-        else {
+    for (key, v) in overrides(&pairs, "range.") {
+        let Some(p) = slider_mut(spec, key) else {
             continue;
         };
         let bounds = v
             .split_once(',')
             .and_then(|(a, b)| Some((parse_number(a)?, parse_number(b)?)));
-        let shown: String = v.chars().take(40).filter(|c| !c.is_control()).collect();
+        let shown = shown(v);
         match bounds {
             Some((lo, hi)) => {
                 let lo = lo.clamp(p.min, p.max);
@@ -189,19 +170,14 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
             )),
         }
     }
-    for (k, v) in pairs.iter().filter(|(k, _)| k.starts_with("step.")) {
-        let key = k.trim_start_matches("step.");
-        let Some(p) = spec
-            .params
-            .iter_mut()
-            .find(|p| p.key == key && p.kind == Kind::Slider)
-        else {
+    for (key, v) in overrides(&pairs, "step.") {
+        let Some(p) = slider_mut(spec, key) else {
             continue;
         };
         match parse_number(v) {
             Some(s) if s > 0.0 && s <= p.max - p.min => p.step = s,
             _ => {
-                let shown: String = v.chars().take(40).filter(|c| !c.is_control()).collect();
+                let shown = shown(v);
                 notices.push(notice(
                     key,
                     t!(
@@ -217,6 +193,24 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
         }
     }
     notices
+}
+
+/// The `(key, value)` of each `<prefix><key>=<value>` pair.
+fn overrides<'a>(
+    pairs: &'a [(String, String)],
+    prefix: &'a str,
+) -> impl Iterator<Item = (&'a str, &'a str)> {
+    pairs
+        .iter()
+        .filter(move |(k, _)| k.starts_with(prefix))
+        .map(move |(k, v)| (k.trim_start_matches(prefix), v.as_str()))
+}
+
+/// The slider `key` of `spec` (toggles and choices have no range to narrow).
+fn slider_mut<'a>(spec: &'a mut DemoSpec, key: &str) -> Option<&'a mut ParamSpec> {
+    spec.params
+        .iter_mut()
+        .find(|p| p.key == key && p.kind == Kind::Slider)
 }
 
 #[cfg(target_arch = "wasm32")]

@@ -67,10 +67,15 @@ impl Params {
     }
 }
 
+/// A value as a notice quotes it: at most 40 characters, no control characters.
+pub(crate) fn shown(raw: &str) -> String {
+    raw.chars().take(40).filter(|c| !c.is_control()).collect()
+}
+
 /// Parses `raw` for parameter `p`: a finite decimal clamped into range for sliders,
 /// `1`/`0`/`true`/`false`/`on`/`off` for toggles, an option key or index for choices.
 pub fn resolve_value(p: &ParamSpec, raw: &str) -> (f64, Option<Notice>) {
-    let shown: String = raw.chars().take(40).filter(|c| !c.is_control()).collect();
+    let shown = shown(raw);
     match p.kind {
         Kind::Toggle => {
             return match raw.trim().to_ascii_lowercase().as_str() {

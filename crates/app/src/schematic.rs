@@ -138,6 +138,15 @@ fn frame(title: &str, description: String, x: (f64, f64), y: (f64, f64)) -> Figu
     }
 }
 
+/// `v` clamped into `[−limit, limit]`; 0 when not finite (a drawing at rest).
+fn within(v: f64, limit: f64) -> f64 {
+    if v.is_finite() {
+        v.clamp(-limit, limit)
+    } else {
+        0.0
+    }
+}
+
 /// Labels for [`mass_spring_damper`].
 pub struct MassLabels<'a> {
     /// Text on the mass, e.g. `"m"`.
@@ -150,17 +159,22 @@ pub struct MassLabels<'a> {
     pub base: &'a str,
 }
 
+impl<'a> MassLabels<'a> {
+    /// The usual labels m, k and c, with `base` under the base (empty for none).
+    pub fn mkc(base: &'a str) -> Self {
+        Self {
+            mass: "m",
+            spring: "k",
+            damper: "c",
+            base,
+        }
+    }
+}
+
 /// A mass on a spring and damper. `x` is the mass displacement and `u` the base
 /// displacement, both already normalised to about −1…1 (1 = the largest excursion).
 pub fn mass_spring_damper(x: f64, u: f64, labels: &MassLabels<'_>, description: String) -> Figure {
-    let clamp = |v: f64| {
-        if v.is_finite() {
-            v.clamp(-1.2, 1.2)
-        } else {
-            0.0
-        }
-    };
-    let (x, u) = (clamp(x), clamp(u));
+    let (x, u) = (within(x, 1.2), within(u, 1.2));
     let amp = 0.55;
     let base_y = u * amp * 0.6;
     let mass_c = 2.4 + x * amp;
@@ -213,14 +227,7 @@ pub fn mass_spring_damper(x: f64, u: f64, labels: &MassLabels<'_>, description: 
 /// capacitor on the left. `current` (−1…1, normalised) is shown as an arrow whose length
 /// follows the current, and `charge` (−1…1) as the capacitor's plate labels.
 pub fn rlc_loop(current: f64, charge: f64, description: String) -> Figure {
-    let clamp = |v: f64| {
-        if v.is_finite() {
-            v.clamp(-1.0, 1.0)
-        } else {
-            0.0
-        }
-    };
-    let (i, q) = (clamp(current), clamp(charge));
+    let (i, q) = (within(current, 1.0), within(charge, 1.0));
     let mut fig = frame(
         &crate::t!("schematic-circuit"),
         description,
@@ -291,12 +298,7 @@ mod tests {
         let s = spring(0.0, 0.0, 2.0, 5, 0.2);
         assert_eq!(s.first(), Some(&(0.0, 0.0)));
         assert_eq!(s.last(), Some(&(0.0, 2.0)));
-        let labels = MassLabels {
-            mass: "m",
-            spring: "k",
-            damper: "c",
-            base: "road",
-        };
+        let labels = MassLabels::mkc("road");
         let up = mass_spring_damper(1.0, 0.0, &labels, String::new());
         let down = mass_spring_damper(-1.0, 0.0, &labels, String::new());
         let top = |f: &Figure| {
@@ -330,12 +332,7 @@ mod tests {
 
     #[test]
     fn two_drawings_compose_side_by_side() {
-        let labels = MassLabels {
-            mass: "m",
-            spring: "k",
-            damper: "c",
-            base: "",
-        };
+        let labels = MassLabels::mkc("");
         let left = mass_spring_damper(0.0, 0.0, &labels, String::new());
         let right = rlc_loop(0.5, 0.5, String::new());
         let (n, m) = (

@@ -28,6 +28,32 @@ pub enum Kind {
     Choice,
 }
 
+/// What a parameter is: URL key, label, symbol and unit (see [`ParamSpec`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Quantity {
+    key: &'static str,
+    label: &'static str,
+    symbol: &'static str,
+    unit: &'static str,
+}
+
+impl Quantity {
+    /// A quantity (`unit` empty when dimensionless).
+    pub const fn new(
+        key: &'static str,
+        label: &'static str,
+        symbol: &'static str,
+        unit: &'static str,
+    ) -> Self {
+        Self {
+            key,
+            label,
+            symbol,
+            unit,
+        }
+    }
+}
+
 /// One option of a [`Kind::Choice`] parameter.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ChoiceOption {
@@ -84,25 +110,18 @@ impl ParamSpec {
         )
     }
 
-    /// A linear slider.
-    pub fn linear(
-        key: &'static str,
-        label: &'static str,
-        symbol: &'static str,
-        unit: &'static str,
-        range: (f64, f64, f64),
-        default: f64,
-    ) -> Self {
+    /// A slider for quantity `q` over `range = (min, max, step)`.
+    pub fn slider(q: Quantity, range: (f64, f64, f64), default: f64, scale: Scale) -> Self {
         Self {
-            key,
-            label,
-            symbol,
-            unit,
+            key: q.key,
+            label: q.label,
+            symbol: q.symbol,
+            unit: q.unit,
             min: range.0,
             max: range.1,
             step: range.2,
             default,
-            scale: Scale::Linear,
+            scale,
             kind: Kind::Slider,
             options: Vec::new(),
             visible_when: None,
@@ -110,32 +129,15 @@ impl ParamSpec {
         }
     }
 
-    /// A logarithmic slider.
-    pub fn log(
-        key: &'static str,
-        label: &'static str,
-        symbol: &'static str,
-        unit: &'static str,
-        range: (f64, f64, f64),
-        default: f64,
-    ) -> Self {
-        Self {
-            scale: Scale::Log,
-            ..Self::linear(key, label, symbol, unit, range, default)
-        }
-    }
-
     /// A checkbox, on (1) or off (0) by default.
     pub fn toggle(key: &'static str, label: &'static str, on: bool) -> Self {
         Self {
             kind: Kind::Toggle,
-            ..Self::linear(
-                key,
-                label,
-                "",
-                "",
+            ..Self::slider(
+                Quantity::new(key, label, "", ""),
                 (0.0, 1.0, 1.0),
                 if on { 1.0 } else { 0.0 },
+                Scale::Linear,
             )
         }
     }
@@ -154,13 +156,11 @@ impl ParamSpec {
                 .iter()
                 .map(|&(key, label)| ChoiceOption { key, label })
                 .collect(),
-            ..Self::linear(
-                key,
-                label,
-                "",
-                "",
+            ..Self::slider(
+                Quantity::new(key, label, "", ""),
                 (0.0, (n - 1) as f64, 1.0),
                 default.min(n - 1) as f64,
+                Scale::Linear,
             )
         }
     }

@@ -22,7 +22,11 @@
 mod param;
 mod readout;
 
-pub use param::{Choice, Param};
+pub use crate::spec::Quantity;
+pub(crate) use param::choice_enum;
+pub use param::{
+    Choice, Param, DAMPING_RATIO, INITIAL_DISPLACEMENT, INITIAL_VELOCITY, NATURAL_FREQUENCY,
+};
 pub use readout::{Readout, ReadoutDef};
 
 use crate::demos::Frame;

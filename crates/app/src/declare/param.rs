@@ -1,6 +1,6 @@
 //! Parameters declared together with the field of the typed parameter struct they fill.
 
-use crate::spec::{ChoiceOption, ParamSpec};
+use crate::spec::{ChoiceOption, ParamSpec, Quantity, Scale};
 
 /// A choice parameter's options as a typed enum: the page shows `label`, the URL carries
 /// `key`, the model step receives the variant.
@@ -33,6 +33,71 @@ pub trait Choice: Copy + PartialEq + 'static {
     }
 }
 
+/// Declares an enum and its [`Choice`] option table as one list, in menu order: each
+/// variant with its URL key and label (`#[default]` marks the default variant).
+///
+/// ```ignore
+/// choice_enum! {
+///     /// How the magnitude is shown.
+///     pub enum View {
+///         /// The plain ratio.
+///         #[default]
+///         Linear => ("linear", "linear |H|"),
+///         Db => ("db", "decibels"),
+///     }
+/// }
+/// ```
+macro_rules! choice_enum {
+    (
+        $(#[$meta:meta])*
+        $vis:vis enum $name:ident {
+            $($(#[$vmeta:meta])* $variant:ident => ($key:literal, $label:literal),)+
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Default, Clone, Copy, PartialEq, Eq)]
+        $vis enum $name {
+            $($(#[$vmeta])* $variant,)+
+        }
+
+        impl $crate::declare::Choice for $name {
+            const OPTIONS: &'static [(Self, &'static str, &'static str)] =
+                &[$(($name::$variant, $key, $label)),+];
+        }
+    };
+}
+pub(crate) use choice_enum;
+
+/// Natural frequency ωₙ \[rad/s\] (`wn`).
+pub const NATURAL_FREQUENCY: Quantity = Quantity::new("wn", "natural frequency", "ωₙ", "rad/s");
+/// Damping ratio ζ \[-\] (`zeta`).
+pub const DAMPING_RATIO: Quantity = Quantity::new("zeta", "damping ratio", "ζ", "");
+/// Initial displacement x₀ \[m\] (`x0`).
+pub const INITIAL_DISPLACEMENT: Quantity = Quantity::new("x0", "initial displacement", "x₀", "m");
+/// Initial velocity v₀ \[m/s\] (`v0`).
+pub const INITIAL_VELOCITY: Quantity = Quantity::new("v0", "initial velocity", "v₀", "m/s");
+
+/// The slider constructors of [`Param`], one per [`Scale`], all with the same arguments.
+macro_rules! sliders {
+    ($($(#[$doc:meta])* $name:ident: $scale:expr;)+) => {
+        $(
+            $(#[$doc])*
+            pub fn $name(
+                key: &'static str,
+                label: &'static str,
+                symbol: &'static str,
+                unit: &'static str,
+                range: (f64, f64, f64),
+                default: f64,
+                set: fn(&mut P, f64),
+            ) -> Self {
+                Self::quantity(Quantity::new(key, label, symbol, unit), range, default, set)
+                    .with_scale($scale)
+            }
+        )+
+    };
+}
+
 /// Fills one field of the typed parameter struct `P` from a validated value.
 type Setter<P> = Box<dyn Fn(&mut P, f64)>;
 
@@ -43,34 +108,22 @@ pub struct Param<P> {
 }
 
 impl<P: 'static> Param<P> {
-    /// A linear slider over `range = (min, max, step)`.
-    pub fn linear(
-        key: &'static str,
-        label: &'static str,
-        symbol: &'static str,
-        unit: &'static str,
-        range: (f64, f64, f64),
-        default: f64,
-        set: fn(&mut P, f64),
-    ) -> Self {
-        Self {
-            spec: ParamSpec::linear(key, label, symbol, unit, range, default),
-            set: Box::new(set),
-        }
+    sliders! {
+        /// A linear slider over `range = (min, max, step)`.
+        linear: Scale::Linear;
+        /// A logarithmic slider over `range = (min, max, step)`, `min > 0`.
+        log: Scale::Log;
     }
 
-    /// A logarithmic slider over `range = (min, max, step)`, `min > 0`.
-    pub fn log(
-        key: &'static str,
-        label: &'static str,
-        symbol: &'static str,
-        unit: &'static str,
+    /// A linear slider for a quantity many demos declare alike (e.g. [`DAMPING_RATIO`]).
+    pub fn quantity(
+        q: Quantity,
         range: (f64, f64, f64),
         default: f64,
         set: fn(&mut P, f64),
     ) -> Self {
         Self {
-            spec: ParamSpec::log(key, label, symbol, unit, range, default),
+            spec: ParamSpec::slider(q, range, default, Scale::Linear),
             set: Box::new(set),
         }
     }
@@ -96,6 +149,16 @@ impl<P: 'static> Param<P> {
             spec: ParamSpec::choice(key, label, &options, default.index()),
             set: Box::new(move |p, v| set(p, C::from_index(v.max(0.0) as usize))),
         }
+    }
+
+    /// The same slider on a logarithmic scale (`min > 0`).
+    pub fn log_scale(self) -> Self {
+        self.with_scale(Scale::Log)
+    }
+
+    fn with_scale(mut self, scale: Scale) -> Self {
+        self.spec.scale = scale;
+        self
     }
 
     /// The same parameter with its symbol set (e.g. a choice shown with a symbol).

@@ -89,6 +89,30 @@ enum Show<R> {
     },
 }
 
+/// The number constructors of [`ReadoutDef`], one per way of showing a number, all with
+/// the same arguments.
+macro_rules! numbers {
+    ($($(#[$doc:meta])* $name:ident: $show:ident;)+) => {
+        $(
+            $(#[$doc])*
+            pub const fn $name(
+                key: &'static str,
+                label: &'static str,
+                unit: &'static str,
+                sig: usize,
+                get: fn(&R) -> Option<f64>,
+            ) -> Self {
+                Self {
+                    key,
+                    label,
+                    unit,
+                    show: Show::$show { sig, get },
+                }
+            }
+        )+
+    };
+}
+
 /// One row of a demo's readout table.
 pub struct ReadoutDef<R> {
     /// Key, used in `data-readout="<key>"`.
@@ -101,36 +125,11 @@ pub struct ReadoutDef<R> {
 }
 
 impl<R> ReadoutDef<R> {
-    /// A number shown with `sig` significant digits and an SI prefix on `unit`.
-    pub const fn number(
-        key: &'static str,
-        label: &'static str,
-        unit: &'static str,
-        sig: usize,
-        get: fn(&R) -> Option<f64>,
-    ) -> Self {
-        Self {
-            key,
-            label,
-            unit,
-            show: Show::Number { sig, get },
-        }
-    }
-
-    /// A number shown in `unit` exactly as given (no prefix), e.g. a time in ms.
-    pub const fn plain(
-        key: &'static str,
-        label: &'static str,
-        unit: &'static str,
-        sig: usize,
-        get: fn(&R) -> Option<f64>,
-    ) -> Self {
-        Self {
-            key,
-            label,
-            unit,
-            show: Show::Plain { sig, get },
-        }
+    numbers! {
+        /// A number shown with `sig` significant digits and an SI prefix on `unit`.
+        number: Number;
+        /// A number shown in `unit` exactly as given (no prefix), e.g. a time in ms.
+        plain: Plain;
     }
 
     /// A text readout.

@@ -36,53 +36,39 @@ pub struct Frame {
     pub time_span: Option<(f64, f64)>,
 }
 
-/// A live demo.
+/// A live demo. [`Typed`] is the one implementation (the defaults live on [`Model`]).
 pub trait Demo {
     /// Parameters, readouts and plots, for the UI to build controls from.
     fn spec(&self) -> DemoSpec;
     /// Recomputes for these (validated) parameter values.
     fn update(&mut self, params: &Params) -> Frame;
     /// The schematic at time `t` \[s\] (for demos whose spec sets `schematic`).
-    fn schematic(&self, _params: &Params, _t: f64) -> Option<Figure> {
-        None
-    }
+    fn schematic(&self, params: &Params, t: f64) -> Option<Figure>;
     /// Parameters the last [`Demo::update`] derived from others (e.g. `c` from a moved
     /// `zeta`); the page moves those controls and the URL follows.
-    fn derived_params(&self) -> Vec<(&'static str, f64)> {
-        Vec::new()
-    }
+    fn derived_params(&self) -> Vec<(&'static str, f64)>;
     /// A click or tap at data point `(x, y)` of plot `plot` (e.g. choosing a design on a
     /// map); returns the parameters to set.
-    fn pick(&mut self, _plot: &str, _x: f64, _y: f64) -> Vec<(&'static str, f64)> {
-        Vec::new()
-    }
+    fn pick(&mut self, plot: &str, x: f64, y: f64) -> Vec<(&'static str, f64)>;
     /// The main response at time `t` \[s\], normalised to about −1…1, for sonification
     /// (pitch follows displacement). `None` for demos without a time response.
-    fn sonify(&self, _params: &Params, _t: f64) -> Option<f64> {
-        None
-    }
+    fn sonify(&self, params: &Params, t: f64) -> Option<f64>;
     /// The guided tour of the last [`Demo::update`], for the page that checks the paper
     /// (`paper`): exhibits with links and claims with verdicts. `None` for other demos.
-    fn tour(&self) -> Option<paper::Tour> {
-        None
-    }
+    fn tour(&self) -> Option<paper::Tour>;
     /// Progressive studies (issue 13): when `on`, a demo with a heavy study (a large sweep,
     /// a Monte Carlo run) answers [`Demo::update`] with a coarse study at once and leaves
     /// the full one to [`Demo::refine`]. Off (the default, and in every native test) the
     /// full study runs inside `update`, as before.
-    fn set_progressive(&mut self, _on: bool) {}
+    fn set_progressive(&mut self, on: bool);
     /// Does up to about `budget_ms` of the pending full study. `None`: nothing pending;
     /// `Some(f)` with `f < 1`: that fraction done; `Some(1.0)`: the full study just
     /// finished and the next [`Demo::update`] shows it. A study started for parameters that
     /// have since moved on is dropped by the next `update`, never shown.
-    fn refine(&mut self, _budget_ms: f64) -> Option<f64> {
-        None
-    }
+    fn refine(&mut self, budget_ms: f64) -> Option<f64>;
     /// Keys of the readouts and plots of the last [`Demo::update`] that show a coarse,
     /// provisional study while the full one runs (empty when everything shown is final).
-    fn provisional(&self) -> Vec<&'static str> {
-        Vec::new()
-    }
+    fn provisional(&self) -> Vec<&'static str>;
 }
 
 /// A demo in the one shape every demo has: a declaration (parameters and readouts as
@@ -226,40 +212,31 @@ impl<M: Model> Demo for Typed<M> {
 /// Makes a fresh demo.
 type Factory = fn() -> Box<dyn Demo>;
 
+/// `model` with its declaration, as a demo the registry holds.
+fn boxed<M: Model>(model: M) -> Box<dyn Demo> {
+    Box::new(Typed::new(model))
+}
+
 /// Every demo, in menu order: the one list. The id here must equal the declaration's
 /// (checked by the registry test).
 const REGISTRY: &[(&str, Factory)] = &[
-    ("regimes", || Box::new(Typed::new(regimes::Regimes))),
-    ("quarter-car", || {
-        Box::new(Typed::new(quarter_car::QuarterCar::new()))
-    }),
-    ("rlc", || Box::new(Typed::new(rlc::Rlc))),
-    ("analogy", || Box::new(Typed::new(analogy::Analogy))),
+    ("regimes", || boxed(regimes::Regimes)),
+    ("quarter-car", || boxed(quarter_car::QuarterCar::new())),
+    ("rlc", || boxed(rlc::Rlc)),
+    ("analogy", || boxed(analogy::Analogy)),
     ("universality", || {
-        Box::new(Typed::new(universality::Universality::default()))
+        boxed(universality::Universality::default())
     }),
-    ("resonance", || {
-        Box::new(Typed::new(resonance::Resonance::default()))
-    }),
-    ("integrators", || {
-        Box::new(Typed::new(integrators::Integrators::new()))
-    }),
-    ("flutter", || {
-        Box::new(Typed::new(flutter::Flutter::default()))
-    }),
-    ("nonlinear", || {
-        Box::new(Typed::new(nonlinear::Nonlinear::default()))
-    }),
+    ("resonance", || boxed(resonance::Resonance::default())),
+    ("integrators", || boxed(integrators::Integrators::new())),
+    ("flutter", || boxed(flutter::Flutter::default())),
+    ("nonlinear", || boxed(nonlinear::Nonlinear::default())),
     ("quarter-car-2dof", || {
-        Box::new(Typed::new(quarter_car_2dof::QuarterCar2Dof::default()))
+        boxed(quarter_car_2dof::QuarterCar2Dof::default())
     }),
-    ("design", || {
-        Box::new(Typed::new(design::DesignSpace::default()))
-    }),
-    ("uncertainty", || {
-        Box::new(Typed::new(uncertainty::Uncertainty::default()))
-    }),
-    ("paper", || Box::new(Typed::new(paper::Paper))),
+    ("design", || boxed(design::DesignSpace::default())),
+    ("uncertainty", || boxed(uncertainty::Uncertainty::default())),
+    ("paper", || boxed(paper::Paper)),
 ];
 
 /// Ids of every demo, in menu order.

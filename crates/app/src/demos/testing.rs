@@ -2,7 +2,7 @@
 // Not every demo uses every reader.
 #![allow(dead_code)]
 
-use super::{create, Frame};
+use super::{create, Frame, Readout};
 use crate::params::resolve_query;
 
 /// Demo `id` updated once for `query` (as the page does on load with that link).
@@ -36,14 +36,18 @@ pub fn close(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol * (1.0 + b.abs())
 }
 
-/// The `data-value` of readout `key`.
-pub fn value(frame: &Frame, key: &str) -> String {
+/// Readout `key`.
+pub fn readout<'a>(frame: &'a Frame, key: &str) -> &'a Readout {
     frame
         .readouts
         .iter()
         .find(|r| r.key == key)
-        .map(|r| r.data_value.clone())
         .unwrap_or_else(|| panic!("no readout {key}"))
+}
+
+/// The `data-value` of readout `key`.
+pub fn value(frame: &Frame, key: &str) -> String {
+    readout(frame, key).data_value.clone()
 }
 
 /// The `data-value` of readout `key` as a number.
@@ -55,10 +59,5 @@ pub fn number(frame: &Frame, key: &str) -> f64 {
 
 /// The text of readout `key`.
 pub fn text(frame: &Frame, key: &str) -> String {
-    frame
-        .readouts
-        .iter()
-        .find(|r| r.key == key)
-        .map(|r| r.text.clone())
-        .unwrap_or_else(|| panic!("no readout {key}"))
+    readout(frame, key).text.clone()
 }

@@ -119,9 +119,11 @@ where
         .map_err(err)?;
 
     if let Some(h) = &fig.heatmap {
-        match raster {
-            Raster::Cells => draw_heatmap(&mut chart, h)?,
-            Raster::Bitmap => blit_heatmap(&mut chart, h, theme)?,
+        if h.has_every_cell() {
+            match raster {
+                Raster::Cells => draw_heatmap(&mut chart, h)?,
+                Raster::Bitmap => blit_heatmap(&mut chart, h, theme)?,
+            }
         }
         let (xs, ys) = chart.plotting_area().get_pixel_range();
         draw_colour_bar(&area, h, (xs.end, ys.start, ys.end), theme, scale)?;

@@ -6,6 +6,7 @@ use plotters::element::{Drawable, PointCollection};
 use plotters::prelude::*;
 
 /// Fills the heatmap's cells (one rectangle each; blank where the value is not finite).
+/// The caller checks [`Heatmap::has_every_cell`](crate::figure::Heatmap::has_every_cell).
 pub(super) fn draw_heatmap<DB, X, Y>(
     chart: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
     h: &crate::figure::Heatmap,
@@ -15,9 +16,6 @@ where
     X: Ranged<ValueType = f64>,
     Y: Ranged<ValueType = f64>,
 {
-    if h.nx == 0 || h.ny == 0 || h.values.len() < h.nx * h.ny {
-        return Ok(());
-    }
     let dx = (h.x_edges.1 - h.x_edges.0) / h.nx as f64;
     let dy = (h.y_edges.1 - h.y_edges.0) / h.ny as f64;
     let (lo, hi) = h.scale;
@@ -70,6 +68,7 @@ impl<C, DB: DrawingBackend> Drawable<DB> for Image<C> {
 
 /// Draws the heatmap as one bitmap over its pixel rectangle (linear axes), each pixel
 /// taking the colour of the cell under its centre; blank cells show the background.
+/// The caller checks [`Heatmap::has_every_cell`](crate::figure::Heatmap::has_every_cell).
 pub(super) fn blit_heatmap<DB, X, Y>(
     chart: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
     h: &crate::figure::Heatmap,
@@ -80,9 +79,6 @@ where
     X: Ranged<ValueType = f64>,
     Y: Ranged<ValueType = f64>,
 {
-    if h.nx == 0 || h.ny == 0 || h.values.len() < h.nx * h.ny {
-        return Ok(());
-    }
     let area = chart.plotting_area();
     let (xs, ys) = area.get_pixel_range();
     let (ax, ay) = chart.backend_coord(&(h.x_edges.0, h.y_edges.1));

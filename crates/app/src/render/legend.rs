@@ -212,6 +212,26 @@ impl Legend {
         Ok(())
     }
 
+    /// One entry with its swatch centred on height `y` from `x`, its label after it.
+    fn entry<DB: DrawingBackend>(
+        area: &DrawingArea<DB, Shift>,
+        (x, y): (i32, i32),
+        label: &str,
+        style: &LineStyle,
+        font: &TextStyle<'static>,
+        theme: &Theme,
+        scale: f64,
+    ) -> Result<(), RenderError> {
+        let (_, swatch, gap, _) = Self::metrics(scale);
+        Self::swatch(area, (x, y), style, theme, scale)?;
+        area.draw(&Text::new(
+            label.to_string(),
+            (x + swatch + gap, y),
+            font.clone(),
+        ))
+        .map_err(err)
+    }
+
     /// A box with its top-left at `at` (plotting-area pixels), over a place free of data.
     pub(super) fn draw_box<DB: DrawingBackend>(
         &self,
@@ -221,7 +241,7 @@ impl Legend {
         theme: &Theme,
         scale: f64,
     ) -> Result<(), RenderError> {
-        let (pad, swatch, gap, line_h) = Self::metrics(scale);
+        let (pad, _, _, line_h) = Self::metrics(scale);
         let (box_w, box_h) = self.size;
         area.draw(&Rectangle::new(
             [(x0, y0), (x0 + box_w, y0 + box_h)],
@@ -237,13 +257,7 @@ impl Legend {
         for (i, (label, style)) in entries.iter().enumerate() {
             let y = y0 + pad + line_h * i as i32 + line_h / 2;
             let x = x0 + pad;
-            Self::swatch(area, (x, y), style, theme, scale)?;
-            area.draw(&Text::new(
-                label.to_string(),
-                (x + swatch + gap, y),
-                font.clone(),
-            ))
-            .map_err(err)?;
+            Self::entry(area, (x, y), label, style, &font, theme, scale)?;
         }
         Ok(())
     }
@@ -256,18 +270,12 @@ impl Legend {
         theme: &Theme,
         scale: f64,
     ) -> Result<(), RenderError> {
-        let (_, swatch, gap, line_h) = Self::metrics(scale);
+        let (_, _, _, line_h) = Self::metrics(scale);
         let (w, _) = band.dim_in_pixel();
         let font = Self::font(theme, scale);
         for ((label, style), (x, row)) in entries.iter().zip(self.rows(w, scale)) {
             let y = row * line_h + line_h / 2;
-            Self::swatch(band, (x, y), style, theme, scale)?;
-            band.draw(&Text::new(
-                label.to_string(),
-                (x + swatch + gap, y),
-                font.clone(),
-            ))
-            .map_err(err)?;
+            Self::entry(band, (x, y), label, style, &font, theme, scale)?;
         }
         Ok(())
     }

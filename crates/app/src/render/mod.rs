@@ -136,37 +136,24 @@ pub fn render_with<DB: DrawingBackend>(
     }
     let (x0, x1) = fig.x.range;
     let (y0, y1) = fig.y.range;
+    // A bitmap needs linear axes; log axes fall back to cells.
+    let raster = match (fig.x.scale, fig.y.scale) {
+        (AxisScale::Linear, AxisScale::Linear) => raster,
+        _ => Raster::Cells,
+    };
+    // One call for each pairing of axis types (their coordinate types differ).
+    macro_rules! draw_with_axes {
+        ($x:expr, $y:expr) => {
+            draw(root, fig, theme, scale, raster, $x, $y)
+        };
+    }
     let area = match (fig.x.scale, fig.y.scale) {
-        (AxisScale::Linear, AxisScale::Linear) => {
-            draw(root, fig, theme, scale, raster, || x0..x1, || y0..y1)
+        (AxisScale::Linear, AxisScale::Linear) => draw_with_axes!(|| x0..x1, || y0..y1),
+        (AxisScale::Log, AxisScale::Linear) => draw_with_axes!(|| log_axis(x0, x1), || y0..y1),
+        (AxisScale::Linear, AxisScale::Log) => draw_with_axes!(|| x0..x1, || log_axis(y0, y1)),
+        (AxisScale::Log, AxisScale::Log) => {
+            draw_with_axes!(|| log_axis(x0, x1), || log_axis(y0, y1))
         }
-        (AxisScale::Log, AxisScale::Linear) => draw(
-            root,
-            fig,
-            theme,
-            scale,
-            Raster::Cells,
-            || log_axis(x0, x1),
-            || y0..y1,
-        ),
-        (AxisScale::Linear, AxisScale::Log) => draw(
-            root,
-            fig,
-            theme,
-            scale,
-            Raster::Cells,
-            || x0..x1,
-            || log_axis(y0, y1),
-        ),
-        (AxisScale::Log, AxisScale::Log) => draw(
-            root,
-            fig,
-            theme,
-            scale,
-            Raster::Cells,
-            || log_axis(x0, x1),
-            || log_axis(y0, y1),
-        ),
     }?;
     root.present().map_err(err)?;
     Ok(PlotGeometry {

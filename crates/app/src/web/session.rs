@@ -135,14 +135,7 @@ impl Session {
             let Some(backend) = Canvas::new(canvas) else {
                 continue;
             };
-            let geo = render_with(
-                &backend.into_drawing_area(),
-                fig,
-                &theme(dark),
-                scale,
-                Raster::Bitmap,
-            )
-            .map_err(js_err)?;
+            let geo = draw_on(backend, fig, dark, scale)?;
             if let Some(slot) = self.geometry.get_mut(i) {
                 *slot = Some(geo);
             }
@@ -333,14 +326,23 @@ impl Session {
         } else {
             1.0
         };
-        render_with(
-            &backend.into_drawing_area(),
-            fig,
-            &theme(dark),
-            scale,
-            Raster::Bitmap,
-        )
-        .map_err(js_err)?;
-        Ok(())
+        draw_on(backend, fig, dark, scale).map(|_| ())
     }
+}
+
+/// Draws `fig` on a canvas in the light or dark theme (heatmaps as one bitmap).
+fn draw_on(
+    backend: Canvas,
+    fig: &crate::figure::Figure,
+    dark: bool,
+    scale: f64,
+) -> Result<PlotGeometry, JsError> {
+    render_with(
+        &backend.into_drawing_area(),
+        fig,
+        &theme(dark),
+        scale,
+        Raster::Bitmap,
+    )
+    .map_err(js_err)
 }

@@ -163,12 +163,7 @@ pub(super) fn energy(r: &Results) -> Figure {
 /// The mass and the loop side by side at time `t` \[s\].
 pub(super) fn schematic(r: &Results, t: f64) -> Figure {
     let ([x, v], [q, i]) = states(r, t);
-    let labels = MassLabels {
-        mass: "m",
-        spring: "k",
-        damper: "c",
-        base: "",
-    };
+    let labels = MassLabels::mkc("");
     // With c ≥ 0 the energy never exceeds its initial value, so |x| ≤ x₀ and
     // |i| ≤ q₀·ω₀: both drawings stay within their frames.
     let mech = mass_spring_damper(x / r.x0, 0.0, &labels, String::new());

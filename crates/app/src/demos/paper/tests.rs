@@ -42,32 +42,25 @@ fn every_required_claim_is_there_with_the_expected_verdict() {
     assert_eq!(t.claims.len(), CLAIMS.len());
 }
 
+/// Asserts that `text` quotes the text of readout `key` of `frame`.
+fn assert_shows(text: &str, frame: &crate::demos::Frame, key: &str) {
+    assert!(text.contains(&testing::text(frame, key)), "{key}: {text}");
+}
+
 #[test]
 fn values_are_the_linked_demos_own_readouts() {
     let t = tour();
     // ζ range under ±10 % mass: exact 1/√1.1 and 1/√0.9 (ζ ∝ 1/√m).
     let mass = claim(&t, "sec7-mass-tolerance");
     let f = testing::run("uncertainty", "system=0&m=300&k=24000&zeta=1&dm=10");
-    assert!(
-        mass.computed.contains(&testing::text(&f, "zeta_min")),
-        "{}",
-        mass.computed
-    );
-    assert!(
-        mass.computed.contains(&testing::text(&f, "zeta_max")),
-        "{}",
-        mass.computed
-    );
+    assert_shows(&mass.computed, &f, "zeta_min");
+    assert_shows(&mass.computed, &f, "zeta_max");
     let lo = testing::number(&f, "zeta_min");
     assert!((lo - 0.953_462_589_245_592).abs() < 1e-9, "{lo}");
     // Euler's verdict names its growth factor per step.
     let euler = claim(&t, "fig4-euler-error");
     let g = testing::run("integrators", "zeta=0.05&wn=2&h=0.3");
-    assert!(
-        euler.reason.contains(&testing::text(&g, "growth_euler")),
-        "{}",
-        euler.reason
-    );
+    assert_shows(&euler.reason, &g, "growth_euler");
     assert_eq!(euler.computed, testing::text(&g, "max_err_euler"));
 }
 
@@ -106,6 +99,16 @@ fn tour_in(tag: &str, ftl: &str) -> (Tour, Vec<String>) {
     (t, missing)
 }
 
+/// Asserts that none of the paper's own messages (`paper-…`) is among the `missing` ids
+/// of the catalogue `tag`.
+fn assert_has_paper_messages(tag: &str, missing: &[String]) {
+    let ours: Vec<_> = missing
+        .iter()
+        .filter(|id| id.starts_with("paper-"))
+        .collect();
+    assert!(ours.is_empty(), "{tag}.ftl lacks {ours:?}");
+}
+
 fn spanish_tour() -> (Tour, Vec<String>) {
     tour_in("es", include_str!("../../../locales/es.ftl"))
 }
@@ -119,11 +122,7 @@ fn every_language_builds_the_whole_tour_from_its_own_catalogue() {
         ("zh-CN", include_str!("../../../locales/zh-CN.ftl")),
     ] {
         let (t, missing) = tour_in(tag, ftl);
-        let ours: Vec<_> = missing
-            .iter()
-            .filter(|id| id.starts_with("paper-"))
-            .collect();
-        assert!(ours.is_empty(), "{tag}.ftl lacks {ours:?}");
+        assert_has_paper_messages(tag, &missing);
         for (e, s) in en.exhibits.iter().zip(&t.exhibits) {
             assert_ne!(e.shows, s.shows, "{tag}: {}", e.id);
         }
@@ -139,11 +138,7 @@ fn every_language_builds_the_whole_tour_from_its_own_catalogue() {
 fn the_tour_is_built_in_spanish_with_no_english_left() {
     let (es, missing) = spanish_tour();
     let en = tour();
-    let ours: Vec<_> = missing
-        .iter()
-        .filter(|id| id.starts_with("paper-"))
-        .collect();
-    assert!(ours.is_empty(), "es.ftl lacks {ours:?}");
+    assert_has_paper_messages("es", &missing);
     // Every sentence of the tour is the catalogue's, not the English one.
     for (e, s) in en.exhibits.iter().zip(&es.exhibits) {
         assert_eq!((e.id, &e.link), (s.id, &s.link));

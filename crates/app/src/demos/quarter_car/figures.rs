@@ -120,12 +120,7 @@ pub(super) fn sensitivity(r: &Results) -> Figure {
 /// The car with its body displaced `x` \[m\] at time `t` \[s\], drawn at `x/x₀` of full travel.
 pub(super) fn schematic(car: &Car, x: f64, t: f64) -> Figure {
     let road = t!("quarter-car-road");
-    let labels = MassLabels {
-        mass: "m",
-        spring: "k",
-        damper: "c",
-        base: &road,
-    };
+    let labels = MassLabels::mkc(&road);
     mass_spring_damper(
         x / car.x0.abs().max(1e-12),
         0.0,

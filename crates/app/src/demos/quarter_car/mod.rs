@@ -28,7 +28,7 @@ mod sweep;
 mod text;
 
 use super::Model;
-use crate::declare::{Declaration, Param};
+use crate::declare::{Declaration, Param, DAMPING_RATIO, INITIAL_DISPLACEMENT};
 use crate::figure::Figure;
 use crate::spec::{PlotSpec, Preset};
 use coupling::Coupling;
@@ -246,20 +246,9 @@ impl Model for QuarterCar {
                     C_DEFAULT,
                     |p, v| p.c = v,
                 ),
-                Param::linear(
-                    "zeta",
-                    "damping ratio",
-                    "ζ",
-                    "",
-                    ZETA_RANGE,
-                    ZETA_DEFAULT,
-                    |p, v| p.zeta = v,
-                ),
-                Param::linear(
-                    "x0",
-                    "initial displacement",
-                    "x₀",
-                    "m",
+                Param::quantity(DAMPING_RATIO, ZETA_RANGE, ZETA_DEFAULT, |p, v| p.zeta = v),
+                Param::quantity(
+                    INITIAL_DISPLACEMENT,
                     (0.005, 0.15, 0.001),
                     X0_DEFAULT,
                     |p, v| p.x0 = v,

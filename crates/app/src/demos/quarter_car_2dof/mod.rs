@@ -16,7 +16,7 @@ mod schematic;
 mod text;
 
 use super::Model;
-use crate::declare::{Choice, Declaration, Param};
+use crate::declare::{choice_enum, Choice, Declaration, Param};
 use crate::figure::Figure;
 use crate::spec::PlotSpec;
 use run::Run;
@@ -25,27 +25,19 @@ use zeta_solver::ride::{stationary, Stationary};
 use zeta_solver::two_dof::{Frf, IsoClass, TwoDof, TwoDofConfig};
 use zeta_solver::two_dof_exact::ExactMetrics;
 
-/// Which road drives the car.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum RoadKind {
-    /// A single `1 − cos` bump.
-    #[default]
-    Bump,
-    /// A step (kerb).
-    Step,
-    /// A sinusoid.
-    Sine,
-    /// A random ISO 8608 road.
-    Random,
-}
-
-impl Choice for RoadKind {
-    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
-        (RoadKind::Bump, "bump", "single bump (1 − cos)"),
-        (RoadKind::Step, "step", "step (kerb)"),
-        (RoadKind::Sine, "sine", "sinusoid"),
-        (RoadKind::Random, "random", "random road (ISO 8608)"),
-    ];
+choice_enum! {
+    /// Which road drives the car.
+    pub enum RoadKind {
+        /// A single `1 − cos` bump.
+        #[default]
+        Bump => ("bump", "single bump (1 − cos)"),
+        /// A step (kerb).
+        Step => ("step", "step (kerb)"),
+        /// A sinusoid.
+        Sine => ("sine", "sinusoid"),
+        /// A random ISO 8608 road.
+        Random => ("random", "random road (ISO 8608)"),
+    }
 }
 
 impl Choice for IsoClass {

@@ -72,12 +72,7 @@ pub(super) fn poles(r: &Results) -> Figure {
 
 /// The mass displaced `x` \[m\] at time `t` \[s\], drawn at `x / reach` of full travel.
 pub(super) fn schematic(x: f64, reach: f64, t: f64) -> Figure {
-    let labels = MassLabels {
-        mass: "m",
-        spring: "k",
-        damper: "c",
-        base: "",
-    };
+    let labels = MassLabels::mkc("");
     let description = t!(
         "regimes-schematic",
         time = si(t, "s", 3),

@@ -9,7 +9,10 @@ mod figures;
 mod text;
 
 use super::Model;
-use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::declare::{
+    Declaration, Param, ReadoutDef, DAMPING_RATIO, INITIAL_DISPLACEMENT, INITIAL_VELOCITY,
+    NATURAL_FREQUENCY,
+};
 use crate::figure::Figure;
 use crate::format;
 use crate::spec::{PlotSpec, Preset};
@@ -69,42 +72,12 @@ impl Model for Regimes {
         Declaration {
             equation_mathml: text::EQUATION,
             params: vec![
-                Param::linear(
-                    "wn",
-                    "natural frequency",
-                    "ωₙ",
-                    "rad/s",
-                    (0.5, 20.0, 0.01),
-                    6.0,
-                    |p, v| p.wn = v,
-                ),
-                Param::linear(
-                    "zeta",
-                    "damping ratio",
-                    "ζ",
-                    "",
-                    (-0.5, 3.0, 0.01),
-                    0.3,
-                    |p, v| p.zeta = v,
-                ),
-                Param::linear(
-                    "x0",
-                    "initial displacement",
-                    "x₀",
-                    "m",
-                    (-0.1, 0.1, 0.001),
-                    0.06,
-                    |p, v| p.x0 = v,
-                ),
-                Param::linear(
-                    "v0",
-                    "initial velocity",
-                    "v₀",
-                    "m/s",
-                    (-2.0, 2.0, 0.01),
-                    0.0,
-                    |p, v| p.v0 = v,
-                ),
+                Param::quantity(NATURAL_FREQUENCY, (0.5, 20.0, 0.01), 6.0, |p, v| p.wn = v),
+                Param::quantity(DAMPING_RATIO, (-0.5, 3.0, 0.01), 0.3, |p, v| p.zeta = v),
+                Param::quantity(INITIAL_DISPLACEMENT, (-0.1, 0.1, 0.001), 0.06, |p, v| {
+                    p.x0 = v
+                }),
+                Param::quantity(INITIAL_VELOCITY, (-2.0, 2.0, 0.01), 0.0, |p, v| p.v0 = v),
             ],
             readouts: vec![
                 ReadoutDef::text("regime", "regime", |r| format::regime(r.regime)),

@@ -16,7 +16,9 @@ mod text;
 mod time;
 
 use super::Model;
-use crate::declare::{Choice, Declaration, Param, ReadoutDef};
+use crate::declare::{
+    choice_enum, Declaration, Param, ReadoutDef, DAMPING_RATIO, NATURAL_FREQUENCY,
+};
 use crate::figure::Figure;
 use crate::spec::{PlotSpec, Preset};
 use std::f64::consts::TAU;
@@ -34,21 +36,15 @@ const GRID_STRETCH: f64 = 5.0;
 /// At most this many cycles (of the faster of drive and natural motion) in the time window.
 const MAX_CYCLES: f64 = 40.0;
 
-/// How the magnitude is shown.
-#[derive(Debug, Default, Clone, Copy, PartialEq, Eq)]
-pub enum View {
-    /// The plain ratio |H|.
-    #[default]
-    Linear,
-    /// Decibels, 20·log₁₀|H|.
-    Db,
-}
-
-impl Choice for View {
-    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
-        (View::Linear, "linear", "linear |H|"),
-        (View::Db, "db", "decibels 20·log₁₀|H|"),
-    ];
+choice_enum! {
+    /// How the magnitude is shown.
+    pub enum View {
+        /// The plain ratio |H|.
+        #[default]
+        Linear => ("linear", "linear |H|"),
+        /// Decibels, 20·log₁₀|H|.
+        Db => ("db", "decibels 20·log₁₀|H|"),
+    }
 }
 
 /// Typed parameters, filled from the declaration.
@@ -137,15 +133,10 @@ impl Model for Resonance {
         Declaration {
             equation_mathml: text::EQUATION,
             params: vec![
-                Param::log(
-                    "zeta",
-                    "damping ratio",
-                    "ζ",
-                    "",
-                    (0.01, 2.0, 0.001),
-                    0.1,
-                    |p, v| p.zeta = v,
-                ),
+                Param::quantity(DAMPING_RATIO, (0.01, 2.0, 0.001), 0.1, |p: &mut P, v| {
+                    p.zeta = v
+                })
+                .log_scale(),
                 Param::log(
                     "r",
                     "forcing ratio ω/ωₙ",
@@ -155,15 +146,7 @@ impl Model for Resonance {
                     1.0,
                     |p, v| p.r = v,
                 ),
-                Param::linear(
-                    "wn",
-                    "natural frequency",
-                    "ωₙ",
-                    "rad/s",
-                    (0.5, 20.0, 0.01),
-                    6.0,
-                    |p, v| p.wn = v,
-                ),
+                Param::quantity(NATURAL_FREQUENCY, (0.5, 20.0, 0.01), 6.0, |p, v| p.wn = v),
                 Param::linear(
                     "F0",
                     "force amplitude",

@@ -89,12 +89,7 @@ pub(super) fn schematic(p: &P, resp: &HarmonicResponse, t_end: f64, t: f64) -> F
     let x = resp.displacement(t);
     let force = resp.force().at(t);
     let base = t!("resonance-fixed-base");
-    let labels = MassLabels {
-        mass: "m",
-        spring: "k",
-        damper: "c",
-        base: &base,
-    };
+    let labels = MassLabels::mkc(&base);
     let mut fig = mass_spring_damper(
         x / reach,
         0.0,

@@ -114,12 +114,7 @@ fn drawing(one: &One, state: [f64; 2]) -> Figure {
     let [y, rate] = state;
     match one.kind {
         Kind::MassSpring => {
-            let labels = MassLabels {
-                mass: "m",
-                spring: "k",
-                damper: "c",
-                base: "",
-            };
+            let labels = MassLabels::mkc("");
             mass_spring_damper(y, 0.0, &labels, String::new())
         }
         Kind::Rlc => rlc_loop(rate, y, String::new()),

@@ -227,51 +227,65 @@ fn coefficient(r: &Results, slot: usize, i: usize) -> Option<(f64, String)> {
 }
 
 fn readouts() -> Vec<ReadoutDef<Results>> {
-    vec![
-        ReadoutDef::formatted("a_A", "inertia coefficient a of A", "", |r| {
-            coefficient(r, 0, 0)
-        }),
-        ReadoutDef::formatted("b_A", "damping coefficient b of A", "", |r| {
-            coefficient(r, 0, 1)
-        }),
-        ReadoutDef::formatted("c_A", "stiffness coefficient c of A", "", |r| {
-            coefficient(r, 0, 2)
-        }),
-        ReadoutDef::number("wn_A", "natural frequency ωₙ of A", "rad/s", 4, |r| {
-            r.m[0].sys.natural_frequency()
-        }),
-        ReadoutDef::number("zeta_A", "damping ratio ζ of A", "", 4, |r| {
-            r.m[0].sys.damping_ratio()
-        }),
-        ReadoutDef::text("regime_A", "regime of A", |r| {
-            crate::format::regime(r.m[0].sys.regime())
-        }),
-        ReadoutDef::formatted("a_B", "inertia coefficient a of B", "", |r| {
-            coefficient(r, 1, 0)
-        }),
-        ReadoutDef::formatted("b_B", "damping coefficient b of B", "", |r| {
-            coefficient(r, 1, 1)
-        }),
-        ReadoutDef::formatted("c_B", "stiffness coefficient c of B", "", |r| {
-            coefficient(r, 1, 2)
-        }),
-        ReadoutDef::number("wn_B", "natural frequency ωₙ of B", "rad/s", 4, |r| {
-            r.m[1].sys.natural_frequency()
-        }),
-        ReadoutDef::number("zeta_B", "damping ratio ζ of B", "", 4, |r| {
-            r.m[1].sys.damping_ratio()
-        }),
-        ReadoutDef::text("regime_B", "regime of B", |r| {
-            crate::format::regime(r.m[1].sys.regime())
-        }),
+    let mut rows = slot_readouts::<0>();
+    rows.extend(slot_readouts::<1>());
+    rows.extend([
         ReadoutDef::number(
             "wn_ratio",
             "time-scale ratio ωₙ(B)/ωₙ(A)",
             "",
             4,
-            |r| Some(r.m[1].wn() / r.m[0].wn()),
+            |r: &Results| Some(r.m[1].wn() / r.m[0].wn()),
         ),
         ReadoutDef::text("match", "match", |r| text::matching(&r.matching)),
+    ]);
+    rows
+}
+
+/// Slot `S`'s coefficients, natural frequency, damping ratio and regime.
+fn slot_readouts<const S: usize>() -> Vec<ReadoutDef<Results>> {
+    let name = |a: &'static str, b| params::pick(S, a, b);
+    vec![
+        ReadoutDef::formatted(
+            name("a_A", "a_B"),
+            name("inertia coefficient a of A", "inertia coefficient a of B"),
+            "",
+            |r| coefficient(r, S, 0),
+        ),
+        ReadoutDef::formatted(
+            name("b_A", "b_B"),
+            name("damping coefficient b of A", "damping coefficient b of B"),
+            "",
+            |r| coefficient(r, S, 1),
+        ),
+        ReadoutDef::formatted(
+            name("c_A", "c_B"),
+            name(
+                "stiffness coefficient c of A",
+                "stiffness coefficient c of B",
+            ),
+            "",
+            |r| coefficient(r, S, 2),
+        ),
+        ReadoutDef::number(
+            name("wn_A", "wn_B"),
+            name("natural frequency ωₙ of A", "natural frequency ωₙ of B"),
+            "rad/s",
+            4,
+            |r| r.m[S].sys.natural_frequency(),
+        ),
+        ReadoutDef::number(
+            name("zeta_A", "zeta_B"),
+            name("damping ratio ζ of A", "damping ratio ζ of B"),
+            "",
+            4,
+            |r| r.m[S].sys.damping_ratio(),
+        ),
+        ReadoutDef::text(
+            name("regime_A", "regime_B"),
+            name("regime of A", "regime of B"),
+            |r| crate::format::regime(r.m[S].sys.regime()),
+        ),
     ]
 }
 

@@ -5,39 +5,25 @@
 use super::machine::{
     BORE, C, CAP, CF, CTH, EI, H, J, K, KD, KP, KT, L, LEN, M, MF, MU, R, RA, RHO, RTH,
 };
-use crate::declare::{Choice, Param};
+use crate::declare::{choice_enum, Choice, Param};
 
-/// The six machines.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Kind {
-    /// Mass on a spring and damper.
-    #[default]
-    MassSpring,
-    /// Series RLC circuit.
-    Rlc,
-    /// U-tube manometer.
-    UTube,
-    /// DC-motor position servo under PD control.
-    Servo,
-    /// Building storey under ground motion.
-    Storey,
-    /// Two-capacity thermal system.
-    Thermal,
-}
-
-impl Choice for Kind {
-    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
-        (Kind::MassSpring, "mass-spring", "mass–spring–damper"),
-        (Kind::Rlc, "rlc", "series RLC circuit"),
-        (Kind::UTube, "u-tube", "U-tube manometer"),
-        (Kind::Servo, "servo", "DC-motor position servo (PD control)"),
-        (
-            Kind::Storey,
-            "storey",
-            "building storey under ground motion",
-        ),
-        (Kind::Thermal, "thermal", "two-capacity thermal system"),
-    ];
+choice_enum! {
+    /// The six machines.
+    pub enum Kind {
+        /// Mass on a spring and damper.
+        #[default]
+        MassSpring => ("mass-spring", "mass–spring–damper"),
+        /// Series RLC circuit.
+        Rlc => ("rlc", "series RLC circuit"),
+        /// U-tube manometer.
+        UTube => ("u-tube", "U-tube manometer"),
+        /// DC-motor position servo under PD control.
+        Servo => ("servo", "DC-motor position servo (PD control)"),
+        /// Building storey under ground motion.
+        Storey => ("storey", "building storey under ground motion"),
+        /// Two-capacity thermal system.
+        Thermal => ("thermal", "two-capacity thermal system"),
+    }
 }
 
 /// Every machine's physical parameters in one slot, in SI units.
