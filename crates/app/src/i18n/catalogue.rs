@@ -6,7 +6,7 @@ use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
 use std::cell::RefCell;
 
 /// The hand-written English messages, the fallback of every language (`locales/en.ftl`
-/// without its generated block of declared strings, which [`declared_english`] reads
+/// without its generated block of declared strings, which the module reads
 /// from the declarations themselves; see `build.rs`).
 pub const ENGLISH_FTL: &str = include_str!(concat!(env!("OUT_DIR"), "/en-messages.ftl"));
 
