@@ -1324,7 +1324,7 @@ regime-divergent = divergent
 ### design
 
 design-map-title = { $metric ->
-        [settling-time] Stabilisation dans ±{ $band } de x₀
+        [settling-time] Stabilisation à ±{ $band } de x₀
         [peak-rebound] Rebond maximal (% de x₀)
         [accel-rms] a_w (W_k)
        *[peak-transmissibility] Transmissibilité maximale |X/U|
@@ -1332,7 +1332,7 @@ design-map-title = { $metric ->
 design-bar-label = { $metric ->
         [settling-time] temps d'établissement dans ±{ $band } de x₀, réponse libre depuis le repos [s]
         [peak-rebound] rebond maximal, réponse libre depuis le repos [% de x₀]
-        [accel-rms] a_w (valeur efficace pondérée W_k) [m/s²]
+        [accel-rms] a_w (RMS pondérée W_k) [m/s²]
        *[peak-transmissibility] transmissibilité maximale |X/U| [m/m]
     }{ $scale ->
         [log] , couleurs logarithmiques
@@ -1341,7 +1341,7 @@ design-bar-label = { $metric ->
 design-axis-spring-rate = raideur du ressort k
 design-axis-damper-rate = coefficient d'amortissement c
 design-axis-settling-time = temps d'établissement dans ±{ $band } de x₀
-design-axis-comfort = a_w (valeur efficace pondérée W_k)
+design-axis-comfort = a_w (RMS pondérée W_k)
 design-marker-selected = choisi
 design-marker-settled = stabilisé
 design-series-column = k = { $k }, c variable
