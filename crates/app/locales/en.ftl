@@ -675,6 +675,66 @@ guide-column-range = range
 guide-column-default = default
 guide-log = log
 guide-readouts-plots = Readouts (`data-readout`): { $readouts }. Plots (`plots=`): { $plots }.
+### design
+
+design-map-title = { $metric ->
+        [settling-time] Settling into ±{ $band } of x₀
+        [peak-rebound] Peak rebound (% of x₀)
+        [accel-rms] a_w (W_k)
+       *[peak-transmissibility] Peak transmissibility |X/U|
+    }: { $low } → { $high }
+design-bar-label = { $metric ->
+        [settling-time] settling time into ±{ $band } of x₀, free response from rest [s]
+        [peak-rebound] peak rebound, free response from rest [% of x₀]
+        [accel-rms] a_w (W_k-weighted RMS) [m/s²]
+       *[peak-transmissibility] peak transmissibility |X/U| [m/m]
+    }{ $scale ->
+        [log] , logarithmic colours
+       *[linear] {""}
+    }
+design-axis-spring-rate = spring rate k
+design-axis-damper-rate = damper rate c
+design-axis-settling-time = settling time into ±{ $band } of x₀
+design-axis-comfort = a_w (W_k-weighted RMS)
+design-marker-selected = selected
+design-marker-settled = settled
+design-series-column = k = { $k }, c varied
+design-series-pareto-front = Pareto front
+design-series-band = settling band ±{ $band } of x₀
+design-series-fastest = fastest on the grid
+design-series-selected = selected design
+design-road = an ISO 8608 class { $class } road at { $speed }
+design-with-road = { $value } (class { $class } road, { $speed })
+design-grid-size = { $n } × { $n } = { $cells }
+design-grid-size-provisional = { $n } × { $n } = { $cells } ({ $full } × { $full } on the way)
+design-map-lowest = lowest { $value } at k = { $k }, c = { $c }
+design-map-no-cell = no cell is defined
+design-map-selected-settles = selected design ζ = { $zeta } settles into ±{ $band } of x₀ in { $time }
+design-map-selected-unsettled = selected design ζ = { $zeta } does not settle
+design-map-no-selection = no valid design selected
+design-describe-map = { $metric ->
+        [settling-time] Settling time of the free response from x₀ = { $x0 } into ±{ $band } of x₀,
+        [peak-rebound] Peak rebound of the free response from x₀ = { $x0 }, in % of x₀,
+        [accel-rms] Comfort a_w (W_k-weighted RMS body acceleration) of the two-DOF car (wheel { $wheel }, tyre { $tyre }), stationary on { $road },
+       *[peak-transmissibility] Peak transmissibility |X/U|
+    } over k { $k_span } and c { $c_span } ({ $grid } × { $grid } grid, m = { $mass }): { $lowest }; { $selected }{ $outside ->
+        [yes] {" "}(outside the map)
+       *[no] {""}
+    }. Colour from dark purple ({ $low }) to yellow ({ $high }){ $scale ->
+        [log] {" "}on a logarithmic scale
+       *[linear] {""}
+    }. Dashed iso-ζ lines for ζ = { $z1 }, { $z2 }, { $z3 }, { $z4 } and { $z5 }; × marks the lowest cell, ● the selected design.
+design-describe-pareto = Pareto front of { $count ->
+        [one] { $count } non-dominated design
+       *[other] { $count } non-dominated designs
+    }: from the fastest, settling into ±{ $band } of x₀ in { $fast_time } with a_w = { $fast_accel }, to the smoothest, { $smooth_time } with a_w = { $smooth_accel }. { $selected } Comfort a_w: the W_k-weighted RMS body acceleration of the two-DOF car on { $road }.
+design-pareto-selected = The selected design settles into ±{ $band } of x₀ in { $time } with a_w = { $accel }.
+design-pareto-selected-unsettled = The selected design has no settling time.
+design-pareto-empty = No design on the grid has both a settling time and a comfort value a_w.
+design-describe-response = Selected design (ζ = { $zeta }) released from rest at x₀ = { $x0 } (a free response, not a step): rebounds { $rebound } of x₀ and stays within ±{ $band } of x₀ after { $time }.
+design-describe-response-fastest = Selected design (ζ = { $zeta }) released from rest at x₀ = { $x0 } (a free response, not a step): rebounds { $rebound } of x₀ and stays within ±{ $band } of x₀ after { $time }; the fastest design on the grid (k = { $k }, c = { $c }) settles in { $fastest_time }.
+design-response-unsettled = The selected design does not settle.
+design-provisional = Provisional: from a coarse { $coarse } × { $coarse } grid while the { $full } × { $full } sweep runs. { $description }
 
 ## Declared strings (generated from the demo declarations)
 

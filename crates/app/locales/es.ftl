@@ -670,6 +670,66 @@ guide-column-range = intervalo
 guide-column-default = valor predeterminado
 guide-log = logarítmico
 guide-readouts-plots = Resultados (`data-readout`): { $readouts }. Gráficas (`plots=`): { $plots }.
+### design
+
+design-map-title = { $metric ->
+        [settling-time] Establecimiento en ±{ $band } de x₀
+        [peak-rebound] Rebote máximo (% de x₀)
+        [accel-rms] a_w (W_k)
+       *[peak-transmissibility] Transmisibilidad máxima |X/U|
+    }: { $low } → { $high }
+design-bar-label = { $metric ->
+        [settling-time] tiempo de establecimiento en ±{ $band } de x₀, respuesta libre desde el reposo [s]
+        [peak-rebound] rebote máximo, respuesta libre desde el reposo [% de x₀]
+        [accel-rms] a_w (RMS ponderada con W_k) [m/s²]
+       *[peak-transmissibility] transmisibilidad máxima |X/U| [m/m]
+    }{ $scale ->
+        [log] , colores logarítmicos
+       *[linear] {""}
+    }
+design-axis-spring-rate = rigidez del resorte k
+design-axis-damper-rate = constante del amortiguador c
+design-axis-settling-time = tiempo de establecimiento en ±{ $band } de x₀
+design-axis-comfort = a_w (RMS ponderada con W_k)
+design-marker-selected = seleccionado
+design-marker-settled = establecido
+design-series-column = k = { $k }, c variable
+design-series-pareto-front = frente de Pareto
+design-series-band = banda de establecimiento ±{ $band } de x₀
+design-series-fastest = el más rápido de la malla
+design-series-selected = diseño seleccionado
+design-road = una carretera ISO 8608 de clase { $class } a { $speed }
+design-with-road = { $value } (carretera de clase { $class }, { $speed })
+design-grid-size = { $n } × { $n } = { $cells }
+design-grid-size-provisional = { $n } × { $n } = { $cells } ({ $full } × { $full } en camino)
+design-map-lowest = valor mínimo { $value } en k = { $k }, c = { $c }
+design-map-no-cell = ninguna celda está definida
+design-map-selected-settles = el diseño seleccionado, con ζ = { $zeta }, se establece en ±{ $band } de x₀ en { $time }
+design-map-selected-unsettled = el diseño seleccionado, con ζ = { $zeta }, no se establece
+design-map-no-selection = ningún diseño válido seleccionado
+design-describe-map = { $metric ->
+        [settling-time] Tiempo de establecimiento de la respuesta libre desde x₀ = { $x0 } en ±{ $band } de x₀,
+        [peak-rebound] Rebote máximo de la respuesta libre desde x₀ = { $x0 }, en % de x₀,
+        [accel-rms] Confort a_w (aceleración RMS de la carrocería ponderada con W_k) del cuarto de vehículo de dos grados de libertad (rueda de { $wheel }, neumático de { $tyre }), estacionaria en { $road },
+       *[peak-transmissibility] Transmisibilidad máxima |X/U|
+    } para k en { $k_span } y c en { $c_span } (malla de { $grid } × { $grid }, m = { $mass }): { $lowest }; { $selected }{ $outside ->
+        [yes] {" "}(fuera del mapa)
+       *[no] {""}
+    }. Color desde morado oscuro ({ $low }) hasta amarillo ({ $high }){ $scale ->
+        [log] {" "}en escala logarítmica
+       *[linear] {""}
+    }. Líneas a trazos de ζ constante para ζ = { $z1 }; { $z2 }; { $z3 }; { $z4 } y { $z5 }; × marca la celda mínima y ●, el diseño seleccionado.
+design-describe-pareto = Frente de Pareto de { $count ->
+        [one] { $count } diseño no dominado
+       *[other] { $count } diseños no dominados
+    }: desde el más rápido, que se establece en ±{ $band } de x₀ en { $fast_time } con a_w = { $fast_accel }, hasta el más suave, { $smooth_time } con a_w = { $smooth_accel }. { $selected } Confort a_w: la aceleración RMS de la carrocería ponderada con W_k del cuarto de vehículo de dos grados de libertad en { $road }.
+design-pareto-selected = El diseño seleccionado se establece en ±{ $band } de x₀ en { $time } con a_w = { $accel }.
+design-pareto-selected-unsettled = El diseño seleccionado no tiene tiempo de establecimiento.
+design-pareto-empty = Ningún diseño de la malla tiene a la vez tiempo de establecimiento y valor de confort a_w.
+design-describe-response = Diseño seleccionado (ζ = { $zeta }) soltado desde el reposo en x₀ = { $x0 } (respuesta libre, no a un escalón): rebota un { $rebound } de x₀ y queda dentro de ±{ $band } de x₀ tras { $time }.
+design-describe-response-fastest = Diseño seleccionado (ζ = { $zeta }) soltado desde el reposo en x₀ = { $x0 } (respuesta libre, no a un escalón): rebota un { $rebound } de x₀ y queda dentro de ±{ $band } de x₀ tras { $time }; el diseño más rápido de la malla (k = { $k }, c = { $c }) se establece en { $fastest_time }.
+design-response-unsettled = El diseño seleccionado no se establece.
+design-provisional = Provisional: a partir de una malla gruesa de { $coarse } × { $coarse } mientras se calcula el barrido de { $full } × { $full }. { $description }
 
 ## Declared strings (generated from the demo declarations)
 
@@ -1315,12 +1375,14 @@ quarter-car-2dof-preset-6 = Amortiguador blando en una carretera mala
 ### design
 
 design-title = Espacio de diseño (k, c)
-design-summary = Cada celda del mapa es un cuarto de vehículo (masa suspendida m sobre un resorte k y un amortiguador c), coloreada según la métrica elegida: tiempo de establecimiento y rebote máximo de la respuesta libre al soltarlo desde el reposo en x₀ = 60 mm (no de la respuesta a un escalón: la banda y el rebote son relativos a x₀), aceleración RMS de la carrocería sobre una carretera aleatoria ISO 8608 a 72 km/h (el neumático filtra la excitación por encima de 10 Hz) o transmisibilidad máxima. Las líneas a trazos unen diseños con el mismo coeficiente de amortiguamiento ζ = c/(2√(km)). El frente de Pareto reúne los diseños que ningún otro supera a la vez en confort y en establecimiento. Haga clic en el mapa (o en un punto del frente) para elegir un diseño; mueva la masa para ver cómo se desplaza todo el mapa.
+design-summary = Cada celda del mapa es un cuarto de vehículo (masa suspendida m sobre un resorte k y un amortiguador c), coloreada según la métrica elegida: tiempo de establecimiento y rebote máximo de la respuesta libre al soltarlo desde el reposo en x₀ = 60 mm (no es una respuesta a un escalón: la banda y el rebote son relativos a x₀), transmisibilidad máxima, o el confort de marcha tal como lo mide ISO 2631-1: a_w, la aceleración RMS de la carrocería ponderada con el filtro W_k (cuánto siente una persona sentada cada frecuencia), estacionaria en una carretera aleatoria ISO 8608 a la velocidad V. Para el confort cada celda es el cuarto de vehículo de dos grados de libertad (esta carrocería sobre la rueda m_u y el neumático k_t elegidos abajo, con la ecuación de Lyapunov): los mismos números que la demo quarter-car-2dof para el mismo vehículo; las lecturas dan también el valor RMS sin ponderar. Las líneas a trazos unen diseños de igual coeficiente de amortiguamiento ζ = c/(2√(km)). El frente de Pareto reúne los diseños que ningún otro supera a la vez en confort y en establecimiento. Haga clic en el mapa (o en un punto del frente) para elegir un diseño; mueva la masa para ver cómo se desplaza todo el mapa.
 design-param-m = masa suspendida
+design-param-mu = confort: masa de la rueda (no suspendida)
+design-param-kt = confort: rigidez del neumático
 design-param-metric = métrica del mapa
 design-param-metric-settling-time = tiempo de establecimiento (respuesta libre)
 design-param-metric-peak-rebound = rebote máximo (respuesta libre)
-design-param-metric-accel-rms = aceleración RMS de la carrocería (confort)
+design-param-metric-accel-rms = confort a_w (aceleración RMS de la carrocería ponderada con W_k)
 design-param-metric-peak-transmissibility = transmisibilidad máxima |X/U|
 design-param-band = banda de establecimiento, ± % de x₀ (respuesta libre)
 design-param-road = carretera (ISO 8608)
@@ -1328,10 +1390,11 @@ design-param-road-a = clase A (muy buena)
 design-param-road-b = clase B (buena)
 design-param-road-c = clase C (media)
 design-param-road-d = clase D (mala)
-design-param-k-min = mapa: rigidez del resorte mínima
-design-param-k-max = mapa: rigidez del resorte máxima
-design-param-c-min = mapa: constante del amortiguador mínima
-design-param-c-max = mapa: constante del amortiguador máxima
+design-param-V = confort: velocidad
+design-param-k-min = mapa: rigidez mínima del resorte
+design-param-k-max = mapa: rigidez máxima del resorte
+design-param-c-min = mapa: constante mínima del amortiguador
+design-param-c-max = mapa: constante máxima del amortiguador
 design-param-k = rigidez del resorte seleccionada
 design-param-c = constante del amortiguador seleccionada
 design-param-n = celdas de la malla por eje
@@ -1340,7 +1403,8 @@ design-readout-c = constante del amortiguador seleccionada c
 design-readout-zeta = coeficiente de amortiguamiento ζ
 design-readout-settling-time = tiempo de establecimiento dentro de la banda ± de x₀ (respuesta libre)
 design-readout-overshoot = rebote máximo, % de x₀ (respuesta libre)
-design-readout-accel-rms = aceleración RMS de la carrocería
+design-readout-accel-rms = a_w: aceleración RMS de la carrocería ponderada con W_k de ISO 2631-1 (cuarto de vehículo de dos grados de libertad, estacionaria en la carretera ISO 8608 a la velocidad V)
+design-readout-accel-unweighted = aceleración RMS de la carrocería, sin ponderar (mismo vehículo y carretera)
 design-readout-grid-size = tamaño de la malla (celdas)
 design-readout-compute-time = tiempo de cálculo del barrido
 design-plot-map = Métrica sobre (k, c) con líneas de ζ constante

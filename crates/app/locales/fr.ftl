@@ -1333,3 +1333,104 @@ guide-column-default = valeur par défaut
 guide-log = logarithmique
 guide-readouts-plots = Résultats (`data-readout`) : { $readouts }. Graphiques (`plots=`) : { $plots }.
 
+### design
+
+design-map-title = { $metric ->
+        [settling-time] Stabilisation à ±{ $band } de x₀
+        [peak-rebound] Rebond maximal (% de x₀)
+        [accel-rms] a_w (W_k)
+       *[peak-transmissibility] Transmissibilité maximale |X/U|
+    } : { $low } → { $high }
+design-bar-label = { $metric ->
+        [settling-time] temps d'établissement dans ±{ $band } de x₀, réponse libre depuis le repos [s]
+        [peak-rebound] rebond maximal, réponse libre depuis le repos [% de x₀]
+        [accel-rms] a_w (RMS pondérée W_k) [m/s²]
+       *[peak-transmissibility] transmissibilité maximale |X/U| [m/m]
+    }{ $scale ->
+        [log] , couleurs logarithmiques
+       *[linear] {""}
+    }
+design-axis-spring-rate = raideur du ressort k
+design-axis-damper-rate = coefficient d'amortissement c
+design-axis-settling-time = temps d'établissement dans ±{ $band } de x₀
+design-axis-comfort = a_w (RMS pondérée W_k)
+design-marker-selected = choisi
+design-marker-settled = stabilisé
+design-series-column = k = { $k }, c variable
+design-series-pareto-front = front de Pareto
+design-series-band = bande d'établissement ±{ $band } de x₀
+design-series-fastest = le plus rapide de la grille
+design-series-selected = réglage choisi
+design-road = une route ISO 8608 de classe { $class } à { $speed }
+design-with-road = { $value } (route de classe { $class }, { $speed })
+design-grid-size = { $n } × { $n } = { $cells }
+design-grid-size-provisional = { $n } × { $n } = { $cells } ({ $full } × { $full } en cours)
+design-map-lowest = minimum { $value } en k = { $k }, c = { $c }
+design-map-no-cell = aucune case n'est définie
+design-map-selected-settles = le réglage choisi (ζ = { $zeta }) se stabilise dans ±{ $band } de x₀ en { $time }
+design-map-selected-unsettled = le réglage choisi (ζ = { $zeta }) ne se stabilise pas
+design-map-no-selection = aucun réglage valide choisi
+design-describe-map = { $metric ->
+        [settling-time] Temps d'établissement de la réponse libre depuis x₀ = { $x0 } dans ±{ $band } de x₀,
+        [peak-rebound] Rebond maximal de la réponse libre depuis x₀ = { $x0 }, en % de x₀,
+        [accel-rms] Confort a_w (accélération efficace de la caisse pondérée par W_k) du véhicule à deux degrés de liberté (roue de { $wheel }, pneu de { $tyre }), en régime stationnaire sur { $road },
+       *[peak-transmissibility] Transmissibilité maximale |X/U|
+    } pour k dans { $k_span } et c dans { $c_span } (grille de { $grid } × { $grid }, m = { $mass }) : { $lowest } ; { $selected }{ $outside ->
+        [yes] {" "}(hors de la carte)
+       *[no] {""}
+    }. Couleurs du violet foncé ({ $low }) au jaune ({ $high }){ $scale ->
+        [log] {" "}sur une échelle logarithmique
+       *[linear] {""}
+    }. Lignes iso-ζ en tirets pour ζ = { $z1 } ; { $z2 } ; { $z3 } ; { $z4 } et { $z5 } ; × marque la case minimale, ● le réglage choisi.
+design-describe-pareto = Front de Pareto de { $count ->
+        [one] { $count } réglage non dominé
+       *[other] { $count } réglages non dominés
+    } : du plus rapide, qui se stabilise dans ±{ $band } de x₀ en { $fast_time } avec a_w = { $fast_accel }, au plus confortable, { $smooth_time } avec a_w = { $smooth_accel }. { $selected } Confort a_w : accélération efficace de la caisse pondérée par W_k, pour le véhicule à deux degrés de liberté sur { $road }.
+design-pareto-selected = Le réglage choisi se stabilise dans ±{ $band } de x₀ en { $time } avec a_w = { $accel }.
+design-pareto-selected-unsettled = Le réglage choisi n'a pas de temps d'établissement.
+design-pareto-empty = Aucun réglage de la grille n'a à la fois un temps d'établissement et une valeur de confort a_w.
+design-describe-response = Réglage choisi (ζ = { $zeta }) lâché sans vitesse depuis x₀ = { $x0 } (réponse libre, pas une réponse indicielle) : rebondit de { $rebound } de x₀ et reste dans ±{ $band } de x₀ après { $time }.
+design-describe-response-fastest = Réglage choisi (ζ = { $zeta }) lâché sans vitesse depuis x₀ = { $x0 } (réponse libre, pas une réponse indicielle) : rebondit de { $rebound } de x₀ et reste dans ±{ $band } de x₀ après { $time } ; le réglage le plus rapide de la grille (k = { $k }, c = { $c }) se stabilise en { $fastest_time }.
+design-response-unsettled = Le réglage choisi ne se stabilise pas.
+design-provisional = Provisoire : d'après une grille grossière de { $coarse } × { $coarse }, pendant le calcul du balayage de { $full } × { $full }. { $description }
+design-title = Espace de conception (k, c)
+design-summary = Chaque case de la carte est un quart de véhicule (masse suspendue m sur un ressort k et un amortisseur c), colorée selon l'indicateur choisi : temps d'établissement et rebond maximal de la réponse libre lâchée sans vitesse depuis x₀ = 60 mm (pas une réponse indicielle : la bande et le rebond sont rapportés à x₀), transmissibilité maximale, ou confort vibratoire tel que le mesure l'ISO 2631-1 : a_w, l'accélération efficace (RMS) de la caisse pondérée par le filtre W_k (la sensibilité d'une personne assise à chaque fréquence), en régime stationnaire sur une route aléatoire ISO 8608 à la vitesse V. Pour le confort, chaque case est le véhicule à deux degrés de liberté (cette caisse sur la roue m_u et le pneu k_t réglés plus bas, via l'équation de Lyapunov) : les mêmes valeurs que la démo quarter-car-2dof pour le même véhicule ; les résultats donnent aussi la valeur efficace non pondérée. Les lignes en tirets relient les réglages de même taux d'amortissement ζ = c/(2√(km)). Le front de Pareto réunit les réglages qu'aucun autre ne surpasse à la fois en confort et en stabilisation. Cliquez sur la carte (ou sur un point du front) pour choisir un réglage ; déplacez la masse pour voir toute la carte se décaler.
+design-param-m = masse suspendue
+design-param-mu = confort : masse de la roue (non suspendue)
+design-param-kt = confort : raideur du pneu
+design-param-metric = indicateur de la carte
+design-param-metric-settling-time = temps d'établissement (réponse libre)
+design-param-metric-peak-rebound = rebond maximal (réponse libre)
+design-param-metric-accel-rms = confort a_w (accélération efficace de la caisse pondérée par W_k)
+design-param-metric-peak-transmissibility = transmissibilité maximale |X/U|
+design-param-band = bande d'établissement, ± % de x₀ (réponse libre)
+design-param-road = route (ISO 8608)
+design-param-road-a = classe A (très bonne)
+design-param-road-b = classe B (bonne)
+design-param-road-c = classe C (moyenne)
+design-param-road-d = classe D (mauvaise)
+design-param-V = confort : vitesse
+design-param-k-min = carte : raideur de ressort minimale
+design-param-k-max = carte : raideur de ressort maximale
+design-param-c-min = carte : coefficient d'amortissement minimal
+design-param-c-max = carte : coefficient d'amortissement maximal
+design-param-k = raideur de ressort choisie
+design-param-c = coefficient d'amortissement choisi
+design-param-n = cases de la grille par axe
+design-readout-k = raideur de ressort choisie k
+design-readout-c = coefficient d'amortissement choisi c
+design-readout-zeta = taux d'amortissement ζ
+design-readout-settling-time = temps d'établissement dans la bande ± de x₀ (réponse libre)
+design-readout-overshoot = rebond maximal, % de x₀ (réponse libre)
+design-readout-accel-rms = a_w : accélération efficace de la caisse pondérée par W_k de l'ISO 2631-1 (véhicule à deux degrés de liberté, en régime stationnaire sur la route ISO 8608 à la vitesse V)
+design-readout-accel-unweighted = accélération efficace de la caisse, non pondérée (même véhicule, même route)
+design-readout-grid-size = taille de la grille (cases)
+design-readout-compute-time = durée de calcul du balayage
+design-plot-map = Indicateur sur (k, c) avec lignes iso-ζ
+design-plot-pareto = Confort et stabilisation : front de Pareto
+design-plot-response = Réglage choisi : réponse libre x(t)
+design-preset-1 = Carte du temps d'établissement, 300 kg, ζ ≈ 0,37
+design-preset-2 = Véhicule chargé à 500 kg, mêmes composants
+design-preset-3 = Carte de confort sur une route de classe C
+design-preset-4 = Carte du rebond maximal, réglage à ζ = 0,7
+design-preset-5 = Grille fine de 160 × 160

@@ -1333,3 +1333,104 @@ guide-column-default = padrão
 guide-log = logarítmico
 guide-readouts-plots = Resultados (`data-readout`): { $readouts }. Gráficos (`plots=`): { $plots }.
 
+### design
+
+design-map-title = { $metric ->
+        [settling-time] Acomodação em ±{ $band } de x₀
+        [peak-rebound] Ressalto máximo (% de x₀)
+        [accel-rms] a_w (W_k)
+       *[peak-transmissibility] Transmissibilidade máxima |X/U|
+    }: { $low } → { $high }
+design-bar-label = { $metric ->
+        [settling-time] tempo de acomodação em ±{ $band } de x₀, resposta livre a partir do repouso [s]
+        [peak-rebound] ressalto máximo, resposta livre a partir do repouso [% de x₀]
+        [accel-rms] a_w (RMS ponderado por W_k) [m/s²]
+       *[peak-transmissibility] transmissibilidade máxima |X/U| [m/m]
+    }{ $scale ->
+        [log] , cores em escala logarítmica
+       *[linear] {""}
+    }
+design-axis-spring-rate = rigidez da mola k
+design-axis-damper-rate = coeficiente do amortecedor c
+design-axis-settling-time = tempo de acomodação em ±{ $band } de x₀
+design-axis-comfort = a_w (RMS ponderado por W_k)
+design-marker-selected = escolhido
+design-marker-settled = acomodado
+design-series-column = k = { $k }, c variável
+design-series-pareto-front = fronteira de Pareto
+design-series-band = faixa de acomodação ±{ $band } de x₀
+design-series-fastest = o mais rápido da malha
+design-series-selected = ajuste escolhido
+design-road = uma pista ISO 8608 de classe { $class } a { $speed }
+design-with-road = { $value } (pista de classe { $class }, { $speed })
+design-grid-size = { $n } × { $n } = { $cells }
+design-grid-size-provisional = { $n } × { $n } = { $cells } ({ $full } × { $full } a caminho)
+design-map-lowest = mínimo de { $value } em k = { $k }, c = { $c }
+design-map-no-cell = nenhuma célula está definida
+design-map-selected-settles = o ajuste escolhido (ζ = { $zeta }) acomoda-se em ±{ $band } de x₀ em { $time }
+design-map-selected-unsettled = o ajuste escolhido (ζ = { $zeta }) não se acomoda
+design-map-no-selection = nenhum ajuste válido escolhido
+design-describe-map = { $metric ->
+        [settling-time] Tempo de acomodação da resposta livre a partir de x₀ = { $x0 } em ±{ $band } de x₀,
+        [peak-rebound] Ressalto máximo da resposta livre a partir de x₀ = { $x0 }, em % de x₀,
+        [accel-rms] Conforto a_w (aceleração RMS da carroceria ponderada por W_k) do veículo com dois graus de liberdade (roda de { $wheel }, pneu de { $tyre }), em regime estacionário sobre { $road },
+       *[peak-transmissibility] Transmissibilidade máxima |X/U|
+    } para k em { $k_span } e c em { $c_span } (malha de { $grid } × { $grid }, m = { $mass }): { $lowest }; { $selected }{ $outside ->
+        [yes] {" "}(fora do mapa)
+       *[no] {""}
+    }. Cores do roxo escuro ({ $low }) ao amarelo ({ $high }){ $scale ->
+        [log] {" "}em escala logarítmica
+       *[linear] {""}
+    }. Linhas tracejadas de ζ constante para ζ = { $z1 }; { $z2 }; { $z3 }; { $z4 } e { $z5 }; × marca a célula mínima e ●, o ajuste escolhido.
+design-describe-pareto = Fronteira de Pareto com { $count ->
+        [one] { $count } ajuste não dominado
+       *[other] { $count } ajustes não dominados
+    }: do mais rápido, que se acomoda em ±{ $band } de x₀ em { $fast_time } com a_w = { $fast_accel }, ao mais confortável, { $smooth_time } com a_w = { $smooth_accel }. { $selected } Conforto a_w: aceleração RMS da carroceria ponderada por W_k, do veículo com dois graus de liberdade sobre { $road }.
+design-pareto-selected = O ajuste escolhido acomoda-se em ±{ $band } de x₀ em { $time } com a_w = { $accel }.
+design-pareto-selected-unsettled = O ajuste escolhido não tem tempo de acomodação.
+design-pareto-empty = Nenhum ajuste da malha tem ao mesmo tempo um tempo de acomodação e um valor de conforto a_w.
+design-describe-response = Ajuste escolhido (ζ = { $zeta }) solto a partir do repouso em x₀ = { $x0 } (resposta livre, não ao degrau): ressalta { $rebound } de x₀ e fica dentro de ±{ $band } de x₀ após { $time }.
+design-describe-response-fastest = Ajuste escolhido (ζ = { $zeta }) solto a partir do repouso em x₀ = { $x0 } (resposta livre, não ao degrau): ressalta { $rebound } de x₀ e fica dentro de ±{ $band } de x₀ após { $time }; o ajuste mais rápido da malha (k = { $k }, c = { $c }) acomoda-se em { $fastest_time }.
+design-response-unsettled = O ajuste escolhido não se acomoda.
+design-provisional = Provisório: a partir de uma malha grossa de { $coarse } × { $coarse } enquanto a varredura de { $full } × { $full } é calculada. { $description }
+design-title = Espaço de projeto (k, c)
+design-summary = Cada célula do mapa é um quarto de veículo (massa suspensa m sobre uma mola k e um amortecedor c), colorida pela métrica escolhida: tempo de acomodação e ressalto máximo da resposta livre, solta a partir do repouso em x₀ = 60 mm (não é uma resposta ao degrau: a faixa e o ressalto são relativos a x₀), transmissibilidade máxima, ou o conforto de rodagem como a ISO 2631-1 o mede: a_w, a aceleração RMS da carroceria ponderada pelo filtro W_k (o quanto uma pessoa sentada sente cada frequência), em regime estacionário sobre uma pista aleatória ISO 8608 à velocidade V. Para o conforto, cada célula é o veículo com dois graus de liberdade (esta carroceria sobre a roda m_u e o pneu k_t definidos abaixo, pela equação de Lyapunov): os mesmos números da demo quarter-car-2dof para o mesmo veículo; os resultados também dão o valor RMS sem ponderação. As linhas tracejadas ligam ajustes de mesma razão de amortecimento ζ = c/(2√(km)). A fronteira de Pareto reúne os ajustes que nenhum outro supera ao mesmo tempo em conforto e em acomodação. Clique no mapa (ou num ponto da fronteira) para escolher um ajuste; mova a massa para ver o mapa inteiro se deslocar.
+design-param-m = massa suspensa
+design-param-mu = conforto: massa da roda (não suspensa)
+design-param-kt = conforto: rigidez do pneu
+design-param-metric = métrica do mapa
+design-param-metric-settling-time = tempo de acomodação (resposta livre)
+design-param-metric-peak-rebound = ressalto máximo (resposta livre)
+design-param-metric-accel-rms = conforto a_w (aceleração RMS da carroceria ponderada por W_k)
+design-param-metric-peak-transmissibility = transmissibilidade máxima |X/U|
+design-param-band = faixa de acomodação, ± % de x₀ (resposta livre)
+design-param-road = pista (ISO 8608)
+design-param-road-a = classe A (muito boa)
+design-param-road-b = classe B (boa)
+design-param-road-c = classe C (média)
+design-param-road-d = classe D (ruim)
+design-param-V = conforto: velocidade
+design-param-k-min = mapa: menor rigidez da mola
+design-param-k-max = mapa: maior rigidez da mola
+design-param-c-min = mapa: menor coeficiente do amortecedor
+design-param-c-max = mapa: maior coeficiente do amortecedor
+design-param-k = rigidez da mola escolhida
+design-param-c = coeficiente do amortecedor escolhido
+design-param-n = células da malha por eixo
+design-readout-k = rigidez da mola escolhida k
+design-readout-c = coeficiente do amortecedor escolhido c
+design-readout-zeta = razão de amortecimento ζ
+design-readout-settling-time = tempo de acomodação na faixa ± de x₀ (resposta livre)
+design-readout-overshoot = ressalto máximo, % de x₀ (resposta livre)
+design-readout-accel-rms = a_w: aceleração RMS da carroceria ponderada pelo W_k da ISO 2631-1 (veículo com dois graus de liberdade, em regime estacionário sobre a pista ISO 8608 à velocidade V)
+design-readout-accel-unweighted = aceleração RMS da carroceria, sem ponderação (mesmo veículo e mesma pista)
+design-readout-grid-size = tamanho da malha (células)
+design-readout-compute-time = tempo de cálculo da varredura
+design-plot-map = Métrica sobre (k, c) com linhas de ζ constante
+design-plot-pareto = Conforto versus acomodação: fronteira de Pareto
+design-plot-response = Ajuste escolhido: resposta livre x(t)
+design-preset-1 = Mapa do tempo de acomodação, 300 kg, ζ ≈ 0,37
+design-preset-2 = Veículo carregado com 500 kg, mesmas peças
+design-preset-3 = Mapa de conforto numa pista de classe C
+design-preset-4 = Mapa do ressalto máximo, ajuste com ζ = 0,7
+design-preset-5 = Malha fina de 160 × 160

@@ -1318,3 +1318,101 @@ guide-column-default = 默认值
 guide-log = 对数
 guide-readouts-plots = 读数（`data-readout`）：{ $readouts }。图（`plots=`）：{ $plots }。
 
+### design
+
+design-map-title = { $metric ->
+        [settling-time] 调节时间（x₀ 的 ±{ $band }）
+        [peak-rebound] 最大回弹（x₀ 的 %）
+        [accel-rms] a_w（W_k）
+       *[peak-transmissibility] 最大传递率 |X/U|
+    }：{ $low } → { $high }
+design-bar-label = { $metric ->
+        [settling-time] 调节时间（x₀ 的 ±{ $band }，由静止释放的自由响应）[s]
+        [peak-rebound] 最大回弹（由静止释放的自由响应）[x₀ 的 %]
+        [accel-rms] a_w（W_k 加权均方根）[m/s²]
+       *[peak-transmissibility] 最大传递率 |X/U| [m/m]
+    }{ $scale ->
+        [log] ，对数色标
+       *[linear] {""}
+    }
+design-axis-spring-rate = 弹簧刚度 k
+design-axis-damper-rate = 阻尼系数 c
+design-axis-settling-time = 进入 x₀ 的 ±{ $band } 误差带的调节时间
+design-axis-comfort = a_w（W_k 加权均方根）
+design-marker-selected = 选定
+design-marker-settled = 已稳定
+design-series-column = k = { $k }，c 变化
+design-series-pareto-front = 帕累托前沿
+design-series-band = 误差带：x₀ 的 ±{ $band }
+design-series-fastest = 网格中最快的设计
+design-series-selected = 选定设计
+design-road = 以 { $speed } 行驶于 ISO 8608 { $class } 级路面
+design-with-road = { $value }（{ $class } 级路面，{ $speed }）
+design-grid-size = { $n } × { $n } = { $cells }
+design-grid-size-provisional = { $n } × { $n } = { $cells }（{ $full } × { $full } 计算中）
+design-map-lowest = 最小值 { $value }，位于 k = { $k }、c = { $c }
+design-map-no-cell = 没有任何单元格有定义
+design-map-selected-settles = 选定设计（ζ = { $zeta }）进入 x₀ 的 ±{ $band } 误差带的调节时间为 { $time }
+design-map-selected-unsettled = 选定设计（ζ = { $zeta }）不能稳定
+design-map-no-selection = 未选定有效设计
+design-describe-map = { $metric ->
+        [settling-time] 从 x₀ = { $x0 } 释放的自由响应进入 x₀ 的 ±{ $band } 误差带的调节时间
+        [peak-rebound] 从 x₀ = { $x0 } 释放的自由响应的最大回弹（以 x₀ 的 % 计）
+        [accel-rms] 两自由度车辆（车轮 { $wheel }，轮胎 { $tyre }）{ $road }时的稳态舒适性指标 a_w（W_k 加权车身加速度均方根）
+       *[peak-transmissibility] 最大传递率 |X/U|
+    }，k 范围 { $k_span }，c 范围 { $c_span }（{ $grid } × { $grid } 网格，m = { $mass }）：{ $lowest }；{ $selected }{ $outside ->
+        [yes] （在图外）
+       *[no] {""}
+    }。颜色从深紫色（{ $low }）到黄色（{ $high }）{ $scale ->
+        [log] ，对数色标
+       *[linear] {""}
+    }。虚线为 ζ = { $z1 }、{ $z2 }、{ $z3 }、{ $z4 } 和 { $z5 } 的等 ζ 线；× 标出最小值单元格，● 标出选定设计。
+design-describe-pareto = 帕累托前沿共有 { $count } 个非劣设计：从最快的设计（进入 x₀ 的 ±{ $band } 误差带的调节时间为 { $fast_time }，a_w = { $fast_accel }）到最平顺的设计（{ $smooth_time }，a_w = { $smooth_accel }）。{ $selected }舒适性 a_w：两自由度车辆{ $road }时 W_k 加权的车身加速度均方根。
+design-pareto-selected = 选定设计进入 x₀ 的 ±{ $band } 误差带的调节时间为 { $time }，a_w = { $accel }。
+design-pareto-selected-unsettled = 选定设计没有调节时间。
+design-pareto-empty = 网格中没有同时具有调节时间和舒适性指标 a_w 的设计。
+design-describe-response = 选定设计（ζ = { $zeta }）在 x₀ = { $x0 } 处由静止释放（自由响应，不是阶跃响应）：回弹为 x₀ 的 { $rebound }，{ $time } 后保持在 x₀ 的 ±{ $band } 以内。
+design-describe-response-fastest = 选定设计（ζ = { $zeta }）在 x₀ = { $x0 } 处由静止释放（自由响应，不是阶跃响应）：回弹为 x₀ 的 { $rebound }，{ $time } 后保持在 x₀ 的 ±{ $band } 以内；网格中最快的设计（k = { $k }，c = { $c }）的调节时间为 { $fastest_time }。
+design-response-unsettled = 选定设计不能稳定。
+design-provisional = 临时结果：基于 { $coarse } × { $coarse } 的粗网格，{ $full } × { $full } 的扫描仍在计算中。{ $description }
+design-title = 设计空间（k, c）
+design-summary = 图中每个单元格都是一个四分之一车辆（簧上质量 m 支承在弹簧 k 和阻尼器 c 上），按所选指标着色：从 x₀ = 60 mm 处由静止释放的自由响应的调节时间和最大回弹（不是阶跃响应：误差带和回弹都相对于 x₀），最大传递率，或按 ISO 2631-1 衡量的乘坐舒适性：a_w，即经 W_k 滤波器加权的车身加速度均方根（反映坐着的人对各频率振动的感受程度），为车辆以速度 V 行驶于随机 ISO 8608 路面时的稳态值。计算舒适性时，每个单元格是两自由度车辆（该车身装在下方设定的车轮 m_u 和轮胎 k_t 上，由李雅普诺夫方程求解）：对同一辆车，结果与 quarter-car-2dof 演示相同；读数还给出未加权的均方根。虚线连接阻尼比 ζ = c/(2√(km)) 相等的设计。帕累托前沿包含在舒适性和调节时间两方面都不会被其他任何设计同时超越的设计。点击图（或前沿上的一点）选择设计；改变质量可以看到整个图随之移动。
+design-param-m = 簧上质量
+design-param-mu = 舒适性：车轮（簧下）质量
+design-param-kt = 舒适性：轮胎刚度
+design-param-metric = 图中指标
+design-param-metric-settling-time = 调节时间（自由响应）
+design-param-metric-peak-rebound = 最大回弹（自由响应）
+design-param-metric-accel-rms = 舒适性 a_w（W_k 加权车身加速度均方根）
+design-param-metric-peak-transmissibility = 最大传递率 |X/U|
+design-param-band = 误差带，x₀ 的 ± %（自由响应）
+design-param-road = 路面（ISO 8608）
+design-param-road-a = A 级（很好）
+design-param-road-b = B 级（好）
+design-param-road-c = C 级（一般）
+design-param-road-d = D 级（差）
+design-param-V = 舒适性：车速
+design-param-k-min = 图：最小弹簧刚度
+design-param-k-max = 图：最大弹簧刚度
+design-param-c-min = 图：最小阻尼系数
+design-param-c-max = 图：最大阻尼系数
+design-param-k = 选定弹簧刚度
+design-param-c = 选定阻尼系数
+design-param-n = 每轴网格单元数
+design-readout-k = 选定弹簧刚度 k
+design-readout-c = 选定阻尼系数 c
+design-readout-zeta = 阻尼比 ζ
+design-readout-settling-time = 进入 x₀ 的 ± 误差带的调节时间（自由响应）
+design-readout-overshoot = 最大回弹，x₀ 的 %（自由响应）
+design-readout-accel-rms = a_w：按 ISO 2631-1 W_k 加权的车身加速度均方根（两自由度车辆，以车速 V 在 ISO 8608 路面上稳态行驶）
+design-readout-accel-unweighted = 车身加速度均方根，未加权（同一车辆和路面）
+design-readout-grid-size = 网格大小（单元数）
+design-readout-compute-time = 扫描计算时间
+design-plot-map = (k, c) 上的指标及等 ζ 线
+design-plot-pareto = 舒适性与调节时间：帕累托前沿
+design-plot-response = 选定设计：自由响应 x(t)
+design-preset-1 = 调节时间图，300 kg，ζ ≈ 0.37
+design-preset-2 = 满载车辆 500 kg，部件相同
+design-preset-3 = C 级路面上的舒适性图
+design-preset-4 = 最大回弹图，ζ = 0.7 的设计
+design-preset-5 = 细网格 160 × 160

@@ -3,8 +3,9 @@
 
 use super::{text, DesignSpace, Results, Selected, KILO, P, X0};
 use crate::figure::{finite_extent, padded, Axis, Figure, Heatmap, LineStyle, Marker};
-use crate::format::si;
+use crate::format::{shortest, si};
 use crate::plot::{curve, Ink};
+use crate::t;
 use zeta_solver::design::map::{lowest, MapColours};
 use zeta_solver::design::sweep::{iso_zeta_line_into, iso_zeta_span};
 use zeta_solver::grid::linspace;
@@ -28,24 +29,23 @@ const TOP_STRIP: f64 = 0.09;
 /// labelled in the blank strips, × on the lowest cell and ● on the selected design.
 pub(super) fn map(d: &DesignSpace, p: &P, r: &Results) -> Figure {
     let key = r.key;
-    let (_, unit, factor) = p.metric.describe();
+    let (unit, factor) = p.metric.describe();
     let raw = p.metric.values(&d.maps);
     let colours = MapColours::new(raw, factor, p.metric.log_colour());
     let ((k0, k1), (c0, c1)) = (key.k, key.c);
     let mut fig = Figure::plot(
-        format!(
-            "{}: {} → {}",
-            p.metric.short(p.band),
+        p.metric.title(
+            p.band,
             text::with_unit(colours.range.0, unit, 3),
-            text::with_unit(colours.range.1, unit, 3)
+            text::with_unit(colours.range.1, unit, 3),
         ),
         Axis::linear(
-            "spring rate k",
+            t!("design-axis-spring-rate"),
             "kN/m",
             (k0 / KILO, (k1 + RIGHT_STRIP * (k1 - k0)) / KILO),
         ),
         Axis::linear(
-            "damper rate c",
+            t!("design-axis-damper-rate"),
             "kN·s/m",
             (c0 / KILO, (c1 + TOP_STRIP * (c1 - c0)) / KILO),
         ),
@@ -75,7 +75,11 @@ pub(super) fn map(d: &DesignSpace, p: &P, r: &Results) -> Figure {
         // Labelled on the plot itself; a legend box would cover the map.
         fig = fig
             .with_line("", points, LineStyle::dashed(Ink::Vermillion, 2.0))
-            .with_marker(Marker::text(format!("ζ={zeta}"), at, Ink::Black));
+            .with_marker(Marker::text(
+                format!("ζ={}", shortest(zeta)),
+                at,
+                Ink::Black,
+            ));
     }
     let best = lowest(raw).and_then(|(i, v)| Some((v * factor, d.design_at(i)?)));
     if let Some((_, (bk, bc))) = best {
@@ -85,7 +89,7 @@ pub(super) fn map(d: &DesignSpace, p: &P, r: &Results) -> Figure {
     }
     if p.selected_inside() {
         fig = fig.with_marker(Marker::dot(
-            "selected",
+            t!("design-marker-selected"),
             (p.k / KILO, p.c / KILO),
             Ink::Black,
         ));
@@ -130,9 +134,13 @@ pub(super) fn pareto(d: &DesignSpace, p: &P, r: &Results) -> Figure {
     let sel_pt = r.sel.settling_time.zip(r.sel.accel_rms);
     let (xr, yr) = r.pareto_ranges;
     let mut fig = Figure::plot(
-        PARETO_TITLE,
-        Axis::linear(format!("settling time into ±{} % of x₀", p.band), "s", xr),
-        Axis::linear(text::COMFORT_AXIS, "m/s²", yr),
+        t!("design-plot-pareto"),
+        Axis::linear(
+            t!("design-axis-settling-time", band = text::pct(p.band)),
+            "s",
+            xr,
+        ),
+        Axis::linear(text::comfort_axis(), "m/s²", yr),
     );
     if let Some((ik, kcol)) = d.column_near(p.k) {
         let n = d.k_axis.len();
@@ -150,15 +158,23 @@ pub(super) fn pareto(d: &DesignSpace, p: &P, r: &Results) -> Figure {
             })
             .collect();
         fig = fig.with_line(
-            format!("k = {}, c varied", si(kcol, "N/m", 3)),
+            t!("design-series-column", k = si(kcol, "N/m", 3)),
             points,
             LineStyle::dotted(Ink::Green, 2.0),
         );
     }
     let description = text::describe_pareto(&pts, sel_pt, p);
-    fig = fig.with_line("Pareto front", pts, LineStyle::solid(Ink::Blue, 2.5));
+    fig = fig.with_line(
+        t!("design-series-pareto-front"),
+        pts,
+        LineStyle::solid(Ink::Blue, 2.5),
+    );
     if let Some(pt) = sel_pt {
-        fig = fig.with_marker(Marker::dot("selected", pt, Ink::Vermillion));
+        fig = fig.with_marker(Marker::dot(
+            t!("design-marker-selected"),
+            pt,
+            Ink::Vermillion,
+        ));
     }
     fig.described(description)
 }
@@ -185,38 +201,42 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
     let h = r.band.fraction() * X0;
     let band = LineStyle::dotted(Ink::Black, 1.2);
     let mut fig = Figure::plot(
-        RESPONSE_TITLE,
-        Axis::linear("time t", "s", (0.0, t_end)),
-        Axis::linear("displacement x", "m", (0.0, 1.0)),
+        t!("design-plot-response"),
+        Axis::linear(t!("axis-time"), "s", (0.0, t_end)),
+        Axis::linear(t!("axis-displacement"), "m", (0.0, 1.0)),
     )
     .with_line(
-        format!("settling band ±{} % of x₀", p.band),
+        t!("design-series-band", band = text::pct(p.band)),
         vec![(0.0, h), (t_end, h)],
         band,
     )
     .with_line("", vec![(0.0, -h), (t_end, -h)], band);
     if let Some((_, sys, _)) = r.fastest {
         fig = fig.with_line(
-            "fastest on the grid",
+            t!("design-series-fastest"),
             release(sys),
             LineStyle::dashed(Ink::Green, 2.0),
         );
     }
     if let Some(sys) = r.sel.sys {
         fig = fig.with_line(
-            "selected design",
+            t!("design-series-selected"),
             release(sys),
             LineStyle::solid(Ink::Blue, 2.5),
         );
         if let Some(t) = r.sel.settling_time.filter(|&t| t <= t_end) {
             let x = FreeResponse::new(sys, X0, 0.0).displacement(t);
-            fig = fig.with_marker(Marker::cross("settled", (t, x), Ink::Vermillion));
+            fig = fig.with_marker(Marker::cross(
+                t!("design-marker-settled"),
+                (t, x),
+                Ink::Vermillion,
+            ));
         }
     }
     let ys = fig.series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
     let (lo, hi) = padded(finite_extent(ys).unwrap_or((-X0, X0)), 0.08);
     // Headroom above the curves for the legend box.
-    fig.y = Axis::linear("displacement x", "m", (lo, hi + 0.55 * (hi - lo)));
+    fig.y = Axis::linear(t!("axis-displacement"), "m", (lo, hi + 0.55 * (hi - lo)));
     fig.with_origin_lines()
         .described(text::describe_response(p, r))
 }

@@ -320,13 +320,7 @@ impl Model for DesignSpace {
                     },
                 ),
                 ReadoutDef::formatted("grid_size", "grid size (cells)", "", |r| {
-                    let (n, cells) = (r.grid, r.grid * r.grid);
-                    let text = format!("{n} × {n} = {cells}");
-                    let full = r.key.n;
-                    Some(match r.provisional {
-                        false => (cells as f64, text),
-                        true => (cells as f64, format!("{text} ({full} × {full} on the way)")),
-                    })
+                    Some(((r.grid * r.grid) as f64, text::grid_size(r)))
                 }),
                 // Plain: the value is already in ms (an SI prefix would give "µms").
                 ReadoutDef::plain("compute_time", "sweep compute time", "ms", 3, |r| {

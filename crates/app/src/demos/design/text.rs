@@ -1,10 +1,12 @@
 //! The design demo's prose: summary, equation, metric names and the figures' text
 //! alternatives.
 
+use super::figures::ISO_ZETAS;
 use super::{Metric, Results, SweepKey, P, X0};
 use crate::figure::Figure;
-use crate::format::{si, significant};
+use crate::format::{shortest, si, significant, significant_plain};
 use crate::spec::Preset;
+use crate::t;
 
 pub(super) const SUMMARY: &str =
     "Every cell of the map is one quarter car (sprung mass m on spring k and \
@@ -29,80 +31,46 @@ pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 </mrow></math>";
 
 impl Metric {
-    /// Name, unit and factor from the solver's value to the shown one.
-    pub(super) fn describe(self) -> (&'static str, &'static str, f64) {
+    /// Unit and factor from the solver's value to the shown one.
+    pub(super) fn describe(self) -> (&'static str, f64) {
         match self {
-            Metric::SettlingTime => ("settling time", "s", 1.0),
-            Metric::PeakRebound => ("peak rebound", "%", 100.0),
-            Metric::AccelRms => (
-                "comfort a_w (W_k-weighted RMS body acceleration)",
-                "m/s²",
-                1.0,
-            ),
-            Metric::PeakTransmissibility => ("peak transmissibility |X/U|", "", 1.0),
+            Metric::SettlingTime => ("s", 1.0),
+            Metric::PeakRebound => ("%", 100.0),
+            Metric::AccelRms => ("m/s²", 1.0),
+            Metric::PeakTransmissibility => ("", 1.0),
         }
     }
 
-    /// The unit of the colour bar: what one unit of the shown value is.
-    fn bar_unit(self) -> &'static str {
+    /// The metric's selector value in the catalogues' messages.
+    fn id(self) -> &'static str {
         match self {
-            Metric::SettlingTime => "s",
-            Metric::PeakRebound => "% of x₀",
-            Metric::AccelRms => "m/s²",
-            Metric::PeakTransmissibility => "m/m",
-        }
-    }
-
-    /// What the metric is relative to, after its name: the free response and its band
-    /// (`band` in % of x₀), or the car and road of the comfort metric. Empty for peak
-    /// transmissibility.
-    fn relative_to(self, p: &P) -> String {
-        let band = p.band;
-        match self {
-            Metric::SettlingTime => format!(
-                " of the free response from x₀ = {} into ±{band} % of x₀,",
-                si(X0, "m", 2)
-            ),
-            Metric::PeakRebound => format!(
-                " of the free response from x₀ = {}, in % of x₀,",
-                si(X0, "m", 2)
-            ),
-            Metric::AccelRms => format!(
-                " of the two-DOF car (wheel {} kg, tyre {} kN/m), stationary on {},",
-                p.mu,
-                p.kt / 1e3,
-                road_text(p)
-            ),
-            Metric::PeakTransmissibility => String::new(),
+            Metric::SettlingTime => "settling-time",
+            Metric::PeakRebound => "peak-rebound",
+            Metric::AccelRms => "accel-rms",
+            Metric::PeakTransmissibility => "peak-transmissibility",
         }
     }
 
     /// The colour bar's label: the metric, relative to what, its unit and the scale.
     pub(super) fn bar_label(self, p: &P, log: bool) -> String {
-        let band = p.band;
-        let name = match self {
-            // Short enough for the bar's height; the caption says the rest.
-            Metric::AccelRms => COMFORT_AXIS,
-            _ => self.describe().0,
-        };
-        let of = match self {
-            Metric::SettlingTime => format!(" into ±{band} % of x₀, free response from rest"),
-            Metric::PeakRebound => ", free response from rest".to_string(),
-            Metric::AccelRms => String::new(),
-            Metric::PeakTransmissibility => String::new(),
-        };
-        let scale = if log { ", logarithmic colours" } else { "" };
-        format!("{name}{of} [{}]{scale}", self.bar_unit())
+        t!(
+            "design-bar-label",
+            metric = self.id(),
+            band = pct(p.band),
+            scale = scale(log)
+        )
     }
 
-    /// Short name for the plot title, saying what the value is relative to.
-    pub(super) fn short(self, band: f64) -> String {
-        match self {
-            Metric::SettlingTime => format!("Settling into ±{band} % of x₀"),
-            Metric::PeakRebound => "Peak rebound (% of x₀)".into(),
-            Metric::AccelRms => "a_w (W_k)".into(),
-            Metric::PeakTransmissibility => "Peak transmissibility |X/U|".into(),
-        }
+    /// Short name for the plot title, saying what the value is relative to, with the
+    /// range of the map's values.
+    pub(super) fn title(self, band: f64, low: String, high: String) -> String {
+        t!(
+            "design-map-title",
+            metric = self.id(),
+            band = pct(band),
+            low = low,
+            high = high
+        )
     }
 
     /// Whether the colours follow the logarithm (metrics spanning decades).
@@ -111,23 +79,58 @@ impl Metric {
     }
 }
 
+/// The selector value of a colour scale.
+fn scale(log: bool) -> &'static str {
+    if log {
+        "log"
+    } else {
+        "linear"
+    }
+}
+
+/// A percentage the user set (`5 %`), in the interface language's digits.
+pub(super) fn pct(v: f64) -> String {
+    format!("{} %", shortest(v))
+}
+
 /// The comfort metric's road: "an ISO 8608 class C road at 10 m/s".
 pub(super) fn road_text(p: &P) -> String {
-    format!("an ISO 8608 class {} road at {} m/s", p.road.letter(), p.v)
+    t!(
+        "design-road",
+        class = p.road.letter(),
+        speed = format!("{} m/s", shortest(p.v))
+    )
 }
 
 /// An acceleration readout with its road: "1.01 m/s² (class C road, 10 m/s)".
 pub(super) fn with_road(a: f64, key: &SweepKey) -> String {
-    format!(
-        "{} (class {} road, {} m/s)",
-        with_unit(a, "m/s²", 3),
-        key.road.letter(),
-        key.v
+    t!(
+        "design-with-road",
+        value = with_unit(a, "m/s²", 3),
+        class = key.road.letter(),
+        speed = format!("{} m/s", shortest(key.v))
     )
 }
 
+/// The grid-size readout: "100 × 100 = 10000", and the full grid still on the way while
+/// the maps shown are the coarse stand-in.
+pub(super) fn grid_size(r: &Results) -> String {
+    let (n, cells) = (r.grid, r.grid * r.grid);
+    match r.provisional {
+        false => t!("design-grid-size", n = n, cells = cells),
+        true => t!(
+            "design-grid-size-provisional",
+            n = n,
+            cells = cells,
+            full = r.key.n
+        ),
+    }
+}
+
 /// The Pareto plot's comfort axis (its road is in the caption and the map's).
-pub(super) const COMFORT_AXIS: &str = "a_w (W_k-weighted RMS)";
+pub(super) fn comfort_axis() -> String {
+    t!("design-axis-comfort")
+}
 
 /// `v` with its unit; accelerations stay in m/s² (no "mm/s²").
 pub(super) fn with_unit(v: f64, unit: &str, sig: usize) -> String {
@@ -151,23 +154,13 @@ pub(super) fn span_text(lo: f64, hi: f64, unit: &str) -> String {
         "µ" => 1e-6,
         _ => 1.0,
     };
+    // Three significant digits, then the shortest form of that (trailing zeros dropped),
+    // in the interface language's digits.
     let trim = |v: f64| {
-        let t = significant(v / scale, 3);
-        if t.contains('.') {
-            t.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            t
-        }
+        let plain = significant_plain(v / scale, 3);
+        plain.parse::<f64>().map_or(plain, shortest)
     };
     format!("{}–{} {}", trim(lo), trim(hi), full_unit)
-}
-
-fn capitalise(s: &str) -> String {
-    let mut c = s.chars();
-    match c.next() {
-        Some(f) => f.to_uppercase().chain(c).collect(),
-        None => String::new(),
-    }
 }
 
 /// The map in words: what it shows, its lowest cell, the selected design and the colours.
@@ -179,115 +172,126 @@ pub(super) fn describe_map(
     log: bool,
 ) -> String {
     let key = r.key;
-    let (name, unit, _) = p.metric.describe();
+    let (unit, _) = p.metric.describe();
     let shown = |v: f64| with_unit(v, unit, 3);
-    let best_text = match lowest {
-        Some((v, (bk, bc))) => format!(
-            "lowest {} at k = {}, c = {}",
-            shown(v),
-            si(bk, "N/m", 3),
-            si(bc, "N·s/m", 3)
+    let lowest = match lowest {
+        Some((v, (bk, bc))) => t!(
+            "design-map-lowest",
+            value = shown(v),
+            k = si(bk, "N/m", 3),
+            c = si(bc, "N·s/m", 3)
         ),
-        None => String::from("no cell is defined"),
+        None => t!("design-map-no-cell"),
     };
-    let selected_text = match (r.sel.zeta, r.sel.settling_time) {
-        (Some(z), Some(t)) => format!(
-            "selected design ζ = {} settles into ±{} % of x₀ in {}",
-            significant(z, 2),
-            p.band,
-            si(t, "s", 3)
+    let selected = match (r.sel.zeta, r.sel.settling_time) {
+        (Some(z), Some(t)) => t!(
+            "design-map-selected-settles",
+            zeta = significant(z, 2),
+            band = pct(p.band),
+            time = si(t, "s", 3)
         ),
-        (Some(z), None) => format!("selected design ζ = {} does not settle", significant(z, 2)),
-        _ => "no valid design selected".to_string(),
+        (Some(z), None) => t!("design-map-selected-unsettled", zeta = significant(z, 2)),
+        _ => t!("design-map-no-selection"),
     };
-    let outside = if p.selected_inside() {
-        ""
-    } else {
-        " (outside the map)"
-    };
-    format!(
-        "{}{} over k {} and c {} ({} × {} grid, m = {}): {}; {}{}. Colour from dark purple \
-         ({}) to yellow ({}){}. Dashed iso-ζ lines for ζ = 0.2, 0.3, 0.5, 0.7 and 1; × marks the lowest \
-         cell, ● the selected design.",
-        capitalise(name),
-        p.metric.relative_to(p),
-        span_text(key.k.0, key.k.1, "N/m"),
-        span_text(key.c.0, key.c.1, "N·s/m"),
-        r.grid,
-        r.grid,
-        si(key.m, "kg", 3),
-        best_text,
-        selected_text,
-        outside,
-        shown(range.0),
-        shown(range.1),
-        if log { " on a logarithmic scale" } else { "" },
+    let [z1, z2, z3, z4, z5] = ISO_ZETAS.map(shortest);
+    t!(
+        "design-describe-map",
+        metric = p.metric.id(),
+        x0 = si(X0, "m", 2),
+        band = pct(p.band),
+        wheel = format!("{} kg", shortest(p.mu)),
+        tyre = format!("{} kN/m", shortest(p.kt / 1e3)),
+        road = road_text(p),
+        k_span = span_text(key.k.0, key.k.1, "N/m"),
+        c_span = span_text(key.c.0, key.c.1, "N·s/m"),
+        grid = r.grid,
+        mass = si(key.m, "kg", 3),
+        lowest = lowest,
+        selected = selected,
+        outside = if p.selected_inside() { "no" } else { "yes" },
+        low = shown(range.0),
+        high = shown(range.1),
+        scale = scale(log),
+        z1 = z1,
+        z2 = z2,
+        z3 = z3,
+        z4 = z4,
+        z5 = z5
     )
 }
 
 /// The Pareto front in words, from its points `(settling time, a_w)` in front order.
 pub(super) fn describe_pareto(front: &[(f64, f64)], selected: Option<(f64, f64)>, p: &P) -> String {
-    let band = p.band;
+    let band = pct(p.band);
     let accel = |a: f64| with_unit(a, "m/s²", 3);
-    let front_len = front.len();
     match (front.first(), front.last()) {
-        (Some(a), Some(b)) => format!(
-            "Pareto front of {} non-dominated designs: from the fastest, settling into ±{band} % \
-             of x₀ in {} with a_w = {}, to the smoothest, {} with a_w = {}. {} Comfort a_w: \
-             the W_k-weighted RMS body acceleration of the two-DOF car on {}.",
-            front_len,
-            si(a.0, "s", 3),
-            accel(a.1),
-            si(b.0, "s", 3),
-            accel(b.1),
-            match selected {
-                Some((t, a)) => format!(
-                    "The selected design settles into ±{band} % of x₀ in {} with a_w = {}.",
-                    si(t, "s", 3),
-                    accel(a)
+        (Some(a), Some(b)) => t!(
+            "design-describe-pareto",
+            count = front.len(),
+            band = band.clone(),
+            fast_time = si(a.0, "s", 3),
+            fast_accel = accel(a.1),
+            smooth_time = si(b.0, "s", 3),
+            smooth_accel = accel(b.1),
+            selected = match selected {
+                Some((t, a)) => t!(
+                    "design-pareto-selected",
+                    band = band,
+                    time = si(t, "s", 3),
+                    accel = accel(a)
                 ),
-                None => "The selected design has no settling time.".into(),
+                None => t!("design-pareto-selected-unsettled"),
             },
-            road_text(p),
+            road = road_text(p)
         ),
-        _ => "No design on the grid has both a settling time and a comfort value a_w.".into(),
+        _ => t!("design-pareto-empty"),
     }
 }
 
 /// The selected design's response in words, beside the fastest design on the grid.
 pub(super) fn describe_response(p: &P, r: &Results) -> String {
-    let fastest = r.fastest.as_ref().and_then(|&((k, c), _, ts)| {
-        ts.map(|tb| {
-            format!(
-                "; the fastest design on the grid (k = {}, c = {}) settles in {}",
-                si(k, "N/m", 3),
-                si(c, "N·s/m", 3),
-                si(tb, "s", 3)
-            )
-        })
-    });
+    let fastest = r
+        .fastest
+        .as_ref()
+        .and_then(|&((k, c), _, ts)| ts.map(|tb| (k, c, tb)));
     match (r.sel.zeta, r.sel.settling_time, r.sel.overshoot) {
-        (Some(z), Some(t), Some(o)) => format!(
-            "Selected design (ζ = {}) released from rest at x₀ = {} (a free response, not a \
-             step): rebounds {} of x₀ and stays within ±{} % of x₀ after {}{}.",
-            significant(z, 3),
-            si(X0, "m", 2),
-            si(o, "%", 3),
-            p.band,
-            si(t, "s", 3),
-            fastest.unwrap_or_default()
-        ),
-        _ => "The selected design does not settle.".into(),
+        (Some(z), Some(t), Some(o)) => {
+            let (zeta, x0, rebound) = (significant(z, 3), si(X0, "m", 2), si(o, "%", 3));
+            let (band, time) = (pct(p.band), si(t, "s", 3));
+            match fastest {
+                Some((k, c, tb)) => t!(
+                    "design-describe-response-fastest",
+                    zeta = zeta,
+                    x0 = x0,
+                    rebound = rebound,
+                    band = band,
+                    time = time,
+                    k = si(k, "N/m", 3),
+                    c = si(c, "N·s/m", 3),
+                    fastest_time = si(tb, "s", 3)
+                ),
+                None => t!(
+                    "design-describe-response",
+                    zeta = zeta,
+                    x0 = x0,
+                    rebound = rebound,
+                    band = band,
+                    time = time
+                ),
+            }
+        }
+        _ => t!("design-response-unsettled"),
     }
 }
 
 /// A figure drawn from the coarse sweep while the full one runs, marked as provisional in
 /// its description (its title is left as it is: the map's already fills a phone's width).
 pub(super) fn provisional(mut fig: Figure, r: &Results) -> Figure {
-    let (g, n) = (r.grid, r.key.n);
-    fig.description = format!(
-        "Provisional: from a coarse {g} × {g} grid while the {n} × {n} sweep runs. {}",
-        fig.description
+    fig.description = t!(
+        "design-provisional",
+        coarse = r.grid,
+        full = r.key.n,
+        description = std::mem::take(&mut fig.description)
     );
     fig
 }
