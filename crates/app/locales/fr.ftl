@@ -859,6 +859,8 @@ integrators-method-symplectic-euler = Euler symplectique
 integrators-method-heun = Heun
 integrators-method-rk4 = RK4
 integrators-legend-symplectic-euler = Euler sympl. ×
+integrators-legend-euler = Euler
+integrators-legend-heun = Heun
 integrators-legend-dp45 = DP45 ● pas
 integrators-legend-growing = { $legend } ×{ $growth }/pas ↑
 integrators-legend-order = { $legend } : { $order }
@@ -1434,3 +1436,19 @@ design-preset-2 = Véhicule chargé à 500 kg, mêmes composants
 design-preset-3 = Carte de confort sur une route de classe C
 design-preset-4 = Carte du rebond maximal, réglage à ζ = 0,7
 design-preset-5 = Grille fine de 160 × 160
+
+## Avis (une valeur de paramètre inutilisable)
+
+notice-not-a-toggle = { $label } ({ $key }) : « { $value } » n’est ni activé ni désactivé ; valeur par défaut utilisée.
+notice-not-an-option = { $label } ({ $key }) : « { $value } » ne fait pas partie de { $options } ; valeur par défaut utilisée.
+notice-not-a-number = { $label } ({ $key }) : « { $value } » n’est pas un nombre ; valeur par défaut { $default } utilisée.
+notice-out-of-range = { $label } ({ $key }) = { $value } est hors de { $min } … { $max }{ $unit } ; { $used } utilisé.
+notice-range-empty = { $label } ({ $key }) : la plage « { $value } » est vide dans { $min } … { $max } ; plage complète conservée.
+notice-range-not-two-numbers = { $label } ({ $key }) : la plage « { $value } » n’est pas deux nombres « bas,haut » ; plage complète conservée.
+notice-step-invalid = { $label } ({ $key }) : le pas « { $value } » n’est pas un nombre entre 0 et { $span } ; { $step } conservé.
+
+## Fichiers exportés
+
+export-csv-heading = Zeta Lab, démonstration { $demo } : { $title }
+export-series = série { $n }
+

@@ -859,6 +859,8 @@ integrators-method-symplectic-euler = Euler simplético
 integrators-method-heun = Heun
 integrators-method-rk4 = RK4
 integrators-legend-symplectic-euler = Euler simpl. ×
+integrators-legend-euler = Euler
+integrators-legend-heun = Heun
 integrators-legend-dp45 = DP45 ● passos
 integrators-legend-growing = { $legend } ×{ $growth }/passo ↑
 integrators-legend-order = { $legend }: { $order }
@@ -1434,3 +1436,19 @@ design-preset-2 = Veículo carregado com 500 kg, mesmas peças
 design-preset-3 = Mapa de conforto numa pista de classe C
 design-preset-4 = Mapa do ressalto máximo, ajuste com ζ = 0,7
 design-preset-5 = Malha fina de 160 × 160
+
+## Avisos (um valor de parâmetro que não pôde ser usado)
+
+notice-not-a-toggle = { $label } ({ $key }): “{ $value }” não é ligado nem desligado; usando o padrão.
+notice-not-an-option = { $label } ({ $key }): “{ $value }” não é nenhuma de { $options }; usando o padrão.
+notice-not-a-number = { $label } ({ $key }): “{ $value }” não é um número; usando o padrão { $default }.
+notice-out-of-range = { $label } ({ $key }) = { $value } está fora de { $min } … { $max }{ $unit }; usando { $used }.
+notice-range-empty = { $label } ({ $key }): o intervalo “{ $value }” fica vazio dentro de { $min } … { $max }; mantendo o intervalo completo.
+notice-range-not-two-numbers = { $label } ({ $key }): o intervalo “{ $value }” não são dois números “mín,máx”; mantendo o intervalo completo.
+notice-step-invalid = { $label } ({ $key }): o passo “{ $value }” não é um número entre 0 e { $span }; mantendo { $step }.
+
+## Arquivos exportados
+
+export-csv-heading = Zeta Lab, demonstração { $demo }: { $title }
+export-series = série { $n }
+

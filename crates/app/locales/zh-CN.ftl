@@ -859,6 +859,8 @@ integrators-method-symplectic-euler = 辛欧拉法
 integrators-method-heun = Heun 法
 integrators-method-rk4 = RK4 法
 integrators-legend-symplectic-euler = 辛欧拉 ×
+integrators-legend-euler = 欧拉法
+integrators-legend-heun = Heun 法
 integrators-legend-dp45 = DP45 ● 步
 integrators-legend-growing = { $legend } ×{ $growth }/步 ↑
 integrators-legend-order = { $legend }：{ $order }
@@ -1416,3 +1418,19 @@ design-preset-2 = 满载车辆 500 kg，部件相同
 design-preset-3 = C 级路面上的舒适性图
 design-preset-4 = 最大回弹图，ζ = 0.7 的设计
 design-preset-5 = 细网格 160 × 160
+
+## 提示（无法使用的参数值）
+
+notice-not-a-toggle = { $label }（{ $key }）：“{ $value }”不是开或关；改用默认值。
+notice-not-an-option = { $label }（{ $key }）：“{ $value }”不是 { $options } 之一；改用默认值。
+notice-not-a-number = { $label }（{ $key }）：“{ $value }”不是数字；改用默认值 { $default }。
+notice-out-of-range = { $label }（{ $key }）= { $value } 超出 { $min } … { $max }{ $unit }；改用 { $used }。
+notice-range-empty = { $label }（{ $key }）：范围“{ $value }”在 { $min } … { $max } 内为空；保留完整范围。
+notice-range-not-two-numbers = { $label }（{ $key }）：范围“{ $value }”不是“下限,上限”两个数；保留完整范围。
+notice-step-invalid = { $label }（{ $key }）：步长“{ $value }”不是 0 到 { $span } 之间的数；保留 { $step }。
+
+## 导出文件
+
+export-csv-heading = Zeta Lab，演示 { $demo }：{ $title }
+export-series = 序列 { $n }
+

@@ -46,9 +46,9 @@ impl Look {
     /// The method's legend entry.
     pub fn legend(&self) -> String {
         match self.key {
-            "euler" => "Euler".to_string(),
+            "euler" => t!("integrators-legend-euler"),
             "symplectic_euler" => t!("integrators-legend-symplectic-euler"),
-            "heun" => "Heun".to_string(),
+            "heun" => t!("integrators-legend-heun"),
             _ => "RK4".to_string(),
         }
     }
