@@ -1,6 +1,7 @@
 //! A plot with axes: the chart, its mesh and tick labels, and where each layer goes.
 
 use super::colour_bar::{draw_colour_bar, COLOUR_BAR_WIDTH};
+use super::fit::fit;
 use super::heatmap::{blit_heatmap, draw_heatmap};
 use super::legend::{free_corner, legend_entries, Legend};
 use super::lines::draw_lines_and_markers;
@@ -43,16 +44,17 @@ where
     X: AsRangedCoord<Value = f64>,
     Y: AsRangedCoord<Value = f64>,
 {
-    let font = ("sans-serif", 15.0 * scale)
-        .into_font()
-        .color(&theme.foreground);
     let right = if fig.heatmap.is_some() {
         COLOUR_BAR_WIDTH
     } else {
         10.0
     };
+    let (w, _) = area.dim_in_pixel();
+    let room = f64::from(w) - f64::from(px(20.0, scale));
+    let (title, size) = fit(area, &fig.title, 15.0 * scale, room);
+    let font = ("sans-serif", size).into_font().color(&theme.foreground);
     ChartBuilder::on(area)
-        .caption(&fig.title, font)
+        .caption(title, font)
         .margin(px(10.0, scale))
         .margin_right(px(right, scale))
         .x_label_area_size(px(42.0, scale))
@@ -101,11 +103,19 @@ where
     let (area, band) = root.split_vertically(h.saturating_sub(band_h));
     let mut chart = build(&area, fig, theme, scale, xr(), yr())?;
 
+    // Axis names as long as the axes: one size for both, each cut only if it must be.
+    let (px_w, px_h) = chart.plotting_area().dim_in_pixel();
+    let (x_title, y_title) = (fig.x.title(), fig.y.title());
+    let (_, x_size) = fit(&area, &x_title, 13.0 * scale, f64::from(px_w));
+    let (_, y_size) = fit(&area, &y_title, 13.0 * scale, f64::from(px_h));
+    let desc = x_size.min(y_size);
+    let (x_title, _) = fit(&area, &x_title, desc, f64::from(px_w));
+    let (y_title, _) = fit(&area, &y_title, desc, f64::from(px_h));
     chart
         .configure_mesh()
-        .x_desc(fig.x.title())
-        .y_desc(fig.y.title())
-        .axis_desc_style(font(13.0))
+        .x_desc(x_title)
+        .y_desc(y_title)
+        .axis_desc_style(("sans-serif", desc).into_font().color(&fg))
         .label_style(font(12.0))
         .bold_line_style(theme.grid.stroke_width(px(1.0, scale)))
         .light_line_style(theme.grid_minor.stroke_width(px(1.0, scale)))

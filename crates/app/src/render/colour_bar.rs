@@ -59,13 +59,14 @@ pub(super) fn draw_colour_bar<DB: DrawingBackend>(
         .map_err(err)?;
     }
     if !h.label.is_empty() {
-        let along = ("sans-serif", 12.0 * scale)
+        let (label, size) = super::fit::fit(area, &h.label, 12.0 * scale, f64::from(bottom - top));
+        let along = ("sans-serif", size)
             .into_font()
             .color(&theme.foreground)
             .transform(FontTransform::Rotate90)
             .pos(Pos::new(HPos::Center, VPos::Top));
         let x = right + px(COLOUR_BAR_WIDTH - 4.0, scale) as i32;
-        area.draw(&Text::new(h.label.clone(), (x, (top + bottom) / 2), along))
+        area.draw(&Text::new(label, (x, (top + bottom) / 2), along))
             .map_err(err)?;
     }
     Ok(())

@@ -8,6 +8,7 @@
 
 mod chart;
 mod colour_bar;
+mod fit;
 mod heatmap;
 mod hold;
 mod legend;

@@ -326,3 +326,46 @@ fn a_drawn_axis_through_zero_labels_its_zero_tick_0() {
         );
     }
 }
+
+#[test]
+fn titles_and_axis_names_longer_than_their_room_shrink_then_cut() {
+    let draw = |fig: &Figure, w: u32| {
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (w, 300)).into_drawing_area();
+            render(&root, fig, &Theme::LIGHT, 1.0).unwrap();
+        }
+        svg
+    };
+    let short = draw(&sample(), 640);
+    assert!(
+        short.contains("test") && !short.contains('…'),
+        "a short title stays whole: {short}"
+    );
+
+    // A little too long for a phone: drawn smaller, whole.
+    let medium = "Settling into ±5 % of x₀, free response: 300 ms → 5.15 s";
+    let fig = Figure {
+        title: medium.into(),
+        ..sample()
+    };
+    let svg = draw(&fig, 360);
+    assert!(svg.contains(medium), "shrunk, not cut: {svg}");
+    assert!(
+        !svg.contains("font-size=\"15\""),
+        "the title is smaller than 15 px"
+    );
+
+    // Far too long: cut with an ellipsis, never past the edge.
+    let fig = Figure {
+        title: "a very long title that no phone can hold ".repeat(6),
+        y: Axis::linear(
+            "an axis name far longer than the plot is tall ".repeat(4),
+            "m",
+            (0.0, 1.0),
+        ),
+        ..sample()
+    };
+    let svg = draw(&fig, 360);
+    assert!(svg.matches('…').count() >= 2, "title and y name cut: {svg}");
+}
