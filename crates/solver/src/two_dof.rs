@@ -269,7 +269,8 @@ pub enum Road {
         /// Speed V (m/s), > 0.
         speed: f64,
     },
-    /// `u = height` (m) for `t ≥ 0`. The impulse `c_t·height·δ(t)` through tyre damping is
+    /// `u = height` (m) for `t > 0`, `u(0) = 0`: the car starts at rest on the level road
+    /// and meets the kerb at once. The impulse `c_t·height·δ(t)` through tyre damping is
     /// neglected (`u' = 0`).
     Step {
         /// Step height (m).
@@ -308,7 +309,7 @@ impl Road {
                 let (s, c) = (k * x).sin_cos();
                 (0.5 * height * (1.0 - c), 0.5 * height * k * speed * s)
             }
-            Road::Step { height } => (*height, 0.0),
+            Road::Step { height } => (if t > 0.0 { *height } else { 0.0 }, 0.0),
             Road::Sine {
                 amplitude,
                 frequency_hz,

@@ -36,7 +36,8 @@
 //! road.fill_uniform(&Road::Step { height: 0.05 }, 1000.0, 2.0);
 //! let run = car.run_exact(&road, ExactConfig { tyre: Tyre::Unilateral, max_step: 2e-3 }).unwrap();
 //! assert_eq!(run.metrics.window, 2.0);
-//! assert!(run.metrics.airborne_time == 0.0); // a 5 cm kerb does not throw the wheel
+//! // An ideal 5 cm kerb (met within the first 1 ms sample) throws the wheel for a moment.
+//! assert!(run.metrics.airborne_time > 0.0 && run.metrics.airborne_time < 0.01);
 //! assert!((run.y.last().unwrap()[0] - 0.05).abs() < 1e-3); // the body settles on the kerb
 //! ```
 
