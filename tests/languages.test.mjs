@@ -229,7 +229,8 @@ function layoutProblems(page) {
 
 // Plain-ASCII words that may appear outside the pseudo-locale's brackets: the brand, units,
 // formats and the parameters' symbols, which stay as declared (`seed`; symbols with a
-// subscript such as `k_stop` or `F_static/F_c` are skipped whole).
+// subscript such as `k_stop` or `F_static/F_c`, and units with a slash such as `mrad/s`,
+// are skipped whole).
 const ALLOWED = new Set(['Zeta', 'Lab', 'rad', 'PNG', 'SVG', 'CSV', 'seed']);
 
 /** Visible text of en-XA with a run of 4+ plain ASCII letters outside [brackets]. */
@@ -241,13 +242,13 @@ function escapedText(page) {
       const host = n.parentElement;
       if (!host || host.closest('script, style, noscript, math, option, textarea, [hidden], [aria-hidden="true"]')) continue;
       if (!host.getClientRects().length) continue;
-      const text = n.textContent.replace(/\[[^\]]*\]/g, ' ').replace(/[A-Za-z0-9]*_[A-Za-z0-9_/]*/g, ' ');
+      const text = n.textContent.replace(/\[[^\]]*\]/g, ' ').replace(/[A-Za-z0-9]*_[A-Za-z0-9_/]*/g, ' ').replace(/[A-Za-zµ·]+\/[A-Za-z0-9µ·²³]+/g, ' ');
       for (const m of text.matchAll(/[A-Za-z]{4,}/g)) if (!allowed.includes(m[0])) out.add(`${m[0]} in “${n.textContent.trim().slice(0, 60)}”`);
     }
     for (const e of document.querySelectorAll('[aria-label], [title], select')) {
       if (e.closest('[hidden]')) continue;
       const label = e.tagName === 'SELECT' ? (e.selectedOptions[0]?.textContent ?? '') : (e.getAttribute('aria-label') || e.getAttribute('title'));
-      const text = label.replace(/\[[^\]]*\]/g, ' ').replace(/[A-Za-z0-9]*_[A-Za-z0-9_/]*/g, ' ');
+      const text = label.replace(/\[[^\]]*\]/g, ' ').replace(/[A-Za-z0-9]*_[A-Za-z0-9_/]*/g, ' ').replace(/[A-Za-zµ·]+\/[A-Za-z0-9µ·²³]+/g, ' ');
       for (const m of text.matchAll(/[A-Za-z]{4,}/g)) if (!allowed.includes(m[0])) out.add(`${m[0]} in label “${label.slice(0, 60)}”`);
     }
     return [...out];
