@@ -146,23 +146,36 @@ pub(super) fn spring(r: &Results) -> Figure {
     let nl = symmetric(reach, |x| model.elastic_force(x));
     let lin = symmetric(reach, |x| cfg.k * x);
     let extent = finite_extent(nl.iter().chain(&lin).map(|p| p.1)).unwrap_or((-1.0, 1.0));
-    Figure::plot(
+    force_plot(
         t!("nonlinear-plot-spring"),
         Axis::linear(t!("axis-extension"), "m", (-reach, reach)),
+        extent,
+        (t!("nonlinear-series-linear-spring"), lin),
+        (t!("nonlinear-series-spring"), nl),
+    )
+    .described(text::describe_spring(model, reach, max_travel))
+}
+
+/// A force against `x`: the linear model's line (dashed) under the nonlinear one.
+fn force_plot(
+    title: String,
+    x: Axis,
+    extent: (f64, f64),
+    (linear_label, linear): (String, Vec<(f64, f64)>),
+    (label, nonlinear): (String, Vec<(f64, f64)>),
+) -> Figure {
+    Figure::plot(
+        title,
+        x,
         Axis::linear(t!("axis-force"), "N", with_legend_room(extent)),
     )
     .with_line(
-        t!("nonlinear-series-linear-spring"),
-        lin,
+        linear_label,
+        linear,
         LineStyle::dashed(Ink::Vermillion, 2.0),
     )
-    .with_line(
-        t!("nonlinear-series-spring"),
-        nl,
-        LineStyle::solid(Ink::Blue, 2.5),
-    )
+    .with_line(label, nonlinear, LineStyle::solid(Ink::Blue, 2.5))
     .with_origin_lines()
-    .described(text::describe_spring(model, reach, max_travel))
 }
 
 /// Damper plus friction force against velocity, beside the linear model's mean damper.
@@ -179,22 +192,13 @@ pub(super) fn damper(r: &Results) -> Figure {
     let lin = symmetric(vmax, |v| c_mean * v);
     let extent =
         finite_extent(nl.iter().chain(&lin).map(|p| p.1).chain([0.0])).unwrap_or((-1.0, 1.0));
-    Figure::plot(
+    force_plot(
         t!("nonlinear-plot-damper"),
         Axis::linear(t!("nonlinear-axis-velocity-rebound"), "m/s", (-vmax, vmax)),
-        Axis::linear(t!("axis-force"), "N", with_legend_room(extent)),
+        extent,
+        (t!("nonlinear-series-linear-damper"), lin),
+        (t!("nonlinear-series-damper"), nl),
     )
-    .with_line(
-        t!("nonlinear-series-linear-damper"),
-        lin,
-        LineStyle::dashed(Ink::Vermillion, 2.0),
-    )
-    .with_line(
-        t!("nonlinear-series-damper"),
-        nl,
-        LineStyle::solid(Ink::Blue, 2.5),
-    )
-    .with_origin_lines()
     .described(text::describe_damper(model, vmax, c_mean))
 }
 
