@@ -20,10 +20,19 @@ let active = { tag: 'en', name: 'English', dir: 'ltr', rules: 'en', pseudo: fals
 /** The fetched catalogues by tag, to load again into a fresh module instance. */
 const fetched = new Map();
 
-// Before the module starts only the "cannot load the solver" notice can be shown.
+// Before the module starts only the "cannot load the solver" notice can be shown, and
+// after a trap the module may not answer until the page has recovered: these English
+// texts (the same as en.ftl's) stand in then.
 const BEFORE_START = {
   'page-no-wasm': 'The solver could not be loaded ({ $text }). This page needs WebAssembly.',
+  'page-failed': 'Something went wrong and the demo was restarted: { $text }',
 };
+
+/** How long a catalogue download may take before the page goes on without it. */
+const FETCH_TIMEOUT_MS = 8000;
+
+/** Counts language requests, so that a slow download never overrides a later choice. */
+let generation = 0;
 
 /** The message id of the page key `camelKey`: `page-camel-key`. */
 function pageId(key) {
@@ -33,7 +42,13 @@ function pageId(key) {
 /** The string `key` (a `page-…` message) in the page language, with `vars` as its arguments. */
 export function t(key, vars = {}) {
   const id = pageId(key);
-  if (wasm) return wasm.message(id, vars);
+  if (wasm) {
+    try {
+      return wasm.message(id, vars);
+    } catch {
+      // a trapped module instance: fall through to the stand-ins until it is replaced
+    }
+  }
   const s = BEFORE_START[id] ?? key;
   return s.replace(/\{ \$(\w+) \}/g, (_, k) => String(vars[k] ?? ''));
 }
@@ -84,25 +99,32 @@ export function requestedLanguages(search = window.location.search) {
 
 /**
  * Makes the best language for `requested` active (fetching its catalogue if it has one
- * not loaded yet). Resolves to `{entry, problem}`: `problem` is set when the catalogue
- * could not be fetched or read, and the page then stays English.
+ * not loaded yet, for at most FETCH_TIMEOUT_MS). Resolves to `{entry, problem, stale}`:
+ * `problem` is set when the catalogue could not be fetched or read, and the page is then
+ * in English; `stale` when a later request overtook this one (the caller
+ * then does nothing more).
  */
 export async function useLanguage(module, requested) {
   wasm = module;
+  const mine = ++generation;
   let entry = wasm.setLanguage(requested.join(','));
   let problem = null;
   if (entry.file && !entry.loaded) {
     try {
-      const res = await fetch(new URL(`../${entry.file}`, import.meta.url));
+      const res = await fetch(new URL(`../${entry.file}`, import.meta.url), {
+        signal: AbortSignal.timeout(FETCH_TIMEOUT_MS),
+      });
       if (!res.ok) throw new Error(`HTTP ${res.status}`);
       const text = await res.text();
       fetched.set(entry.tag, text);
       const problems = wasm.loadCatalogue(entry.tag, text);
       if (problems.length) console.warn(`Zeta Lab: ${entry.file}:`, problems);
+      if (mine !== generation) return { entry: active, problem: null, stale: true };
       entry = wasm.setLanguage(entry.tag); // the same language, now loaded
     } catch (err) {
+      if (mine !== generation) return { entry: active, problem: null, stale: true };
       problem = { name: entry.name, text: (err && err.message) || String(err) };
-      entry = wasm.setLanguage('en');
+      entry = wasm.setLanguage('en'); // as the notice says: the page is in English
     }
   }
   active = entry;

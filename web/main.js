@@ -60,11 +60,16 @@ function isDark() {
 
 /** Reports an error from a wasm call without breaking the page; the next input recovers. */
 function reportFailure(err) {
-  const panic = app.wasm.takePanicMessage();
+  app.needsRecovery = true; // first: nothing below may keep the page from recovering
+  let panic = null;
+  try {
+    panic = app.wasm.takePanicMessage();
+  } catch {
+    // the trapped instance cannot answer; the error itself says enough
+  }
   const text = panic || (err && err.message) || String(err);
   console.warn('Zeta Lab recovered from an error:', text);
   notify(app.notices, t('failed', { text }), 'error');
-  app.needsRecovery = true;
 }
 
 /** The values shown in the controls: the page's own copy, usable after a failed call. */
@@ -646,10 +651,12 @@ function buildLanguageMenu() {
 async function switchLanguage(tag) {
   remember(tag);
   const values = app.session ? app.session.values() : [];
+  cancelPendingWrite(); // a queued write must not bring back the old lang=
   const q = new URLSearchParams(window.location.search);
   q.set('lang', tag);
   history.replaceState(null, '', `?${q.toString()}${window.location.hash}`);
-  const { problem } = await useLanguage(app.wasm, [tag]);
+  const { problem, stale } = await useLanguage(app.wasm, [tag]);
+  if (stale) return; // a later choice is being applied
   buildLanguageMenu();
   buildMenu(app.wasm.demoList());
   cancelPendingWrite();

@@ -21,11 +21,19 @@ pub fn regime(r: zeta_solver::Regime) -> String {
 /// interface language's separators: for values a user typed or a declaration set.
 pub fn shortest(v: f64) -> String {
     let s = format!("{v}");
-    if s.contains(['e', 'N', 'i']) {
+    if s.contains(['N', 'i']) {
         return s;
     }
     let decimals = s.split_once('.').map_or(0, |(_, f)| f.len());
-    crate::i18n::number::fixed(v, decimals)
+    if decimals <= 12 {
+        return crate::i18n::number::fixed(v, decimals);
+    }
+    // Tiny values: the shortest mantissa with its exponent (`1e-25`, `2.5e-13`).
+    let e = format!("{v:e}");
+    let (mantissa, exp) = e.split_once('e').unwrap_or((e.as_str(), "0"));
+    let decimals = mantissa.split_once('.').map_or(0, |(_, f)| f.len());
+    let m = crate::i18n::number::fixed(mantissa.parse().unwrap_or(0.0), decimals);
+    format!("{m}e{exp}")
 }
 
 /// Formats `v` with `sig` significant digits and an SI prefix for `unit`
@@ -107,6 +115,16 @@ pub fn significant_plain(v: f64, sig: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn shortest_keeps_every_digit_and_writes_tiny_values_with_an_exponent() {
+        assert_eq!(shortest(0.2), "0.2");
+        assert_eq!(shortest(1500.0), "1500");
+        assert_eq!(shortest(-0.05), "-0.05");
+        assert_eq!(shortest(1e-25), "1e-25");
+        assert_eq!(shortest(2.5e-13), "2.5e-13");
+        assert_eq!(shortest(f64::NAN), "NaN");
+    }
 
     #[test]
     fn prefixes_and_digits() {

@@ -70,9 +70,13 @@ mod imp {
             .ok()?
             .as_string()?;
         // Intl writes "-0" for tiny negatives rounded to zero; the app reads them as 0.
-        let zero = s.trim_start_matches(['-', '\u{2212}']);
-        if zero.chars().all(|c| !c.is_ascii_digit() || c == '0') {
-            return Some(zero.to_string());
+        // Whether it rounds to zero is read from the number, not from the digits Intl
+        // wrote (a language may have its own digits).
+        let rounds_to_zero = super::plain(v, decimals)
+            .chars()
+            .all(|c| matches!(c, '0' | '.'));
+        if rounds_to_zero {
+            return Some(s.trim_start_matches(['-', '\u{2212}']).to_string());
         }
         Some(s)
     }

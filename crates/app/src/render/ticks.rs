@@ -62,7 +62,7 @@ pub(super) fn decade_multiples(lo: f64, hi: f64, mantissas: &[f64]) -> Vec<f64> 
         let base = 10f64.powi(k);
         for m in mantissas {
             // Round to 12 significant digits so labels read 0.2, not 0.20000000000000004.
-            let v = crate::format::significant(m * base, 12)
+            let v = crate::format::significant_plain(m * base, 12)
                 .parse::<f64>()
                 .unwrap_or(m * base);
             if v >= lo * (1.0 - 1e-12) && v <= hi * (1.0 + 1e-12) {
