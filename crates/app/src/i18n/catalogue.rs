@@ -62,7 +62,9 @@ fn format_value(v: &FluentValue, _: &intl_memoizer::IntlLangMemoizer) -> Option<
     }
 }
 
-fn new_bundle(l: &'static Locale, ftl: &str) -> Result<Bundle, Vec<String>> {
+/// The bundle of `l` from `ftl`, with every message that parsed, and the problems found
+/// (syntax errors, a message defined twice: the first one is kept).
+fn new_bundle(l: &'static Locale, ftl: &str) -> (Bundle, Vec<String>) {
     let mut bundle = Bundle::new(vec![l.rules_id()]);
     bundle.set_use_isolating(l.dir == locale::Dir::Rtl);
     bundle.set_formatter(Some(format_value));
@@ -80,11 +82,7 @@ fn new_bundle(l: &'static Locale, ftl: &str) -> Result<Bundle, Vec<String>> {
     if let Err(errs) = bundle.add_resource(resource) {
         errors.extend(errs.iter().map(|e| format!("{}: {e}", l.tag)));
     }
-    if errors.is_empty() {
-        Ok(bundle)
-    } else {
-        Err(errors)
-    }
+    (bundle, errors)
 }
 
 /// Loads the catalogue of language `tag` from its `.ftl` text (fetched by the page).
@@ -94,18 +92,7 @@ pub fn load(tag: &str, ftl: &str) -> Result<(), Vec<String>> {
     let Some(l) = locale::by_tag(tag).filter(|l| matches!(l.source, Source::File)) else {
         return Err(vec![format!("{tag}: not a language with a catalogue file")]);
     };
-    let (bundle, errors) = match new_bundle(l, ftl) {
-        Ok(b) => (b, Vec::new()),
-        Err(errors) => {
-            // Keep what parsed: rebuild leniently.
-            let mut b = Bundle::new(vec![l.rules_id()]);
-            b.set_use_isolating(l.dir == locale::Dir::Rtl);
-            b.set_formatter(Some(format_value));
-            let r = FluentResource::try_new(ftl.to_string()).unwrap_or_else(|(r, _)| r);
-            b.add_resource_overriding(r);
-            (b, errors)
-        }
-    };
+    let (bundle, errors) = new_bundle(l, ftl);
     STATE.with(|s| {
         let mut s = s.borrow_mut();
         s.bundles.retain(|(t, _)| *t != l.tag);
@@ -140,9 +127,8 @@ fn ensure_builtin(s: &mut State, l: &'static Locale) {
         return;
     }
     // The English catalogue is compiled in and tested, so it always parses.
-    if let Ok(b) = new_bundle(l, ENGLISH_FTL) {
-        s.bundles.push((l.tag, b));
-    }
+    let (b, _) = new_bundle(l, ENGLISH_FTL);
+    s.bundles.push((l.tag, b));
 }
 
 /// Formats message `id` in `l`'s bundle; `None` if that bundle lacks it.
