@@ -144,10 +144,16 @@ test(`soak: ${SOAK_EVENTS} slider events across every demo keep memory flat and 
       await frame();
       return done;
     }, n);
-    const measure = () => p.evaluate(() => {
+    // A study still refining in slices (design, uncertainty) holds its working buffers;
+    // both measurements are taken once it has finished, so they compare like with like.
+    const measure = async () => p.waitForFunction(
+      () => document.querySelectorAll('[data-provisional]').length === 0,
+      null,
+      { timeout: 60_000 },
+    ).then(() => p.evaluate(() => {
       window.gc();
       return { heap: performance.memory.usedJSHeapSize, wasm: window.zetaDiagnostics.wasmBytes() };
-    });
+    }));
     await drive(perDemo);
     const before = await measure();
     total += await drive(perDemo);

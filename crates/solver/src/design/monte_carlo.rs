@@ -113,6 +113,15 @@ impl McSamples {
             &mut self.settling_time,
         ]
     }
+
+    /// Makes room for runs of up to `draws` draws (at most [`MAX_DRAWS`]) without further
+    /// allocation, so a caller that keeps its buffers between runs allocates once.
+    pub fn reserve(&mut self, draws: usize) {
+        let draws = draws.min(MAX_DRAWS);
+        for v in self.columns_mut() {
+            v.reserve(draws.saturating_sub(v.len()));
+        }
+    }
 }
 
 /// Whether component `i` of the design may take the value `v`: damping/resistance (index
@@ -387,23 +396,28 @@ mod tests {
         assert!(out[5].is_nan());
     }
 
-    #[test]
-    fn a_run_advanced_in_steps_equals_the_run_done_at_once() {
+    /// An RLC design with every tolerance `fraction` under `distribution`.
+    fn rlc(fraction: f64, distribution: Distribution, draws: usize, seed: u64) -> McConfig {
         let tol = Tolerance {
-            fraction: 0.3,
-            distribution: Distribution::Normal,
+            fraction,
+            distribution,
         };
-        let cfg = McConfig {
+        McConfig {
             design: Components::Electrical {
                 l: 0.5,
                 r: 4.0,
                 cap: 0.02,
             },
             tolerances: [tol; 3],
-            draws: 777,
-            seed: 11,
+            draws,
+            seed,
             band: SettlingBand::FREE_DEFAULT,
-        };
+        }
+    }
+
+    #[test]
+    fn a_run_advanced_in_steps_equals_the_run_done_at_once() {
+        let cfg = rlc(0.3, Distribution::Normal, 777, 11);
         let mut whole = McSamples::default();
         run_into(&cfg, &mut whole);
         let mut steps = McSamples::default();
@@ -425,5 +439,27 @@ mod tests {
         let mut short = McSamples::default();
         run_into(&McConfig { draws: 100, ..cfg }, &mut short);
         assert_eq!(bits(&short)[0][..], bits(&whole)[0][..100]);
+    }
+
+    #[test]
+    fn reserved_buffers_take_any_run_up_to_the_reservation_without_moving() {
+        let cfg = rlc(0.1, Distribution::Uniform, 3_000, 5);
+        let mut s = McSamples::default();
+        s.reserve(3_000);
+        let place = |s: &McSamples| {
+            [&s.zeta, &s.wn, &s.f0, &s.q, &s.bandwidth, &s.settling_time]
+                .map(|v| (v.as_ptr(), v.capacity()))
+        };
+        let before = place(&s);
+        assert!(before.iter().all(|&(_, cap)| cap >= 3_000));
+        for draws in [3_000, 10, 2_999] {
+            run_into(&McConfig { draws, ..cfg }, &mut s);
+            assert_eq!(s.zeta.len(), draws);
+            assert_eq!(place(&s), before, "{draws} draws moved a buffer");
+        }
+        // Capped at the largest run there can be.
+        let mut big = McSamples::default();
+        big.reserve(usize::MAX);
+        assert!(big.q.capacity() >= MAX_DRAWS && big.q.capacity() < 2 * MAX_DRAWS);
     }
 }

@@ -26,7 +26,7 @@ impl Uncertainty {
             return;
         }
         // Inputs moved on: a run under way for other inputs is dropped unseen.
-        self.job = None;
+        self.drop_job();
         let watch = Stopwatch::start();
         let distribution = key.dist.distribution();
         let cfg = McConfig {

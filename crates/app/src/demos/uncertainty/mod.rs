@@ -128,6 +128,9 @@ pub struct Uncertainty {
     provisional: bool,
     /// The full run under way, if any.
     job: Option<progressive::McJob>,
+    /// Buffers a full run fills next: the samples a finished run replaced, or those of a
+    /// dropped run. Kept so that runs reuse two buffers instead of allocating each time.
+    spare: McSamples,
 }
 
 /// A tolerance slider in percent.

@@ -7,7 +7,7 @@
 
 use super::cache::McKey;
 use super::{Stopwatch, Uncertainty};
-use zeta_solver::design::monte_carlo::{McConfig, McRun, McSamples};
+use zeta_solver::design::monte_carlo::{McConfig, McRun, McSamples, MAX_DRAWS};
 
 /// Draws of the coarse run shown while the full one runs.
 pub(super) const COARSE_DRAWS: usize = 1_000;
@@ -42,7 +42,11 @@ const SLICE: usize = 100;
 impl Uncertainty {
     /// Starts the full run of `key` in the background of the page (see the module docs).
     pub(super) fn start_job(&mut self, key: McKey, cfg: McConfig) {
-        let mut samples = McSamples::default();
+        self.drop_job();
+        // Sized for the largest run once, so the two buffers that take turns never grow
+        // again (a page's wasm memory stays flat however the sliders move).
+        let mut samples = std::mem::take(&mut self.spare);
+        samples.reserve(MAX_DRAWS);
         let run = McRun::start(&cfg, &mut samples);
         self.job = Some(McJob {
             key,
@@ -51,6 +55,13 @@ impl Uncertainty {
             samples,
             ms: 0.0,
         });
+    }
+
+    /// Drops the run under way, unseen, keeping its buffers for the next one.
+    pub(super) fn drop_job(&mut self) {
+        if let Some(job) = self.job.take() {
+            self.spare = job.samples;
+        }
     }
 
     /// Continues the pending full run for about `budget_ms`. Returns the fraction done, or
@@ -73,9 +84,10 @@ impl Uncertainty {
         // Shown only if drawn for the inputs still current (a step with other inputs drops
         // the job), never as the answer to other inputs.
         if self.key != Some(job.key) {
+            self.spare = job.samples;
             return None;
         }
-        self.samples = job.samples;
+        self.spare = std::mem::replace(&mut self.samples, job.samples);
         self.finish_run(job.ms);
         self.provisional = false;
         self.runs += 1;
