@@ -63,12 +63,11 @@ impl fmt::Display for ModelError {
 
 impl std::error::Error for ModelError {}
 
+/// A parameter value that passed its check, or why it did not.
+pub(crate) type Checked = Result<f64, ModelError>;
+
 /// Checks that `value` is finite; returns it.
-pub(crate) fn finite(
-    name: &'static str,
-    unit: &'static str,
-    value: f64,
-) -> Result<f64, ModelError> {
+pub(crate) fn finite(name: &'static str, unit: &'static str, value: f64) -> Checked {
     if value.is_finite() {
         Ok(value)
     } else {
@@ -76,38 +75,31 @@ pub(crate) fn finite(
     }
 }
 
-/// Checks that `value` is finite and strictly positive; returns it.
-pub(crate) fn positive(
+/// Checks that `value` is finite and `ok(value)` holds; returns it, else the error
+/// `reject(name, unit, value)`.
+fn bounded(
     name: &'static str,
     unit: &'static str,
     value: f64,
-) -> Result<f64, ModelError> {
+    ok: fn(f64) -> bool,
+    reject: fn(&'static str, &'static str, f64) -> ModelError,
+) -> Checked {
     let v = finite(name, unit, value)?;
-    if v > 0.0 {
+    if ok(v) {
         Ok(v)
     } else {
-        Err(ModelError::NotPositive {
-            name,
-            unit,
-            value: v,
-        })
+        Err(reject(name, unit, v))
     }
 }
 
+/// Checks that `value` is finite and strictly positive; returns it.
+pub(crate) fn positive(name: &'static str, unit: &'static str, value: f64) -> Checked {
+    let not_positive = |name, unit, value| ModelError::NotPositive { name, unit, value };
+    bounded(name, unit, value, |v| v > 0.0, not_positive)
+}
+
 /// Checks that `value` is finite and not negative; returns it.
-pub(crate) fn non_negative(
-    name: &'static str,
-    unit: &'static str,
-    value: f64,
-) -> Result<f64, ModelError> {
-    let v = finite(name, unit, value)?;
-    if v >= 0.0 {
-        Ok(v)
-    } else {
-        Err(ModelError::Negative {
-            name,
-            unit,
-            value: v,
-        })
-    }
+pub(crate) fn non_negative(name: &'static str, unit: &'static str, value: f64) -> Checked {
+    let negative = |name, unit, value| ModelError::Negative { name, unit, value };
+    bounded(name, unit, value, |v| v >= 0.0, negative)
 }

@@ -38,6 +38,8 @@ pub mod regime;
 pub mod ride;
 pub mod road;
 pub mod search;
+#[cfg(test)]
+mod testing;
 pub mod two_dof;
 pub mod two_dof_exact;
 
