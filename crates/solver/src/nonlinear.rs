@@ -24,13 +24,13 @@
 //! therefore resolved, not smoothed.
 //!
 //! ```
-//! use zeta_solver::nonlinear::{NonlinearConfig, NonlinearModel};
+//! use zeta_solver::nonlinear::{period_from_zero_crossings, NonlinearConfig, NonlinearModel};
 //! // A hardening spring oscillates faster than the linear one at large amplitude.
 //! let model = NonlinearModel::new(NonlinearConfig {
 //!     k3: 2.0e6, ..NonlinearConfig::default()
 //! }).unwrap();
 //! let cmp = model.compare(0.08, 0.0, 5.0, 1e-3).unwrap();
-//! assert!(cmp.period_ratio().unwrap() < 1.0);
+//! assert!(cmp.period_ratio(period_from_zero_crossings).unwrap() < 1.0);
 //! ```
 
 use crate::error::{finite, non_negative, positive, ModelError};
@@ -122,8 +122,10 @@ fn displacements(states: &[[f64; 2]]) -> Vec<f64> {
     states.iter().map(|s| s[0]).collect()
 }
 
-/// A period measure of a displacement history: `(t, x) -> period` (s).
-type PeriodMeasure = fn(&[f64], &[f64]) -> Option<f64>;
+/// A period measure of a displacement history, `(t, x) -> period` (s): e.g.
+/// [`period_from_zero_crossings`] (mean spacing of the upward zero crossings) or
+/// [`first_swing_period`].
+pub type PeriodMeasure = fn(&[f64], &[f64]) -> Option<f64>;
 
 impl Comparison {
     /// `measure` applied to the displacements of `states` (one of the two runs) on `t`.
@@ -131,37 +133,38 @@ impl Comparison {
         measure(&self.t, &displacements(states))
     }
 
-    /// Period of the nonlinear response from its upward zero crossings (s); `None` with
-    /// fewer than two.
-    pub fn period_nonlinear(&self) -> Option<f64> {
-        self.period_of(&self.nonlinear, period_from_zero_crossings)
+    /// Period of the nonlinear response by `measure` (s); `None` where it finds none
+    /// (e.g. fewer than two upward zero crossings).
+    pub fn period_nonlinear(&self, measure: PeriodMeasure) -> Option<f64> {
+        self.period_of(&self.nonlinear, measure)
     }
 
-    /// Period of the linear response, measured the same way (s) (equals `2π/ω_d`).
-    pub fn period_linear(&self) -> Option<f64> {
-        self.period_of(&self.linear, period_from_zero_crossings)
+    /// Period of the linear response by `measure` (s): `2π/ω_d` for either measure here,
+    /// since a damped sinusoid crosses zero every half damped period.
+    pub fn period_linear(&self, measure: PeriodMeasure) -> Option<f64> {
+        self.period_of(&self.linear, measure)
     }
 
-    /// `T_nonlinear / T_linear` (-): below 1 for a hardening spring, above for softening.
-    pub fn period_ratio(&self) -> Option<f64> {
-        Some(self.period_nonlinear()? / self.period_linear()?)
+    /// `T_nonlinear / T_linear` (-) by `measure`: below 1 for a hardening spring, above for
+    /// softening.
+    pub fn period_ratio(&self, measure: PeriodMeasure) -> Option<f64> {
+        Some(self.period_nonlinear(measure)? / self.period_linear(measure)?)
     }
 
     /// Period of the first full swing of the nonlinear response (s), see
     /// [`first_swing_period`].
     pub fn first_swing_nonlinear(&self) -> Option<f64> {
-        self.period_of(&self.nonlinear, first_swing_period)
+        self.period_nonlinear(first_swing_period)
     }
 
-    /// Period of the first full swing of the linear response (s): `2π/ω_d` exactly, since
-    /// a damped sinusoid crosses zero every half damped period.
+    /// Period of the first full swing of the linear response (s): `2π/ω_d` exactly.
     pub fn first_swing_linear(&self) -> Option<f64> {
-        self.period_of(&self.linear, first_swing_period)
+        self.period_linear(first_swing_period)
     }
 
     /// First-swing period ratio `T_nonlinear / T_linear` (-).
     pub fn first_swing_ratio(&self) -> Option<f64> {
-        Some(self.first_swing_nonlinear()? / self.first_swing_linear()?)
+        self.period_ratio(first_swing_period)
     }
 
     /// The largest finite `|x_nl(t) − x_lin(t)|` (m) and the first time (s) it occurs;
@@ -380,8 +383,9 @@ impl NonlinearModel {
     }
 
     /// The free response from `[x0, v0]` on the grid `out[i]` = state at `i·h`, with the
-    /// stick event if friction stops it for good.
-    fn run_into(
+    /// stick event if friction stops it for good: the allocation-free variant of
+    /// [`Self::simulate`].
+    pub fn simulate_into(
         &self,
         x0: f64,
         v0: f64,
@@ -455,7 +459,7 @@ impl NonlinearModel {
         let n = (t_end / h).ceil().max(1.0) as usize;
         let step = t_end / n as f64;
         let mut y = vec![[0.0; 2]; n + 1];
-        self.run_into(x0, v0, step, &mut y)?;
+        self.simulate_into(x0, v0, step, &mut y)?;
         let t = (0..=n).map(|i| step * i as f64).collect();
         Ok(Solution {
             t,
@@ -465,18 +469,6 @@ impl NonlinearModel {
                 ..Stats::default()
             },
         })
-    }
-
-    /// Allocation-free variant of [`Self::simulate`]: `out[i]` is the state at `i·h`;
-    /// returns where friction stopped the mass for good, if it did.
-    pub fn simulate_into(
-        &self,
-        x0: f64,
-        v0: f64,
-        h: f64,
-        out: &mut [[f64; 2]],
-    ) -> Result<Option<Sticking>, IntegrationError> {
-        self.run_into(x0, v0, h, out)
     }
 
     /// The nonlinear (RK4) and linear (closed-form) responses from the same `[x0, v0]`.

@@ -4,7 +4,7 @@
 //! Nonlinear quarter car against closed forms and classic perturbation results.
 
 use proptest::prelude::*;
-use zeta_solver::nonlinear::{NonlinearConfig, NonlinearModel};
+use zeta_solver::nonlinear::{period_from_zero_crossings, NonlinearConfig, NonlinearModel};
 use zeta_solver::FreeResponse;
 
 fn model(cfg: NonlinearConfig) -> NonlinearModel {
@@ -79,12 +79,12 @@ fn hardening_shortens_and_softening_lengthens_the_period() {
     let r_hard = hard
         .compare(1.0, 0.0, 40.0, 1e-3)
         .unwrap()
-        .period_ratio()
+        .period_ratio(period_from_zero_crossings)
         .unwrap();
     let r_soft = soft
         .compare(1.0, 0.0, 40.0, 1e-3)
         .unwrap()
-        .period_ratio()
+        .period_ratio(period_from_zero_crossings)
         .unwrap();
     assert!(r_hard < 0.9 && r_soft > 1.05, "{r_hard} {r_soft}");
 }
@@ -168,7 +168,7 @@ fn bump_stops_limit_the_travel() {
     assert!(drift < 1e-5, "{drift:e}");
     // Period shorter than the linear 2π.
     let cmp = m.compare(0.2, 0.0, 20.0, 1e-3).unwrap();
-    assert!(cmp.period_ratio().unwrap() < 0.9);
+    assert!(cmp.period_ratio(period_from_zero_crossings).unwrap() < 0.9);
 }
 
 proptest! {
