@@ -65,22 +65,38 @@ pub struct FreeMetrics {
 /// constants is beyond any response that has not already decayed to nothing.
 const MAX_DOUBLINGS: usize = 200;
 
+/// Underdamped extrema: at `t1 + k·half` with `|x| = m·e^{−k·decay}`, alternating in sign.
+#[derive(Debug, Clone, Copy)]
+struct Periodic {
+    /// First extremum at `t ≥ 0` \[s\].
+    t1: f64,
+    /// Half period `π/ω_d` \[s\].
+    half: f64,
+    /// `|x(t1)|`.
+    m: f64,
+    /// `x(t1)`, signed.
+    x1: f64,
+    /// `α·π/ω_d`: log of the ratio of successive extremum magnitudes.
+    decay: f64,
+}
+
+impl Periodic {
+    /// `|x|` at the extremum `k` after the first, `m·e^{−k·decay}`.
+    fn magnitude(&self, k: f64) -> f64 {
+        self.m * (-self.decay * k).exp()
+    }
+
+    /// Whether the first extremum lies at `t > 0` on the side opposite to `x0`.
+    fn first_opposes(&self, x0: f64) -> bool {
+        self.t1 > 0.0 && self.x1 * x0 < 0.0
+    }
+}
+
 /// Where the extrema of `x(t)` are, from the closed form.
 #[derive(Debug, Clone, Copy)]
 enum Extrema {
-    /// Underdamped: extrema at `t1 + k·half` with `|x| = m·e^{−k·decay}`.
-    Periodic {
-        /// First extremum at `t ≥ 0` \[s\].
-        t1: f64,
-        /// Half period `π/ω_d` \[s\].
-        half: f64,
-        /// `|x(t1)|`.
-        m: f64,
-        /// `x(t1)`, signed.
-        x1: f64,
-        /// `α·π/ω_d`: log of the ratio of successive extremum magnitudes.
-        decay: f64,
-    },
+    /// Underdamped.
+    Periodic(Periodic),
     /// Critically or over-damped: at most one extremum at `t > 0`.
     Single {
         /// Its time \[s\], if any.
@@ -133,13 +149,13 @@ impl FreeShape {
             let theta = (v0 * wd).atan2(k).rem_euclid(PI);
             let t1 = theta / wd;
             let x1 = resp.displacement(t1);
-            Extrema::Periodic {
+            Extrema::Periodic(Periodic {
                 t1,
                 half,
                 m: x1.abs(),
                 x1,
                 decay: alpha * half,
-            }
+            })
         } else if d == 0.0 {
             let t = v0 / k;
             Extrema::Single {
@@ -198,48 +214,41 @@ impl FreeShape {
     pub(crate) fn settle(&self, band: SettlingBand) -> Option<Settling> {
         let h = band.fraction() * self.x0.abs();
         match self.extrema {
-            Extrema::Periodic {
-                t1,
-                half,
-                m,
-                x1,
-                decay,
-            } => {
-                if m <= h {
+            Extrema::Periodic(p) => {
+                if p.m <= h {
                     // |x0| > h and the first extremum is inside: the crossing precedes it
                     // (and precedes any zero, so no crossings are counted). Here t1 > 0.
                     return Some(Settling {
-                        time: self.crossing(h, 0.0, t1, f64::NAN),
+                        time: self.crossing(h, 0.0, p.t1, f64::NAN),
                         zero_crossings: 0,
                         piece: 0,
                     });
                 }
                 // Last k with m·e^{−k·decay} > h, from logarithms, then nudged so the
                 // rounding of the log cannot pick a neighbour.
-                let l = (m / h).ln() / decay;
+                let l = (p.m / h).ln() / p.decay;
                 let mut k = (l.ceil() - 1.0).max(0.0);
                 for _ in 0..4 {
-                    if k > 0.0 && m * (-decay * k).exp() <= h {
+                    if k > 0.0 && p.magnitude(k) <= h {
                         k -= 1.0;
-                    } else if m * (-decay * (k + 1.0)).exp() > h {
+                    } else if p.magnitude(k + 1.0) > h {
                         k += 1.0;
                     } else {
                         break;
                     }
                 }
-                let a = t1 + k * half;
-                let first = u64::from(t1 > 0.0 && x1 * self.x0 < 0.0);
+                let a = p.t1 + k * p.half;
+                let first = u64::from(p.first_opposes(self.x0));
                 // `as` saturates; k is a non-negative whole number here.
                 let zeros = (k as u64).saturating_add(first);
                 // Extrema at t > 0 outside the band: k + 1, less the one at t = 0 if t1 = 0.
-                let piece = (k as u64).saturating_add(u64::from(t1 > 0.0));
+                let piece = (k as u64).saturating_add(u64::from(p.t1 > 0.0));
                 // Starting guess: from the extremum at `a` the response is exactly
                 // x(a)·e^{−ατ}·(cos ω_d τ + (α/ω_d)·sin ω_d τ); dropping the decay gives
                 // τ ≈ acos(h/M_k)/ω_d, close enough for Newton to converge in a few steps
                 // (the app evaluates ~10⁴ of these per frame).
-                let mk = m * (-decay * k).exp();
-                let tau0 = (h / mk).min(1.0).acos() * half / PI;
-                let time = self.crossing(h, a, a + half, a + tau0);
+                let tau0 = (h / p.magnitude(k)).min(1.0).acos() * p.half / PI;
+                let time = self.crossing(h, a, a + p.half, a + tau0);
                 Some(Settling {
                     time,
                     zero_crossings: zeros,
@@ -280,18 +289,12 @@ impl FreeShape {
     pub(crate) fn rebound(&self) -> (f64, Option<f64>) {
         let ax0 = self.x0.abs();
         match self.extrema {
-            Extrema::Periodic {
-                t1,
-                half,
-                m,
-                x1,
-                decay,
-            } => {
-                if t1 > 0.0 && x1 * self.x0 < 0.0 {
-                    (m / ax0, Some(t1))
+            Extrema::Periodic(p) => {
+                if p.first_opposes(self.x0) {
+                    (p.m / ax0, Some(p.t1))
                 } else {
                     // Extrema alternate in sign and shrink: the next one is the rebound.
-                    (m * (-decay).exp() / ax0, Some(t1 + half))
+                    (p.magnitude(1.0) / ax0, Some(p.t1 + p.half))
                 }
             }
             Extrema::Single { ext: Some(te), .. } => {
@@ -309,7 +312,7 @@ impl FreeShape {
     /// `δ = 2·α·π/ω_d` for oscillating systems.
     fn log_decrement(&self) -> Option<f64> {
         match self.extrema {
-            Extrema::Periodic { decay, .. } => Some(2.0 * decay),
+            Extrema::Periodic(p) => Some(2.0 * p.decay),
             Extrema::Single { .. } => None,
         }
     }
