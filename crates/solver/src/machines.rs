@@ -66,6 +66,18 @@ impl Target {
     pub fn zeta(&self) -> f64 {
         self.zeta
     }
+
+    /// The linear damping `b = 2ζ·a·ωₙ` that gives this `ζ` with the leading coefficient
+    /// `a` (and this `ωₙ`), in `a`'s unit per second.
+    fn damping_for(&self, a: f64) -> f64 {
+        2.0 * self.zeta * a * self.wn
+    }
+
+    /// The stiffness `c = a·ωₙ²` that gives this `ωₙ` with the leading coefficient `a`, in
+    /// `a`'s unit per second squared.
+    fn stiffness_for(&self, a: f64) -> f64 {
+        a * self.wn * self.wn
+    }
 }
 
 /// Why a machine could not be tuned to a target.
@@ -153,8 +165,8 @@ impl Machine for MassSpringDamper {
     fn matched(&self, t: Target) -> Result<Self, MatchError> {
         Ok(Self::new(
             self.m,
-            2.0 * t.zeta * self.m * t.wn,
-            self.m * t.wn * t.wn,
+            t.damping_for(self.m),
+            t.stiffness_for(self.m),
         )?)
     }
 }
@@ -190,11 +202,8 @@ impl Machine for SeriesRlc {
     }
 
     fn matched(&self, t: Target) -> Result<Self, MatchError> {
-        Ok(Self::new(
-            self.l,
-            2.0 * t.zeta * self.l * t.wn,
-            1.0 / (self.l * t.wn * t.wn),
-        )?)
+        let inverse_cap = t.stiffness_for(self.l);
+        Ok(Self::new(self.l, t.damping_for(self.l), 1.0 / inverse_cap)?)
     }
 }
 
@@ -403,8 +412,8 @@ impl Machine for Storey {
 
     fn matched(&self, t: Target) -> Result<Self, MatchError> {
         let h3 = self.height * self.height * self.height;
-        let rigidity = self.mass * t.wn * t.wn * h3 / (12.0 * self.columns);
-        let damping = 2.0 * t.zeta * self.mass * t.wn;
+        let rigidity = t.stiffness_for(self.mass) * h3 / (12.0 * self.columns);
+        let damping = t.damping_for(self.mass);
         Ok(Self::new(
             self.mass,
             self.height,
