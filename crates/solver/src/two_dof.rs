@@ -288,6 +288,23 @@ pub enum Road {
 }
 
 impl Road {
+    /// [`Road::Bump`] of height `height` (m), length `length` (m) crossed at `speed` (m/s).
+    pub const fn bump(height: f64, length: f64, speed: f64) -> Self {
+        Road::Bump {
+            height,
+            length,
+            speed,
+        }
+    }
+
+    /// [`Road::Sine`] of amplitude `amplitude` (m) at `frequency_hz` (Hz).
+    pub const fn sine(amplitude: f64, frequency_hz: f64) -> Self {
+        Road::Sine {
+            amplitude,
+            frequency_hz,
+        }
+    }
+
     /// `(u(t), u'(t))` (m, m/s). Zero for `t < 0`; a bump with a non-positive length or
     /// speed is flat.
     pub fn at(&self, t: f64) -> (f64, f64) {
@@ -555,11 +572,7 @@ mod tests {
 
     #[test]
     fn bump_profile_shape() {
-        let r = Road::Bump {
-            height: 0.1,
-            length: 2.0,
-            speed: 10.0,
-        };
+        let r = Road::bump(0.1, 2.0, 10.0);
         assert_eq!(r.at(-1.0), (0.0, 0.0));
         let (u_mid, du_mid) = r.at(0.1); // x = 1 m: crest
         assert!((u_mid - 0.1).abs() < 1e-15 && du_mid.abs() < 1e-12);

@@ -14,6 +14,14 @@ fn car(cfg: TwoDofConfig) -> TwoDof {
     TwoDof::new(cfg).unwrap()
 }
 
+/// The default car with tyre damping `c_t` (N·s/m).
+fn car_with_tyre_damping(c_t: f64) -> TwoDof {
+    car(TwoDofConfig {
+        c_t,
+        ..Default::default()
+    })
+}
+
 #[test]
 fn natural_frequencies_are_roots_of_the_characteristic_polynomial() {
     let c = TwoDofConfig::default();
@@ -45,11 +53,7 @@ fn natural_frequencies_are_roots_of_the_characteristic_polynomial() {
 
 #[test]
 fn at_zero_frequency_the_body_follows_the_road() {
-    let f = car(TwoDofConfig {
-        c_t: 100.0,
-        ..Default::default()
-    })
-    .frf(1e-9);
+    let f = car_with_tyre_damping(100.0).frf(1e-9);
     assert!((f.body.re - 1.0).abs() < 1e-12 && f.body.im.abs() < 1e-6);
     assert!(f.tyre_deflection.abs() < 1e-9 && f.body_acceleration.abs() < 1e-15);
 }
@@ -80,10 +84,7 @@ fn frequency_response_matches_the_time_simulation() {
     // e^-18), the body amplitude equals |Z_s/U|·0.01 and the tyre deflection |(Z_u−U)/U|·0.01.
     let two = car(TwoDofConfig::default());
     let (amp, f) = (0.01, 2.0);
-    let road = Road::Sine {
-        amplitude: amp,
-        frequency_hz: f,
-    };
+    let road = Road::sine(amp, f);
     let sol = two.simulate(&road, 15.0, 1e-3).unwrap();
     let tail = sol.t.iter().zip(&sol.y).filter(|(t, _)| **t >= 12.0);
     let (mut body, mut tyre) = (0.0f64, 0.0f64);
@@ -132,15 +133,8 @@ fn energy_change_equals_road_work_minus_damper_losses() {
     // Simpson's rule. The road puts in and the dampers take out ≈ 245 J while the net
     // change is only 0.034 J; the balance holds to ≈ 1.3e-10 of the work that flowed
     // (observed), asserted at 1e-9.
-    let two = car(TwoDofConfig {
-        c_t: 150.0,
-        ..Default::default()
-    });
-    let road = Road::Bump {
-        height: 0.05,
-        length: 0.5,
-        speed: 10.0,
-    };
+    let two = car_with_tyre_damping(150.0);
+    let road = Road::bump(0.05, 0.5, 10.0);
     let (de, work, scale) = energy_balance(&two, &road, 1.0, 1e-4);
     assert!(
         (de - work).abs() < 1e-9 * scale,
@@ -238,11 +232,7 @@ fn random_road_is_reproducible_and_scales_by_class() {
 fn rk4_step_matches_simulate_for_the_driven_car() {
     // `simulate` is RK4 from rest; driving the same System by hand gives the same states.
     let two = car(TwoDofConfig::default());
-    let road = Road::Bump {
-        height: 0.05,
-        length: 0.5,
-        speed: 10.0,
-    };
+    let road = Road::bump(0.05, 0.5, 10.0);
     let sol = two.simulate(&road, 0.2, 1e-3).unwrap();
     let mut y = [0.0; 4];
     for i in 0..200 {

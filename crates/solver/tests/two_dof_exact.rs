@@ -98,11 +98,7 @@ fn a_short_bump_gives_the_audits_fine_step_reference() {
     // demo's window L/V + 2.5 s. The audit's fine-step reference: 0.116 m/s² RMS body
     // acceleration and 2.82 mm peak travel (3 digits).
     let two = car(TwoDofConfig::default());
-    let road = Road::Bump {
-        height: 0.05,
-        length: 0.1,
-        speed: 40.0,
-    };
+    let road = Road::bump(0.05, 0.1, 40.0);
     let t_end = 0.1 / 40.0 + 2.5;
     let m = ride(&two, &road, t_end, Tyre::Unilateral);
     assert_eq!(m.window, t_end);
@@ -121,11 +117,7 @@ fn a_wheel_thrown_off_the_road_flies_as_the_fine_step_reference_does() {
     // A 10 cm bump half a metre long at 20 m/s throws the default wheel off the road for
     // about 64 ms.
     let two = car(TwoDofConfig::default());
-    let road = Road::Bump {
-        height: 0.1,
-        length: 0.5,
-        speed: 20.0,
-    };
+    let road = Road::bump(0.1, 0.5, 20.0);
     let t_end = 0.5 / 20.0 + 2.5;
     let m = ride(&two, &road, t_end, Tyre::Unilateral);
     assert!(m.lift_offs == 1 && m.airborne_time > 0.05, "{m:?}");
@@ -147,11 +139,7 @@ fn without_lift_off_the_two_tyre_models_agree_and_match_rk4_on_the_same_chords()
         c_t: 120.0,
         ..Default::default()
     });
-    let road = Road::Bump {
-        height: 0.02,
-        length: 2.0,
-        speed: 10.0,
-    };
+    let road = Road::bump(0.02, 2.0, 10.0);
     let mut s = SampledRoad::default();
     s.fill_uniform(&road, 1000.0, 1.0);
     let cfg = |tyre| ExactConfig {
@@ -223,10 +211,7 @@ fn a_sine_road_settles_on_the_frequency_response() {
     // by 3.3e-4; sampling the peak every 1/100 period misses it by ≤ 5e-4.
     let two = car(TwoDofConfig::default());
     let (amp, f) = (0.01, 2.0);
-    let road = Road::Sine {
-        amplitude: amp,
-        frequency_hz: f,
-    };
+    let road = Road::sine(amp, f);
     let mut s = SampledRoad::default();
     let run = two
         .ride_exact(&road, 15.0, Tyre::Bilateral, &mut s)
@@ -331,7 +316,7 @@ proptest! {
         cs in 300.0f64..5000.0, height in 0.01f64..0.1, length in 0.1f64..3.0, speed in 3.0f64..40.0,
     ) {
         let two = car(TwoDofConfig { sprung_mass: ms, unsprung_mass: mu, k_s: ks, k_t: kt, c_s: cs, c_t: 0.0 });
-        let road = Road::Bump { height, length, speed };
+        let road = Road::bump(height, length, speed);
         let on = length / speed;
         let levels = [2, 4, 8].map(|k| bump_metrics(&two, &road, on, k));
         let fine = bump_metrics(&two, &road, on, 32);
