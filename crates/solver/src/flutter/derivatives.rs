@@ -238,23 +238,29 @@ impl DeckSection {
     /// the nodes, the end value held beyond the table; for the box the flat-plate closed
     /// form at any `V_r` ≥ 0. 0 for a negative (box) or non-finite `V_r`.
     pub fn a2(self, reduced_velocity: f64) -> f64 {
-        match self {
-            DeckSection::HSection => {
-                let t = self.table();
-                interpolate(t.reduced_velocity, t.a2, reduced_velocity).unwrap_or(0.0)
-            }
-            DeckSection::StreamlinedBox => flat_plate(reduced_velocity).map_or(0.0, |d| d.0),
-        }
+        self.derivative(reduced_velocity, |t| t.a2, |(a2, _)| a2)
     }
 
     /// `A₃*` \[-\] at reduced velocity `V_r = U/(fB)` (as [`Self::a2`]).
     pub fn a3(self, reduced_velocity: f64) -> f64 {
+        self.derivative(reduced_velocity, |t| t.a3, |(_, a3)| a3)
+    }
+
+    /// One derivative \[-\] at `V_r`, as [`Self::a2`] describes: the table's `column`
+    /// interpolated for the H-section, the `part` of [`flat_plate`]'s `(A₂*, A₃*)` for the
+    /// box.
+    fn derivative(
+        self,
+        reduced_velocity: f64,
+        column: fn(&DerivativeTable) -> &'static [f64],
+        part: fn((f64, f64)) -> f64,
+    ) -> f64 {
         match self {
             DeckSection::HSection => {
                 let t = self.table();
-                interpolate(t.reduced_velocity, t.a3, reduced_velocity).unwrap_or(0.0)
+                interpolate(t.reduced_velocity, column(t), reduced_velocity).unwrap_or(0.0)
             }
-            DeckSection::StreamlinedBox => flat_plate(reduced_velocity).map_or(0.0, |d| d.1),
+            DeckSection::StreamlinedBox => flat_plate(reduced_velocity).map_or(0.0, part),
         }
     }
 }
