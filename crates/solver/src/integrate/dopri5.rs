@@ -200,6 +200,29 @@ fn scaled_rms<const N: usize>(v: &[f64; N], sc: &[f64; N]) -> f64 {
     (sum / N as f64).sqrt()
 }
 
+/// `out = y + h·Σⱼ aⱼ·kⱼ` component by component, or `h·Σⱼ aⱼ·kⱼ` without `y`: a stage,
+/// the solution or the error estimate of a step, from a row `a` of the tableau and the
+/// stage derivatives `k`. Zero coefficients are left out (`b₂ = e₂ = 0`) and the sum runs
+/// in the order of `j`, so it rounds as the formula written out does.
+#[inline]
+fn combine<const N: usize>(
+    out: &mut [f64; N],
+    y: Option<&[f64; N]>,
+    h: f64,
+    a: &[f64],
+    k: &[&[f64; N]],
+) {
+    for (i, o) in out.iter_mut().enumerate() {
+        let terms = a.iter().zip(k).filter(|(aj, _)| **aj != 0.0);
+        let sum = terms.map(|(aj, kj)| aj * kj[i]).reduce(|s, x| s + x);
+        let sum = sum.unwrap_or(0.0);
+        *o = match y {
+            Some(y) => y[i] + h * sum,
+            None => h * sum,
+        };
+    }
+}
+
 impl Dopri5 {
     /// Validates `config` (see the field docs for the allowed ranges).
     pub fn new(config: Dopri5Config) -> Result<Self, IntegrationError> {
@@ -390,61 +413,29 @@ impl Dopri5 {
                 });
             }
 
+            // Written out: `(h·a₂₁)·k₁` rounds otherwise than `combine`'s `h·(a₂₁·k₁)`.
             for i in 0..N {
                 stage[i] = y[i] + h * tab::A21 * k1[i];
             }
             sys.rhs(t + tab::C2 * h, &stage, &mut k2);
-            for i in 0..N {
-                stage[i] = y[i] + h * (tab::A3[0] * k1[i] + tab::A3[1] * k2[i]);
-            }
+            combine(&mut stage, Some(&y), h, &tab::A3, &[&k1, &k2]);
             sys.rhs(t + tab::C3 * h, &stage, &mut k3);
-            for i in 0..N {
-                stage[i] =
-                    y[i] + h * (tab::A4[0] * k1[i] + tab::A4[1] * k2[i] + tab::A4[2] * k3[i]);
-            }
+            combine(&mut stage, Some(&y), h, &tab::A4, &[&k1, &k2, &k3]);
             sys.rhs(t + tab::C4 * h, &stage, &mut k4);
-            for i in 0..N {
-                stage[i] = y[i]
-                    + h * (tab::A5[0] * k1[i]
-                        + tab::A5[1] * k2[i]
-                        + tab::A5[2] * k3[i]
-                        + tab::A5[3] * k4[i]);
-            }
+            combine(&mut stage, Some(&y), h, &tab::A5, &[&k1, &k2, &k3, &k4]);
             sys.rhs(t + tab::C5 * h, &stage, &mut k5);
-            for i in 0..N {
-                stage[i] = y[i]
-                    + h * (tab::A6[0] * k1[i]
-                        + tab::A6[1] * k2[i]
-                        + tab::A6[2] * k3[i]
-                        + tab::A6[3] * k4[i]
-                        + tab::A6[4] * k5[i]);
-            }
+            let ks = [&k1, &k2, &k3, &k4, &k5];
+            combine(&mut stage, Some(&y), h, &tab::A6, &ks);
             let t_next = if last { t_end } else { t + h };
             sys.rhs(t_next, &stage, &mut k6);
-            let b = &tab::B;
-            for i in 0..N {
-                // b₂ = 0.
-                y_new[i] = y[i]
-                    + h * (b[0] * k1[i]
-                        + b[2] * k3[i]
-                        + b[3] * k4[i]
-                        + b[4] * k5[i]
-                        + b[5] * k6[i]);
-            }
+            let ks = [&k1, &k2, &k3, &k4, &k5, &k6];
+            combine(&mut y_new, Some(&y), h, &tab::B, &ks);
             sys.rhs(t_next, &y_new, &mut k7);
             stats.n_rhs += 6;
 
-            let e = &tab::E;
             let mut err_vec = [0.0; N];
-            for i in 0..N {
-                err_vec[i] = h
-                    * (e[0] * k1[i]
-                        + e[2] * k3[i]
-                        + e[3] * k4[i]
-                        + e[4] * k5[i]
-                        + e[5] * k6[i]
-                        + e[6] * k7[i]);
-            }
+            let ks = [&k1, &k2, &k3, &k4, &k5, &k6, &k7];
+            combine(&mut err_vec, None, h, &tab::E, &ks);
             let sc = self.scale(&y, &y_new);
             let err = scaled_rms(&err_vec, &sc);
             let finite = err.is_finite()
