@@ -107,6 +107,34 @@ impl Section {
 
 impl Weighting {
     /// The four sections `H_h, H_l, H_t, H_s` as ratios of monic quadratics.
+    /// Writes the sections in series into the state matrix `a` (dimension `M`), section `n`
+    /// in the states `i = first + 2n` and `j = i + 1` (`x_i' = x_j`,
+    /// `x_j' = −a₀·x_i − a₁·x_j + input`), where `input` is the first section's input as a
+    /// combination of the `M` states. Returns the last section's output as such a
+    /// combination, without the gain `k`: each section outputs
+    /// `(b₀ − b₂a₀)·x_i + (b₁ − b₂a₁)·x_j + b₂·input`.
+    fn cascade<const M: usize>(
+        &self,
+        a: &mut [[f64; M]; M],
+        first: usize,
+        mut input: [f64; M],
+    ) -> [f64; M] {
+        for (n, sec) in self.sections().iter().enumerate() {
+            let (i, j) = (first + 2 * n, first + 2 * n + 1);
+            a[i][j] = 1.0;
+            for (k, &w) in input.iter().enumerate() {
+                a[j][k] += w;
+            }
+            a[j][i] -= sec.a[0];
+            a[j][j] -= sec.a[1];
+            let mut out = input.map(|w| sec.b[2] * w);
+            out[i] += sec.b[0] - sec.b[2] * sec.a[0];
+            out[j] += sec.b[1] - sec.b[2] * sec.a[1];
+            input = out;
+        }
+        input
+    }
+
     fn sections(&self) -> [Section; 4] {
         let w = |f: f64| TAU * f;
         let (w1, w2, w3, w4, w5, w6) = (
@@ -207,26 +235,10 @@ pub fn stationary_weighted(
     b[3] = c.c_t / mu;
     a[4][4] = -road_pole;
     b[4] = 1.0;
-    // W_k: each section's input is a linear combination of the states (`input`).
+    // W_k, driven by the body acceleration.
     let mut input = [0.0; N];
     input[..5].copy_from_slice(&accel);
-    let mut next = 5;
-    for sec in weighting.sections() {
-        let (i, j) = (next, next + 1);
-        a[i][j] = 1.0;
-        for (k, &w) in input.iter().enumerate() {
-            a[j][k] += w;
-        }
-        a[j][i] -= sec.a[0];
-        a[j][j] -= sec.a[1];
-        // Output (b₀ − b₂a₀)·x_i + (b₁ − b₂a₁)·x_j + b₂·input.
-        let mut out = input.map(|w| sec.b[2] * w);
-        out[i] += sec.b[0] - sec.b[2] * sec.a[0];
-        out[j] += sec.b[1] - sec.b[2] * sec.a[1];
-        input = out;
-        next += 2;
-    }
-    let weighted = input.map(|w| weighting.k * w);
+    let weighted = weighting.cascade(&mut a, 5, input).map(|w| weighting.k * w);
     let q = 0.5 * (TAU * ISO_N0).powi(2) * class.g_d_n0() * v;
     let p = lyapunov(&a, &b, q).ok_or(ModelError::OutOfRange {
         name: "suspension damping",
@@ -360,27 +372,18 @@ impl Ride {
     /// The weighting's blocks and its Gramian block. Errors if the weighting is not stable
     /// (a corner frequency or quality not positive).
     pub fn new(weighting: &Weighting) -> Result<Self, ModelError> {
-        let mut a_ww = [[0.0; NW]; NW];
-        let mut g = [0.0; NW];
-        // Each section's input: h·(body acceleration) + w·x_w, as in `stationary_weighted`.
-        let (mut h, mut w) = (1.0, [0.0; NW]);
-        for (n, sec) in weighting.sections().iter().enumerate() {
-            let (i, j) = (2 * n, 2 * n + 1);
-            a_ww[i][j] = 1.0;
-            g[j] += h;
-            for (k, &wk) in w.iter().enumerate() {
-                a_ww[j][k] += wk;
-            }
-            a_ww[j][i] -= sec.a[0];
-            a_ww[j][j] -= sec.a[1];
-            let mut out = w.map(|v| sec.b[2] * v);
-            out[i] += sec.b[0] - sec.b[2] * sec.a[0];
-            out[j] += sec.b[1] - sec.b[2] * sec.a[1];
-            h *= sec.b[2];
-            w = out;
-        }
-        let c_w = w.map(|v| weighting.k * v);
-        let h = weighting.k * h;
+        // The weighting alone in the states `[a; x_w]`, `a` the body acceleration: row `1 + r`
+        // holds `g[r]` in column 0 and `A_ww[r]` after it, and each section's input is
+        // `h·a + w·x_w`, as in `stationary_weighted`.
+        let mut a_full = [[0.0; 1 + NW]; 1 + NW];
+        let mut body = [0.0; 1 + NW];
+        body[0] = 1.0;
+        let out = weighting.cascade(&mut a_full, 1, body);
+        let g: [f64; NW] = std::array::from_fn(|r| a_full[1 + r][0]);
+        let a_ww: [[f64; NW]; NW] =
+            std::array::from_fn(|r| std::array::from_fn(|s| a_full[1 + r][1 + s]));
+        let c_w: [f64; NW] = std::array::from_fn(|r| weighting.k * out[1 + r]);
+        let h = weighting.k * out[0];
         let mut a_t = [[0.0; NW]; NW];
         let mut m = [[0.0; NW]; NW];
         for r in 0..NW {
