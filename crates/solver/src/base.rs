@@ -24,6 +24,7 @@
 use crate::error::{finite, positive, ModelError};
 use crate::forced::{HarmonicForce, HarmonicResponse, StepResponse};
 use crate::free::FreeResponse;
+use crate::frf::{damped, Peak};
 use crate::model::SecondOrder;
 use std::f64::consts::{PI, SQRT_2, TAU};
 
@@ -67,27 +68,17 @@ pub fn transmissibility_into(r: &[f64], zeta: f64, out: &mut [f64]) {
     }
 }
 
-/// Maximum of the displacement transmissibility.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TransmissibilityPeak {
-    /// Frequency ratio of the maximum, `r_p = √((√(1 + 8ζ²) − 1)/(4ζ²))` \[-\] (< 1).
-    pub ratio: f64,
-    /// `T(r_p, ζ)` \[-\].
-    pub value: f64,
-}
-
-/// The peak of `T(r, ζ)` over `r ≥ 0`, at `r_p² = (√(1 + 8ζ²) − 1)/(4ζ²)` (computed as
-/// `2/(√(1 + 8ζ²) + 1)`, the same value without cancellation at small ζ). `None` for
-/// `ζ ≤ 0` (infinite peak at `ζ = 0`, no steady state for `ζ < 0`) or NaN.
-pub fn peak_transmissibility(zeta: f64) -> Option<TransmissibilityPeak> {
-    if zeta.is_nan() || zeta <= 0.0 {
-        return None;
-    }
+/// The peak of `T(r, ζ)` over `r ≥ 0`: ratio `r_p = √((√(1 + 8ζ²) − 1)/(4ζ²))` \[-\] (< 1)
+/// (computed as `r_p² = 2/(√(1 + 8ζ²) + 1)`, the same value without cancellation at small
+/// ζ) and gain `T(r_p, ζ)` \[-\]. `None` for `ζ ≤ 0` (infinite peak at `ζ = 0`, no steady
+/// state for `ζ < 0`) or NaN.
+pub fn peak_transmissibility(zeta: f64) -> Option<Peak> {
+    let zeta = damped(zeta)?;
     let s = 2.0 / ((1.0 + 8.0 * zeta * zeta).sqrt() + 1.0);
     let ratio = s.sqrt();
-    Some(TransmissibilityPeak {
+    Some(Peak {
         ratio,
-        value: transmissibility(ratio, zeta),
+        gain: transmissibility(ratio, zeta),
     })
 }
 

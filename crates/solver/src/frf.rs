@@ -92,22 +92,28 @@ pub fn phase_into(r: &[f64], zeta: f64, out: &mut [f64]) {
     }
 }
 
-/// Resonant peak of `|H|`.
+/// The maximum of a frequency-response magnitude over `r ≥ 0`, e.g. of `|H|` ([`peak`]) or
+/// of the transmissibility ([`crate::base::peak_transmissibility`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Peak {
-    /// Frequency ratio of the maximum, `r_p = √(1 − 2ζ²)` for `0 < ζ < 1/√2`, else 0 \[-\].
+    /// Frequency ratio of the maximum `r_p` \[-\]; for `|H|`, `√(1 − 2ζ²)` when
+    /// `0 < ζ < 1/√2`, else 0.
     pub ratio: f64,
-    /// The maximum, `|H(r_p)| = 1/(2ζ√(1 − ζ²))` for `0 < ζ < 1/√2`, else 1 \[-\].
+    /// The maximum \[-\]; for `|H|`, `1/(2ζ√(1 − ζ²))` when `0 < ζ < 1/√2`, else 1.
     pub gain: f64,
+}
+
+/// `Some(ζ)` for a damping ratio that gives a finite peak, `ζ > 0`; `None` for `ζ ≤ 0`
+/// (infinite peak at `ζ = 0`; no steady state at all for `ζ < 0`) or NaN.
+pub(crate) fn damped(zeta: f64) -> Option<f64> {
+    (zeta > 0.0).then_some(zeta)
 }
 
 /// The maximum of `|H|` over `r ≥ 0`: at `r_p = √(1 − 2ζ²)` with gain `1/(2ζ√(1−ζ²))` when
 /// `0 < ζ < 1/√2`; at `r = 0` with gain 1 when `ζ ≥ 1/√2` (the curve only falls).
 /// `None` for `ζ ≤ 0` (infinite peak at `ζ = 0`; no steady state at all for `ζ < 0`) or NaN.
 pub fn peak(zeta: f64) -> Option<Peak> {
-    if zeta.is_nan() || zeta <= 0.0 {
-        return None;
-    }
+    let zeta = damped(zeta)?;
     let z2 = zeta * zeta;
     Some(if 2.0 * z2 < 1.0 {
         Peak {

@@ -64,7 +64,7 @@ fn peak_transmissibility_is_the_maximum() {
         for i in 0..=20_000 {
             let r = i as f64 * 1e-4;
             assert!(
-                base::transmissibility(r, zeta) <= p.value * (1.0 + 1e-14),
+                base::transmissibility(r, zeta) <= p.gain * (1.0 + 1e-14),
                 "ζ={zeta} r={r}"
             );
         }
@@ -72,7 +72,7 @@ fn peak_transmissibility_is_the_maximum() {
     // ζ = 0.1: r_p = 0.990334, T = 5.12277 (closed forms evaluated independently in Python).
     let p = base::peak_transmissibility(0.1).unwrap();
     assert!((p.ratio - 0.990_334).abs() < 1e-6, "{}", p.ratio);
-    assert!((p.value - 5.122_77).abs() < 1e-5, "{}", p.value);
+    assert!((p.gain - 5.122_77).abs() < 1e-5, "{}", p.gain);
     assert!(base::peak_transmissibility(0.0).is_none());
 }
 

@@ -294,7 +294,7 @@ pub fn peak_transmissibility(zeta: f64) -> Option<f64> {
     if !zeta.is_finite() {
         return None;
     }
-    crate::base::peak_transmissibility(zeta).map(|peak| peak.value)
+    crate::base::peak_transmissibility(zeta).map(|peak| peak.gain)
 }
 
 /// Settings of [`sweep_kc_into`].
