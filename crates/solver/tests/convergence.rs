@@ -4,7 +4,7 @@
 
 use zeta_solver::integrate::analysis::{Amplification, FitWindow, StepLimit};
 use zeta_solver::integrate::convergence::{
-    asymptotic_range, fit_power_law, nested_study, NestedGrids, PowerLaw, RunStatus,
+    asymptotic_range, fit_power_law, nested_study, NestedGrids, NestedStudy, PowerLaw, RunStatus,
 };
 use zeta_solver::integrate::stability::{region_boundary, Stability};
 use zeta_solver::integrate::work_precision::dopri5_sweep;
@@ -13,6 +13,27 @@ use zeta_solver::integrate::{
     Rk4, Scalar, SymplecticEuler,
 };
 use zeta_solver::{Complex, FreeResponse, SecondOrder};
+
+/// [`nested_study`] of `method` on `sys` released from `x = 1` at rest, measured on the
+/// displacement against the closed form.
+fn release_study<M: FixedStep>(
+    method: &M,
+    sys: SecondOrder,
+    grids: &NestedGrids,
+    window: FitWindow,
+) -> NestedStudy {
+    let exact = FreeResponse::new(sys, 1.0, 0.0);
+    let lin = Linear2::free(sys);
+    nested_study(
+        method,
+        &lin,
+        [1.0, 0.0],
+        0,
+        |t| exact.displacement(t),
+        grids,
+        window,
+    )
+}
 
 #[test]
 fn the_fit_recovers_a_synthetic_power_law_exactly() {
@@ -69,8 +90,6 @@ fn nested_grids_share_their_check_points() {
 #[test]
 fn halving_h_divides_the_error_by_two_to_the_order() {
     let sys = SecondOrder::from_natural(2.0, 0.1).unwrap();
-    let exact = FreeResponse::new(sys, 1.0, 0.0);
-    let lin = Linear2::free(sys);
     let grids = NestedGrids::new(5.0, 40, 6, 1_000_000).unwrap();
     let window = FitWindow {
         floor: 1e-12,
@@ -82,15 +101,7 @@ fn halving_h_divides_the_error_by_two_to_the_order() {
         (Method::Heun, 2.0, 0.05),
         (Method::Rk4, 4.0, 0.05),
     ] {
-        let out = nested_study(
-            &m,
-            &lin,
-            [1.0, 0.0],
-            0,
-            |t| exact.displacement(t),
-            &grids,
-            window,
-        );
+        let out = release_study(&m, sys, &grids, window);
         assert!(out.status.iter().all(|s| *s == RunStatus::Measured));
         let pts = &out.study.points;
         // The two finest levels: ratio of errors ≈ 2^p within `tol` in the exponent.
@@ -105,18 +116,8 @@ fn a_study_skips_levels_beyond_its_budget_and_marks_overflow() {
     // Euler on a fast undamped oscillator grows by about ωₙh per step: level 4 (256 steps of
     // 0.23 s, ×94 each) overflows; level 6 would take the total past the budget of 2 000.
     let sys = SecondOrder::from_natural(400.0, 0.0).unwrap();
-    let lin = Linear2::free(sys);
-    let exact = FreeResponse::new(sys, 1.0, 0.0);
     let grids = NestedGrids::new(60.0, 16, 10, 2_000).unwrap();
-    let out = nested_study(
-        &Euler,
-        &lin,
-        [1.0, 0.0],
-        0,
-        |t| exact.displacement(t),
-        &grids,
-        FitWindow::default(),
-    );
+    let out = release_study(&Euler, sys, &grids, FitWindow::default());
     assert_eq!(out.status[0], RunStatus::Measured);
     assert_eq!(out.status[4], RunStatus::Overflow);
     assert_eq!(out.status[5], RunStatus::Overflow);
