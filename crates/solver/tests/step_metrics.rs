@@ -13,12 +13,17 @@ fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs()
 }
 
-/// Unit-DC-gain step response `y = y_ss·(1 − z)`, sampled on `t`.
-fn sampled_step(sys: SecondOrder, y_ss: f64, t: &[f64]) -> Vec<f64> {
+/// The step response `y = y_ss·(1 − z)` of `sys`, `z` its free response from `x = 1` at
+/// rest, sampled on `t`, and its metrics from those samples with the default settings
+/// (the data path, as python-control computes them).
+#[allow(clippy::unwrap_used)] // test helper: a bad case should fail the test
+fn sampled_step(sys: SecondOrder, y_ss: f64, t: &[f64]) -> StepInfo {
     let z = FreeResponse::new(sys, 1.0, 0.0);
-    t.iter()
+    let y: Vec<f64> = t
+        .iter()
         .map(|&ti| y_ss * (1.0 - z.displacement(ti)))
-        .collect()
+        .collect();
+    StepInfo::from_samples(t, &y, Some(y_ss), &StepConfig::default()).unwrap()
 }
 
 #[test]
@@ -50,8 +55,7 @@ fn data_path_reproduces_python_control_on_its_default_grid() {
     // Overshoot 4.598385865629151, Peak 1.0459838586562915, PeakTime 0.4903558800098773.
     let sys = SecondOrder::from_natural(8.944_272, 0.7).unwrap();
     let t = linspace(0.0, 1.103_300_730_022_224, 100);
-    let y = sampled_step(sys, 1.0, &t);
-    let info = StepInfo::from_samples(&t, &y, Some(1.0), &StepConfig::default()).unwrap();
+    let info = sampled_step(sys, 1.0, &t);
     assert!(rel(info.rise_time.unwrap(), 0.234_033_488_186_532_36) < 1e-12);
     assert!(rel(info.settling_time.unwrap(), 0.668_667_109_104_378_1) < 1e-12);
     assert!(rel(info.peak_time.unwrap(), 0.490_355_880_009_877_3) < 1e-12);
@@ -73,8 +77,7 @@ fn data_path_matches_python_control_on_user_grids() {
     // PeakTime 1.65, Undershoot 0.
     let sys = SecondOrder::from_natural(2.0, 0.3).unwrap();
     let t = linspace(0.0, 15.0, 1501);
-    let y = sampled_step(sys, 2.5, &t);
-    let info = StepInfo::from_samples(&t, &y, Some(2.5), &StepConfig::default()).unwrap();
+    let info = sampled_step(sys, 2.5, &t);
     assert!((info.rise_time.unwrap() - 0.66).abs() < 1e-12);
     assert!((info.settling_time.unwrap() - 5.62).abs() < 1e-12);
     assert!((info.overshoot_percent - 37.231_771_925_996_284).abs() < 1e-9);
@@ -86,8 +89,7 @@ fn data_path_matches_python_control_on_user_grids() {
     // SettlingTime 5.33, Overshoot 0, Peak 0.999999999869579 at PeakTime 30 (last sample).
     let sys = SecondOrder::from_natural(2.0, 1.5).unwrap();
     let t = linspace(0.0, 30.0, 3001);
-    let y = sampled_step(sys, -1.0, &t);
-    let info = StepInfo::from_samples(&t, &y, Some(-1.0), &StepConfig::default()).unwrap();
+    let info = sampled_step(sys, -1.0, &t);
     assert!((info.rise_time.unwrap() - 2.93).abs() < 1e-12);
     assert!((info.settling_time.unwrap() - 5.33).abs() < 1e-12);
     assert_eq!(info.overshoot_percent, 0.0);
@@ -103,8 +105,7 @@ fn data_path_converges_to_the_exact_path_on_fine_grids() {
         let exact = StepInfo::exact(&sys, sys.stiffness(), &cfg).unwrap();
         let dt = 1e-4;
         let t = linspace(0.0, 60.0, 600_001);
-        let y = sampled_step(sys, 1.0, &t);
-        let data = StepInfo::from_samples(&t, &y, Some(1.0), &cfg).unwrap();
+        let data = sampled_step(sys, 1.0, &t);
         // Each time is a sample time at or just after the exact one: within one step (two for
         // a difference of two such times).
         let ts = exact.settling_time.unwrap();
