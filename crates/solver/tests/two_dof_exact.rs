@@ -92,23 +92,50 @@ fn assert_ride_matches(m: &ExactMetrics, r: &[f64; 4], rel: [f64; 3]) {
     assert_close(m.max_suspension_travel, r[2], rel[2], "peak travel");
 }
 
+/// The default car over one bump, for the demo's window: the bump's duration `L/V` and
+/// 2.5 s after it.
+struct BumpCrossing {
+    two: TwoDof,
+    road: Road,
+    t_end: f64,
+}
+
+impl BumpCrossing {
+    /// A bump of `height` and `length` (m) crossed at `speed` (m/s).
+    fn new(height: f64, length: f64, speed: f64) -> Self {
+        Self {
+            two: car(TwoDofConfig::default()),
+            road: Road::bump(height, length, speed),
+            t_end: length / speed + 2.5,
+        }
+    }
+
+    /// The exact solver's ride metrics with `tyre`.
+    fn ride(&self, tyre: Tyre) -> ExactMetrics {
+        ride(&self.two, &self.road, self.t_end, tyre)
+    }
+
+    /// The unilateral tyre's [`rk4_reference`] at step `h` (s).
+    fn reference(&self, h: f64) -> [f64; 4] {
+        rk4_reference(&self.two, &self.road, self.t_end, h, true)
+    }
+}
+
 #[test]
 fn a_short_bump_gives_the_audits_fine_step_reference() {
     // ?demo=quarter-car-2dof&road=bump&L=0.1&V=40: a 5 cm bump lasting 2.5 ms, over the
     // demo's window L/V + 2.5 s. The audit's fine-step reference: 0.116 m/s² RMS body
     // acceleration and 2.82 mm peak travel (3 digits).
-    let two = car(TwoDofConfig::default());
-    let road = Road::bump(0.05, 0.1, 40.0);
-    let t_end = 0.1 / 40.0 + 2.5;
-    let m = ride(&two, &road, t_end, Tyre::Unilateral);
-    assert_eq!(m.window, t_end);
+    let crossing = BumpCrossing::new(0.05, 0.1, 40.0);
+    let m = crossing.ride(Tyre::Unilateral);
+    assert_eq!(m.window, crossing.t_end);
     assert!((m.rms_body_acceleration - 0.116).abs() < 5e-4, "{m:?}");
     assert!((m.max_suspension_travel - 2.82e-3).abs() < 5e-6, "{m:?}");
     assert_eq!(m.airborne_time, 0.0);
     // Our own reference: RK4 at h = 2 µs (800 steps per bump) on the analytic road,
     // trapezoid rule; agreement to 1e-5 (observed ≈ 2e-6: the chords of the bump and the
     // reference's own step error).
-    let r = rk4_reference(&two, &road, t_end, 2e-6, true);
+    let r = crossing.reference(2e-6);
     assert_ride_matches(&m, &r, [1e-5, 1e-4, 1e-5]);
 }
 
@@ -116,12 +143,10 @@ fn a_short_bump_gives_the_audits_fine_step_reference() {
 fn a_wheel_thrown_off_the_road_flies_as_the_fine_step_reference_does() {
     // A 10 cm bump half a metre long at 20 m/s throws the default wheel off the road for
     // about 64 ms.
-    let two = car(TwoDofConfig::default());
-    let road = Road::bump(0.1, 0.5, 20.0);
-    let t_end = 0.5 / 20.0 + 2.5;
-    let m = ride(&two, &road, t_end, Tyre::Unilateral);
+    let crossing = BumpCrossing::new(0.1, 0.5, 20.0);
+    let m = crossing.ride(Tyre::Unilateral);
     assert!(m.lift_offs == 1 && m.airborne_time > 0.05, "{m:?}");
-    let r = rk4_reference(&two, &road, t_end, 5e-6, true);
+    let r = crossing.reference(5e-6);
     assert_ride_matches(&m, &r, [1e-4; 3]);
     // Time off the road: the reference counts whole steps of 5 µs.
     assert!(
@@ -129,7 +154,7 @@ fn a_wheel_thrown_off_the_road_flies_as_the_fine_step_reference_does() {
         "{m:?} {r:?}"
     );
     // The bilateral tyre pulls the wheel back: it gives another answer.
-    let b = ride(&two, &road, t_end, Tyre::Bilateral);
+    let b = crossing.ride(Tyre::Bilateral);
     assert!((b.rms_tyre_deflection / m.rms_tyre_deflection - 1.0).abs() > 0.01);
 }
 
