@@ -21,6 +21,8 @@ pub mod uncertainty;
 pub mod universality;
 
 #[cfg(test)]
+pub(crate) mod regime_cases;
+#[cfg(test)]
 pub(crate) mod testing;
 
 pub use crate::declare::Readout;
