@@ -8,6 +8,7 @@ use crate::spec::DemoSpec;
 
 pub mod analogy;
 pub mod design;
+mod digits;
 pub mod flutter;
 pub mod integrators;
 pub mod nonlinear;

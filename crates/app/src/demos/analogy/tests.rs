@@ -2,7 +2,6 @@
 //! snapshot tests (`crates/app/tests/snapshots.rs`).
 
 use super::figures::CIRCUIT_OFFSET;
-use super::text::plain;
 use super::*;
 use crate::demos::regime_cases::each_regime;
 use crate::demos::testing::{self, number, value};
@@ -71,14 +70,6 @@ fn the_schematic_shows_both_machines_side_by_side() {
     assert!(lo < 0.0 && hi > CIRCUIT_OFFSET.0, "both drawings present");
     assert!(hi <= fig.x.range.1 && lo >= fig.x.range.0);
     assert!(fig.description.contains("capacitor"));
-}
-
-#[test]
-fn plain_numbers_drop_trailing_zeros_only() {
-    assert_eq!(plain(0.05), "0.05");
-    assert_eq!(plain(0.0), "0");
-    assert_eq!(plain(20.0), "20");
-    assert_eq!(plain(1.5), "1.5");
 }
 
 #[test]

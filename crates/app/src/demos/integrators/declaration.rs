@@ -1,7 +1,9 @@
 //! The `integrators` demo's declaration: parameters, readouts, plots and presets as tables.
 
 use super::{convergence, figures, stability, text, work, Results, P};
-use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::declare::{
+    Declaration, Param, ReadoutDef, DAMPING_RATIO, INITIAL_DISPLACEMENT, NATURAL_FREQUENCY,
+};
 use crate::format::si;
 use crate::spec::{PlotSpec, Preset};
 use crate::t;
@@ -27,24 +29,8 @@ pub(super) fn declaration() -> Declaration<P, Results> {
     Declaration {
         equation_mathml: text::EQUATION,
         params: vec![
-            Param::linear(
-                "zeta",
-                "damping ratio",
-                "ζ",
-                "",
-                (0.0, 2.0, 0.01),
-                0.05,
-                |p, v| p.zeta = v,
-            ),
-            Param::linear(
-                "wn",
-                "natural frequency",
-                "ωₙ",
-                "rad/s",
-                (0.5, 20.0, 0.01),
-                2.0,
-                |p, v| p.wn = v,
-            ),
+            Param::quantity(DAMPING_RATIO, (0.0, 2.0, 0.01), 0.05, |p, v| p.zeta = v),
+            Param::quantity(NATURAL_FREQUENCY, (0.5, 20.0, 0.01), 2.0, |p, v| p.wn = v),
             Param::log(
                 "h",
                 "step size",
@@ -57,15 +43,7 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             Param::linear("T", "duration", "T", "s", (1.0, 60.0, 0.5), 20.0, |p, v| {
                 p.t_end = v
             }),
-            Param::linear(
-                "x0",
-                "initial displacement",
-                "x₀",
-                "m",
-                (0.05, 2.0, 0.01),
-                1.0,
-                |p, v| p.x0 = v,
-            ),
+            Param::quantity(INITIAL_DISPLACEMENT, (0.05, 2.0, 0.01), 1.0, |p, v| p.x0 = v),
             Param::log(
                 "tol",
                 "DP45 tolerance (relative; absolute tol·x₀)",
