@@ -8,20 +8,37 @@ use crate::format::si;
 use crate::spec::{PlotSpec, Preset};
 use crate::t;
 
-/// A fixed-step method's readout: a number, or the time at which its run overflowed.
-fn max_err(r: &Results, k: usize) -> Result<Option<f64>, String> {
-    match r.runs[k].overflow {
+// The readouts of the fixed-step methods, one constructor per kind: `K` is the method's
+// index in the results (forward Euler, symplectic Euler, Heun, RK4), so each row of the
+// table gives only its key and label.
+
+/// Max error over the run, or the time at which the run overflowed.
+fn max_err<const K: usize>(key: &'static str, label: &'static str) -> ReadoutDef<Results> {
+    ReadoutDef::number_or_note(key, label, "m", 3, |r| match r.runs[K].overflow {
         Some(t) => Err(t!("integrators-overflow-note", time = si(t, "s", 3))),
-        None => Ok(r.max_err[k]),
-    }
+        None => Ok(r.max_err[K]),
+    })
 }
 
-fn stable(r: &Results, k: usize) -> String {
-    if r.stable[k] {
-        t!("integrators-stable-yes")
-    } else {
-        t!("integrators-stable-no")
-    }
+/// Order fitted over the asymptotic range of the convergence study.
+fn order<const K: usize>(key: &'static str, label: &'static str) -> ReadoutDef<Results> {
+    ReadoutDef::number(key, label, "", 3, |r| r.study.order(K))
+}
+
+/// Whether the run is stable at this step: yes or no.
+fn stable<const K: usize>(key: &'static str, label: &'static str) -> ReadoutDef<Results> {
+    ReadoutDef::text(key, label, |r| {
+        if r.stable[K] {
+            t!("integrators-stable-yes")
+        } else {
+            t!("integrators-stable-no")
+        }
+    })
+}
+
+/// Growth factor per step (|R(hλ)|, or the step matrix's spectral radius).
+fn growth<const K: usize>(key: &'static str, label: &'static str) -> ReadoutDef<Results> {
+    ReadoutDef::number(key, label, "", 4, |r| Some(r.growth[K]))
 }
 
 /// Parameters, readouts, plots and presets of `integrators`.
@@ -74,48 +91,20 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             ReadoutDef::number("h_last", "last step, ending the run at T", "s", 4, |r| {
                 Some(r.h_last)
             }),
-            ReadoutDef::number_or_note(
-                "max_err_euler",
-                "max error, forward Euler",
-                "m",
-                3,
-                |r| max_err(r, 0),
-            ),
-            ReadoutDef::number_or_note(
-                "max_err_symplectic_euler",
-                "max error, symplectic Euler",
-                "m",
-                3,
-                |r| max_err(r, 1),
-            ),
-            ReadoutDef::number_or_note("max_err_heun", "max error, Heun", "m", 3, |r| {
-                max_err(r, 2)
-            }),
-            ReadoutDef::number_or_note("max_err_rk4", "max error, RK4", "m", 3, |r| {
-                max_err(r, 3)
-            }),
+            max_err::<0>("max_err_euler", "max error, forward Euler"),
+            max_err::<1>("max_err_symplectic_euler", "max error, symplectic Euler"),
+            max_err::<2>("max_err_heun", "max error, Heun"),
+            max_err::<3>("max_err_rk4", "max error, RK4"),
             ReadoutDef::number_or_note("max_err_dp45", "max error, DP45", "m", 3, |r| match &r
                 .dp45
             {
                 Ok(_) => Ok(r.dp45_err),
                 Err(_) => Err(t!("integrators-failed")),
             }),
-            ReadoutDef::number("order_euler", "fitted order, forward Euler", "", 3, |r| {
-                r.study.order(0)
-            }),
-            ReadoutDef::number(
-                "order_symplectic_euler",
-                "fitted order, symplectic Euler",
-                "",
-                3,
-                |r| r.study.order(1),
-            ),
-            ReadoutDef::number("order_heun", "fitted order, Heun", "", 3, |r| {
-                r.study.order(2)
-            }),
-            ReadoutDef::number("order_rk4", "fitted order, RK4", "", 3, |r| {
-                r.study.order(3)
-            }),
+            order::<0>("order_euler", "fitted order, forward Euler"),
+            order::<1>("order_symplectic_euler", "fitted order, symplectic Euler"),
+            order::<2>("order_heun", "fitted order, Heun"),
+            order::<3>("order_rk4", "fitted order, RK4"),
             ReadoutDef::number(
                 "order_dp45",
                 "observed order, DP45 (error against f-evaluations, where the tolerance sets the steps)",
@@ -123,40 +112,17 @@ pub(super) fn declaration() -> Declaration<P, Results> {
                 3,
                 |r| r.study.dp45.order(),
             ),
-            ReadoutDef::text("stable_euler", "stable at this h, forward Euler", |r| {
-                stable(r, 0)
-            }),
-            ReadoutDef::text(
-                "stable_symplectic_euler",
-                "stable at this h, symplectic Euler",
-                |r| stable(r, 1),
-            ),
-            ReadoutDef::text("stable_heun", "stable at this h, Heun", |r| stable(r, 2)),
-            ReadoutDef::text("stable_rk4", "stable at this h, RK4", |r| stable(r, 3)),
-            ReadoutDef::number(
-                "growth_euler",
-                "growth per step |R(hλ)|, forward Euler",
-                "",
-                4,
-                |r| Some(r.growth[0]),
-            ),
-            ReadoutDef::number(
+            stable::<0>("stable_euler", "stable at this h, forward Euler"),
+            stable::<1>("stable_symplectic_euler", "stable at this h, symplectic Euler"),
+            stable::<2>("stable_heun", "stable at this h, Heun"),
+            stable::<3>("stable_rk4", "stable at this h, RK4"),
+            growth::<0>("growth_euler", "growth per step |R(hλ)|, forward Euler"),
+            growth::<1>(
                 "growth_symplectic_euler",
                 "growth per step (spectral radius), symplectic Euler",
-                "",
-                4,
-                |r| Some(r.growth[1]),
             ),
-            ReadoutDef::number(
-                "growth_heun",
-                "growth per step |R(hλ)|, Heun",
-                "",
-                4,
-                |r| Some(r.growth[2]),
-            ),
-            ReadoutDef::number("growth_rk4", "growth per step |R(hλ)|, RK4", "", 4, |r| {
-                Some(r.growth[3])
-            }),
+            growth::<2>("growth_heun", "growth per step |R(hλ)|, Heun"),
+            growth::<3>("growth_rk4", "growth per step |R(hλ)|, RK4"),
             ReadoutDef::number("steps_dp45", "DP45 accepted steps", "", 3, |r| {
                 r.dp45
                     .as_ref()
