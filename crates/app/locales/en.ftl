@@ -201,30 +201,34 @@ rlc-axis-voltage = capacitor voltage v_C
 rlc-envelope = envelope
 rlc-series-critical = critical R = { $resistance }
 rlc-schematic = Series RLC loop at t = { $time }: current { $current }, capacitor at { $voltage }.
-rlc-describe-current-undamped = R = { $resistance }, undamped (a lossless LC loop): the current oscillates forever at ω₀ = { $frequency }, between ±{ $bound } (all the energy passes to the inductor and back every half period).
-rlc-describe-voltage-undamped = R = { $resistance }, undamped (a lossless LC loop): the capacitor voltage swings between +{ $voltage } and −{ $voltage } forever at ω₀ = { $frequency }.
-rlc-describe-current-underdamped = R = { $resistance } below the critical { $critical }, underdamped: the current rings at ω_d = { $frequency } (Q = { $q }), decaying as e^(−αt) with α = { $alpha }; it never exceeds { $bound }.
-rlc-describe-voltage-underdamped = R = { $resistance } below the critical { $critical }, underdamped: the capacitor voltage { $reversal ->
-        [slight] reverses only slightly (at most { $rebound } of V₀, inside the band)
-        [count] { $crossings ->
-            [one] reverses polarity once before settling
-           *[other] reverses polarity { $crossings } times before settling
-        }
-       *[never] never reverses polarity
-    }, and { $settles ->
-        [yes] stays within 5 % of V₀ after { $time }
-       *[no] never settles
-    }.
-rlc-describe-current-critical = R = { $resistance } equals the critical resistance, critically damped: one pulse of current (negative, the capacitor discharging) that returns to zero without reversing; it never exceeds { $bound }.
-rlc-describe-voltage-critical = R = { $resistance } equals the critical resistance, critically damped: the capacitor empties as fast as it can without reversing; it { $settles ->
-        [yes] stays within 5 % of V₀ after { $time }
-       *[no] never settles
-    }.
-rlc-describe-current-overdamped = R = { $resistance } above the critical { $critical }, overdamped: one slow pulse of current (negative, the capacitor discharging) without reversing, slow time constant { $time }.
-rlc-describe-voltage-overdamped = R = { $resistance } above the critical { $critical }, overdamped: the capacitor discharges slowly without reversing; it { $settles ->
-        [yes] stays within 5 % of V₀ after { $time }
-       *[no] never settles
-    }.
+rlc-describe-current = { $regime ->
+        [undamped] R = { $resistance }, undamped (a lossless LC loop): the current oscillates forever at ω₀ = { $frequency }, between ±{ $bound } (all the energy passes to the inductor and back every half period).
+        [underdamped] R = { $resistance } below the critical { $critical }, underdamped: the current rings at ω_d = { $ringing } (Q = { $q }), decaying as e^(−αt) with α = { $alpha }; it never exceeds { $bound }.
+        [critical] R = { $resistance } equals the critical resistance, critically damped: one pulse of current (negative, the capacitor discharging) that returns to zero without reversing; it never exceeds { $bound }.
+       *[overdamped] R = { $resistance } above the critical { $critical }, overdamped: one slow pulse of current (negative, the capacitor discharging) without reversing, slow time constant { $time }.
+    }
+rlc-describe-voltage = { $regime ->
+        [undamped] R = { $resistance }, undamped (a lossless LC loop): the capacitor voltage swings between +{ $voltage } and −{ $voltage } forever at ω₀ = { $frequency }.
+        [underdamped] R = { $resistance } below the critical { $critical }, underdamped: the capacitor voltage { $reversal ->
+            [slight] reverses only slightly (at most { $rebound } of V₀, inside the band)
+            [count] { $crossings ->
+                [one] reverses polarity once before settling
+               *[other] reverses polarity { $crossings } times before settling
+            }
+           *[never] never reverses polarity
+        }, and { $settles ->
+            [yes] stays within 5 % of V₀ after { $time }
+           *[no] never settles
+        }.
+        [critical] R = { $resistance } equals the critical resistance, critically damped: the capacitor empties as fast as it can without reversing; it { $settles ->
+            [yes] stays within 5 % of V₀ after { $time }
+           *[no] never settles
+        }.
+       *[overdamped] R = { $resistance } above the critical { $critical }, overdamped: the capacitor discharges slowly without reversing; it { $settles ->
+            [yes] stays within 5 % of V₀ after { $time }
+           *[no] never settles
+        }.
+    }
 
 ### analogy
 

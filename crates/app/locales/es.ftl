@@ -193,30 +193,34 @@ rlc-axis-voltage = tensión del condensador v_C
 rlc-envelope = envolvente
 rlc-series-critical = R crítica = { $resistance }
 rlc-schematic = Circuito RLC serie en t = { $time }: corriente { $current }, condensador a { $voltage }.
-rlc-describe-current-undamped = R = { $resistance }, no amortiguado (un circuito LC sin pérdidas): la corriente oscila indefinidamente a ω₀ = { $frequency }, entre ±{ $bound } (toda la energía pasa a la bobina y vuelve cada medio periodo).
-rlc-describe-voltage-undamped = R = { $resistance }, no amortiguado (un circuito LC sin pérdidas): la tensión del condensador oscila entre +{ $voltage } y −{ $voltage } indefinidamente a ω₀ = { $frequency }.
-rlc-describe-current-underdamped = R = { $resistance }, por debajo de la R crítica de { $critical }, subamortiguado: la corriente oscila a ω_d = { $frequency } (Q = { $q }), decreciendo como e^(−αt) con α = { $alpha }; nunca supera { $bound }.
-rlc-describe-voltage-underdamped = R = { $resistance }, por debajo de la R crítica de { $critical }, subamortiguado: la tensión del condensador { $reversal ->
-        [slight] se invierte solo ligeramente (como mucho un { $rebound } de V₀, dentro de la banda)
-        [count] { $crossings ->
-            [one] invierte su polaridad una vez antes de establecerse
-           *[other] invierte su polaridad { $crossings } veces antes de establecerse
-        }
-       *[never] nunca invierte su polaridad
-    } y { $settles ->
-        [yes] queda dentro del 5 % de V₀ tras { $time }
-       *[no] nunca se establece
-    }.
-rlc-describe-current-critical = R = { $resistance }, igual a la resistencia crítica, amortiguamiento crítico: un único pulso de corriente (negativo, el condensador se descarga) que vuelve a cero sin invertirse; nunca supera { $bound }.
-rlc-describe-voltage-critical = R = { $resistance }, igual a la resistencia crítica, amortiguamiento crítico: el condensador se vacía lo más rápido posible sin invertirse; { $settles ->
-        [yes] queda dentro del 5 % de V₀ tras { $time }
-       *[no] nunca se establece
-    }.
-rlc-describe-current-overdamped = R = { $resistance }, por encima de la R crítica de { $critical }, sobreamortiguado: un pulso lento de corriente (negativo, el condensador se descarga) sin invertirse, constante de tiempo lenta { $time }.
-rlc-describe-voltage-overdamped = R = { $resistance }, por encima de la R crítica de { $critical }, sobreamortiguado: el condensador se descarga lentamente sin invertirse; { $settles ->
-        [yes] queda dentro del 5 % de V₀ tras { $time }
-       *[no] nunca se establece
-    }.
+rlc-describe-current = { $regime ->
+        [undamped] R = { $resistance }, no amortiguado (un circuito LC sin pérdidas): la corriente oscila indefinidamente a ω₀ = { $frequency }, entre ±{ $bound } (toda la energía pasa a la bobina y vuelve cada medio periodo).
+        [underdamped] R = { $resistance }, por debajo de la R crítica de { $critical }, subamortiguado: la corriente oscila a ω_d = { $ringing } (Q = { $q }), decreciendo como e^(−αt) con α = { $alpha }; nunca supera { $bound }.
+        [critical] R = { $resistance }, igual a la resistencia crítica, amortiguamiento crítico: un único pulso de corriente (negativo, el condensador se descarga) que vuelve a cero sin invertirse; nunca supera { $bound }.
+       *[overdamped] R = { $resistance }, por encima de la R crítica de { $critical }, sobreamortiguado: un pulso lento de corriente (negativo, el condensador se descarga) sin invertirse, constante de tiempo lenta { $time }.
+    }
+rlc-describe-voltage = { $regime ->
+        [undamped] R = { $resistance }, no amortiguado (un circuito LC sin pérdidas): la tensión del condensador oscila entre +{ $voltage } y −{ $voltage } indefinidamente a ω₀ = { $frequency }.
+        [underdamped] R = { $resistance }, por debajo de la R crítica de { $critical }, subamortiguado: la tensión del condensador { $reversal ->
+            [slight] se invierte solo ligeramente (como mucho un { $rebound } de V₀, dentro de la banda)
+            [count] { $crossings ->
+                [one] invierte su polaridad una vez antes de establecerse
+               *[other] invierte su polaridad { $crossings } veces antes de establecerse
+            }
+           *[never] nunca invierte su polaridad
+        } y { $settles ->
+            [yes] queda dentro del 5 % de V₀ tras { $time }
+           *[no] nunca se establece
+        }.
+        [critical] R = { $resistance }, igual a la resistencia crítica, amortiguamiento crítico: el condensador se vacía lo más rápido posible sin invertirse; { $settles ->
+            [yes] queda dentro del 5 % de V₀ tras { $time }
+           *[no] nunca se establece
+        }.
+       *[overdamped] R = { $resistance }, por encima de la R crítica de { $critical }, sobreamortiguado: el condensador se descarga lentamente sin invertirse; { $settles ->
+            [yes] queda dentro del 5 % de V₀ tras { $time }
+           *[no] nunca se establece
+        }.
+    }
 
 ### analogy
 

@@ -8,6 +8,7 @@ use crate::spec::DemoSpec;
 
 pub mod analogy;
 pub mod design;
+mod digits;
 pub mod flutter;
 pub mod integrators;
 pub mod nonlinear;
@@ -20,6 +21,8 @@ pub mod rlc;
 pub mod uncertainty;
 pub mod universality;
 
+#[cfg(test)]
+pub(crate) mod regime_cases;
 #[cfg(test)]
 pub(crate) mod testing;
 

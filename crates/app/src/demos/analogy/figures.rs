@@ -13,6 +13,18 @@ const SAMPLES: usize = 600;
 /// Where the circuit is drawn relative to the mass (drawing units): beside it, centred.
 pub(super) const CIRCUIT_OFFSET: (f64, f64) = (4.7, 1.4);
 
+/// Line styles, in the order the plots list their curves: mechanical solid and thick,
+/// electrical thin and broken — `x`, `q`, `v`, `i` (the stores spring, capacitor, mass,
+/// inductor), then the mechanical and electrical totals.
+const STYLES: [LineStyle; 6] = [
+    LineStyle::solid(Ink::Blue, 3.5),
+    LineStyle::dashed(Ink::Vermillion, 2.0),
+    LineStyle::solid(Ink::Green, 3.5),
+    LineStyle::dotted(Ink::Purple, 2.0),
+    LineStyle::solid(Ink::Black, 2.5),
+    LineStyle::dashed(Ink::Orange, 1.5),
+];
+
 pub(super) const RESPONSES_TITLE: &str = "Normalised responses of both machines";
 pub(super) const ENERGY_TITLE: &str = "Energy exchange";
 
@@ -72,33 +84,16 @@ pub(super) fn responses(r: &Results) -> Figure {
     // Head-room above the data for the legend.
     let y = (lo, hi + 0.45 * (hi - lo));
     let description = text::describe_responses(r, n.gap());
-    Figure::plot(
-        t!("analogy-plot-responses"),
-        Axis::linear(t!("axis-time"), "s", (0.0, r.t_end)),
-        Axis::linear(t!("analogy-axis-response"), "", y),
-    )
-    .with_line(
-        t!("analogy-series-x"),
-        n.x,
-        LineStyle::solid(Ink::Blue, 3.5),
-    )
-    .with_line(
-        t!("analogy-series-q"),
-        n.q,
-        LineStyle::dashed(Ink::Vermillion, 2.0),
-    )
-    .with_line(
-        t!("analogy-series-v"),
-        n.v,
-        LineStyle::solid(Ink::Green, 3.5),
-    )
-    .with_line(
-        t!("analogy-series-i"),
-        n.i,
-        LineStyle::dotted(Ink::Purple, 2.0),
-    )
-    .with_origin_lines()
-    .described(description)
+    let lines = [
+        (t!("analogy-series-x"), n.x),
+        (t!("analogy-series-q"), n.q),
+        (t!("analogy-series-v"), n.v),
+        (t!("analogy-series-i"), n.i),
+    ];
+    let y_axis = Axis::linear(t!("analogy-axis-response"), "", y);
+    time_plot(r, t!("analogy-plot-responses"), y_axis, lines)
+        .with_origin_lines()
+        .described(description)
 }
 
 /// The energy in each store of both machines, and each machine's total.
@@ -122,42 +117,37 @@ pub(super) fn energy(r: &Results) -> Figure {
     let left = total_mech.last().map_or(0.0, |p| p.1);
     let kinetic_peak = mass.iter().map(|p| p.1).fold(0.0, f64::max);
     let description = text::describe_energy(r, e0, left, kinetic_peak);
-    Figure::plot(
-        t!("analogy-plot-energy"),
+    let lines = [
+        (t!("analogy-series-spring"), spring),
+        (t!("analogy-series-capacitor"), cap),
+        (t!("analogy-series-mass"), mass),
+        (t!("analogy-series-inductor"), ind),
+        (t!("analogy-series-total-mass"), total_mech),
+        (t!("analogy-series-total-circuit"), total_elec),
+    ];
+    let y_axis = Axis::linear(t!("analogy-axis-energy"), "J", (0.0, 2.1 * e0.max(1e-300)));
+    time_plot(r, t!("analogy-plot-energy"), y_axis, lines).described(description)
+}
+
+/// A plot against time over the window with `y_axis` and one line per `(label, points)`,
+/// drawn in [`STYLES`] in order.
+fn time_plot<const N: usize>(
+    r: &Results,
+    title: String,
+    y_axis: Axis,
+    lines: [(String, Vec<(f64, f64)>); N],
+) -> Figure {
+    let plot = Figure::plot(
+        title,
         Axis::linear(t!("axis-time"), "s", (0.0, r.t_end)),
-        Axis::linear(t!("analogy-axis-energy"), "J", (0.0, 2.1 * e0.max(1e-300))),
-    )
-    .with_line(
-        t!("analogy-series-spring"),
-        spring,
-        LineStyle::solid(Ink::Blue, 3.5),
-    )
-    .with_line(
-        t!("analogy-series-capacitor"),
-        cap,
-        LineStyle::dashed(Ink::Vermillion, 2.0),
-    )
-    .with_line(
-        t!("analogy-series-mass"),
-        mass,
-        LineStyle::solid(Ink::Green, 3.5),
-    )
-    .with_line(
-        t!("analogy-series-inductor"),
-        ind,
-        LineStyle::dotted(Ink::Purple, 2.0),
-    )
-    .with_line(
-        t!("analogy-series-total-mass"),
-        total_mech,
-        LineStyle::solid(Ink::Black, 2.5),
-    )
-    .with_line(
-        t!("analogy-series-total-circuit"),
-        total_elec,
-        LineStyle::dashed(Ink::Orange, 1.5),
-    )
-    .described(description)
+        y_axis,
+    );
+    lines
+        .into_iter()
+        .zip(STYLES)
+        .fold(plot, |fig, ((label, points), style)| {
+            fig.with_line(label, points, style)
+        })
 }
 
 /// The mass and the loop side by side at time `t` \[s\].

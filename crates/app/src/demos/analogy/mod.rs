@@ -4,14 +4,17 @@
 //! the mechanism — L \[H\] = m \[kg\], R \[Ω\] = c \[N·s/m\], 1/C \[1/F\] = k \[N/m\],
 //! q₀ \[C\] = x₀ \[m\] — so both free responses, released from rest, are one curve on
 //! normalised axes, and the energy swaps spring ↔ mass exactly as capacitor ↔ inductor.
+//!
+//! Files: `declaration.rs` declares the demo; this one holds the model step; `figures.rs`
+//! builds the plots; `text.rs` holds the prose.
 
+mod declaration;
 mod figures;
 mod text;
 
 use super::Model;
-use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::declare::Declaration;
 use crate::figure::Figure;
-use crate::spec::{PlotSpec, Preset};
 use std::f64::consts::TAU;
 use zeta_solver::integrate::analysis::oscillator_energy;
 use zeta_solver::{FreeResponse, Regime, SecondOrder};
@@ -113,137 +116,6 @@ impl Model for Analogy {
     type Params = P;
     type Results = Results;
 
-    fn declare() -> Declaration<P, Results> {
-        Declaration {
-            equation_mathml: text::EQUATION,
-            params: vec![
-                Param::log(
-                    "m",
-                    "mass (≙ inductance L)",
-                    "m",
-                    "kg",
-                    (0.1, 10.0, 0.01),
-                    1.0,
-                    |p, v| p.m = v,
-                ),
-                Param::linear(
-                    "c",
-                    "damping (≙ resistance R)",
-                    "c",
-                    "N·s/m",
-                    (0.0, 50.0, 0.01),
-                    2.0,
-                    |p, v| p.c = v,
-                ),
-                Param::log(
-                    "k",
-                    "spring rate (≙ 1/C)",
-                    "k",
-                    "N/m",
-                    (1.0, 1000.0, 0.1),
-                    100.0,
-                    |p, v| p.k = v,
-                ),
-                Param::linear(
-                    "x0",
-                    "initial displacement (≙ charge q₀)",
-                    "x₀",
-                    "m",
-                    (0.001, 0.1, 0.001),
-                    0.05,
-                    |p, v| p.x0 = v,
-                ),
-            ],
-            readouts: vec![
-                ReadoutDef::number("m", "mass m", "kg", 4, |r| Some(r.mech.as_mechanical().0)),
-                ReadoutDef::number("L", "inductance L (≙ mass m)", "H", 4, |r| Some(r.lrc.0)),
-                ReadoutDef::number("c", "damping c", "N·s/m", 4, |r| {
-                    Some(r.mech.as_mechanical().1)
-                }),
-                ReadoutDef::number("R", "resistance R (≙ damping c)", "Ω", 4, |r| {
-                    Some(r.lrc.1)
-                }),
-                ReadoutDef::number("k", "spring rate k", "N/m", 4, |r| {
-                    Some(r.mech.as_mechanical().2)
-                }),
-                ReadoutDef::number("elastance", "elastance 1/C (≙ k)", "1/F", 4, |r| {
-                    Some(r.elec.stiffness())
-                }),
-                ReadoutDef::number("compliance", "compliance 1/k (≙ C)", "m/N", 4, |r| {
-                    Some(1.0 / r.mech.as_mechanical().2)
-                }),
-                ReadoutDef::number("C", "capacitance C (≙ 1/k)", "F", 4, |r| Some(r.lrc.2)),
-                ReadoutDef::number("x0", "initial displacement x₀", "m", 4, |r| Some(r.x0)),
-                ReadoutDef::number("q0", "initial charge q₀ (≙ x₀)", "C", 4, |r| {
-                    Some(r.q0)
-                }),
-                ReadoutDef::number(
-                    "wn",
-                    "natural frequency ωₙ = √(k/m)",
-                    "rad/s",
-                    4,
-                    |r| r.mech.natural_frequency(),
-                ),
-                ReadoutDef::number(
-                    "w0",
-                    "resonant frequency ω₀ = 1/√(LC) (≙ ωₙ)",
-                    "rad/s",
-                    4,
-                    |r| r.elec.natural_frequency(),
-                ),
-                ReadoutDef::number("zeta", "damping ratio ζ (both)", "", 4, |r| {
-                    r.mech.damping_ratio()
-                }),
-                ReadoutDef::text("regime", "regime (both)", |r| {
-                    crate::format::regime(r.mech.regime())
-                }),
-                ReadoutDef::number("Q", "quality factor Q (both)", "", 4, |r| {
-                    r.mech.quality_factor()
-                }),
-                ReadoutDef::number(
-                    "energy",
-                    "stored energy ½kx₀² = ½q₀²/C",
-                    "J",
-                    4,
-                    |r| Some(r.energy()),
-                ),
-            ],
-            plots: vec![
-                PlotSpec {
-                    key: "responses",
-                    title: figures::RESPONSES_TITLE,
-                    aspect: 1.6,
-                },
-                PlotSpec {
-                    key: "energy",
-                    title: figures::ENERGY_TITLE,
-                    aspect: 1.4,
-                },
-            ],
-            presets: [
-                ("Frictionless spring ↔ LC tank (c = R = 0)", 1.0, 0.0, 100.0),
-                ("Light damping ζ = 0.05", 1.0, 1.0, 100.0),
-                ("Critical ζ = 1 (c = 2√(mk), R = 2√(L/C))", 1.0, 20.0, 100.0),
-                ("Overdamped ζ = 2", 1.0, 40.0, 100.0),
-                (
-                    "Heavy and soft: m = 4 kg ↔ L = 4 H, k = 25 N/m ↔ C = 40 mF",
-                    4.0,
-                    2.0,
-                    25.0,
-                ),
-            ]
-            .into_iter()
-            .map(|(label, m, c, k)| Preset {
-                label,
-                values: vec![("m", m), ("c", c), ("k", k)],
-            })
-            .collect(),
-            table: Some(text::analogy_table()),
-            schematic: true,
-            ..Declaration::new("analogy", "One equation, two machines", text::SUMMARY)
-        }
-    }
-
     fn step(&mut self, p: &P) -> Option<Results> {
         p.twins()
     }
@@ -258,6 +130,10 @@ impl Model for Analogy {
 
     fn schematic(&self, p: &P, t: f64) -> Option<Figure> {
         Some(figures::schematic(&p.twins()?, t))
+    }
+
+    fn declare() -> Declaration<P, Results> {
+        declaration::declaration()
     }
 }
 

@@ -2,8 +2,8 @@
 //! alternatives.
 
 use super::Results;
+use crate::demos::digits::trimmed;
 use crate::format::{self, si};
-use crate::i18n::number;
 use crate::spec::Table;
 use crate::t;
 
@@ -179,25 +179,6 @@ pub(super) fn analogy_table() -> Table {
     }
 }
 
-/// A dimensionless number with 3 significant digits and no trailing zeros (`0.05`, `2`),
-/// in the interface language's digits and decimal separator.
-pub(super) fn plain(v: f64) -> String {
-    if !v.is_finite() {
-        return si(v, "", 3);
-    }
-    let s = format::significant_plain(v, 3);
-    if s.contains('e') {
-        return format::significant(v, 3);
-    }
-    let s = if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.')
-    } else {
-        s.as_str()
-    };
-    let decimals = s.split_once('.').map_or(0, |(_, f)| f.len());
-    number::fixed(s.parse().unwrap_or(v), decimals)
-}
-
 /// The normalised responses in words; `gap` is the largest difference between a
 /// mechanical curve and its electrical twin.
 pub(super) fn describe_responses(r: &Results, gap: f64) -> String {
@@ -214,7 +195,7 @@ pub(super) fn describe_responses(r: &Results, gap: f64) -> String {
     t!(
         "analogy-describe-responses",
         regime = format::regime(r.mech.regime()),
-        zeta = plain(zeta),
+        zeta = trimmed(zeta, 3),
         same = if gap == 0.0 { "exact" } else { "close" },
         difference = si(gap, "", 2),
         motion = motion,

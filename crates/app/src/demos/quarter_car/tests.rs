@@ -99,12 +99,7 @@ fn url_rule_c_wins_when_both_are_given() {
 #[test]
 fn presets_give_consistent_c_and_zeta() {
     for preset in QuarterCar::declare().spec().presets {
-        let q: Vec<String> = preset
-            .values
-            .iter()
-            .map(|(k, v)| format!("{k}={v}"))
-            .collect();
-        let f = run(&q.join("&"));
+        let f = testing::preset("quarter-car", preset.label);
         let z = preset.values.iter().find(|(k, _)| *k == "zeta").unwrap().1;
         assert!(close(number(&f, "zeta"), z, 1e-12), "{}", preset.label);
     }

@@ -1,21 +1,18 @@
 //! `regimes`: free response of `x'' + 2ζωₙ·x' + ωₙ²·x = 0` in every damping regime, with
 //! the two poles in the s-plane, a table of the regimes and an animated mass on a spring.
 //!
-//! The shape every demo follows: this file declares the demo (parameters and readouts as
-//! tables) and holds its model step (solver calls only); `figures.rs` builds the plots from
-//! the results; `text.rs` holds the prose.
+//! The shape every demo follows, one job per file: `declaration.rs` declares the demo
+//! (parameters, readouts, plots and presets as tables); this file holds its model step
+//! (solver calls only); `figures.rs` builds the plots from the results; `text.rs` holds the
+//! prose.
 
+mod declaration;
 mod figures;
 mod text;
 
 use super::Model;
-use crate::declare::{
-    Declaration, Param, ReadoutDef, DAMPING_RATIO, INITIAL_DISPLACEMENT, INITIAL_VELOCITY,
-    NATURAL_FREQUENCY,
-};
+use crate::declare::Declaration;
 use crate::figure::Figure;
-use crate::format;
-use crate::spec::{PlotSpec, Preset};
 use zeta_solver::metrics::{free::FreeMetrics, SettlingBand};
 use zeta_solver::{Complex, FreeResponse, Regime, SecondOrder};
 
@@ -68,65 +65,6 @@ impl Model for Regimes {
     type Params = P;
     type Results = Results;
 
-    fn declare() -> Declaration<P, Results> {
-        Declaration {
-            equation_mathml: text::EQUATION,
-            params: vec![
-                Param::quantity(NATURAL_FREQUENCY, (0.5, 20.0, 0.01), 6.0, |p, v| p.wn = v),
-                Param::quantity(DAMPING_RATIO, (-0.5, 3.0, 0.01), 0.3, |p, v| p.zeta = v),
-                Param::quantity(INITIAL_DISPLACEMENT, (-0.1, 0.1, 0.001), 0.06, |p, v| {
-                    p.x0 = v
-                }),
-                Param::quantity(INITIAL_VELOCITY, (-2.0, 2.0, 0.01), 0.0, |p, v| p.v0 = v),
-            ],
-            readouts: vec![
-                ReadoutDef::text("regime", "regime", |r| format::regime(r.regime)),
-                ReadoutDef::number("wn", "natural frequency ωₙ", "rad/s", 4, |r| {
-                    r.sys.natural_frequency()
-                }),
-                ReadoutDef::number("zeta", "damping ratio ζ", "", 3, |r| r.sys.damping_ratio()),
-                ReadoutDef::number("wd", "damped frequency ω_d", "rad/s", 4, |r| {
-                    r.sys.damped_frequency()
-                }),
-                ReadoutDef::number("pole_re", "pole real part", "1/s", 4, |r| {
-                    Some(r.poles[0].re)
-                }),
-                ReadoutDef::number("pole_im", "pole imaginary part", "rad/s", 4, |r| {
-                    Some(r.poles[0].im)
-                }),
-            ],
-            plots: vec![
-                PlotSpec {
-                    key: "response",
-                    title: figures::RESPONSE_TITLE,
-                    aspect: 1.9,
-                },
-                PlotSpec {
-                    key: "poles",
-                    title: figures::POLES_TITLE,
-                    aspect: 1.25,
-                },
-            ],
-            primary_plot: "response",
-            presets: [
-                ("Undamped ζ = 0", 0.0),
-                ("Underdamped ζ = 0.2", 0.2),
-                ("Critically damped ζ = 1", 1.0),
-                ("Overdamped ζ = 2", 2.0),
-                ("Negative damping ζ = −0.1", -0.1),
-            ]
-            .into_iter()
-            .map(|(label, z)| Preset {
-                label,
-                values: vec![("zeta", z), ("x0", 0.06), ("v0", 0.0)],
-            })
-            .collect(),
-            table: Some(text::regime_table()),
-            schematic: true,
-            ..Declaration::new("regimes", "Damping regimes", text::SUMMARY)
-        }
-    }
-
     fn step(&mut self, p: &P) -> Option<Results> {
         let sys = p.system()?;
         let t_end = PERIODS * std::f64::consts::TAU / sys.natural_frequency().unwrap_or(1.0);
@@ -156,6 +94,10 @@ impl Model for Regimes {
 
     fn sonify(&self, p: &P, t: f64) -> Option<f64> {
         Some(FreeResponse::new(p.system()?, p.x0, p.v0).displacement(t) / p.reach())
+    }
+
+    fn declare() -> Declaration<P, Results> {
+        declaration::declaration()
     }
 }
 

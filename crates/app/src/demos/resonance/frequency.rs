@@ -2,6 +2,7 @@
 //! family of damping ratios, the current one highlighted with its peak and half-power band.
 
 use super::{text, Results, View, R_RANGE};
+use crate::demos::digits::trimmed;
 use crate::figure::{Axis, Figure, LineStyle, Marker, Series};
 use crate::plot::{sampled, Ink};
 use crate::t;
@@ -64,8 +65,8 @@ fn clip_above(points: &mut [(f64, f64)], top: f64) {
 fn family_label() -> String {
     t!(
         "resonance-family",
-        from = text::fmt_ratio(FAMILY[0]),
-        to = text::fmt_ratio(FAMILY[FAMILY.len() - 1])
+        from = trimmed(FAMILY[0], 3),
+        to = trimmed(FAMILY[FAMILY.len() - 1], 3)
     )
 }
 
@@ -101,7 +102,7 @@ pub(super) fn magnitude(res: &Results, grid: &[f64]) -> Figure {
             };
             if at.1 < 0.93 * top && at.1 > floor {
                 markers.push(Marker::text(
-                    format!("ζ = {}", text::fmt_ratio(zf)),
+                    format!("ζ = {}", trimmed(zf, 3)),
                     at,
                     Ink::Black,
                 ));
@@ -130,13 +131,13 @@ pub(super) fn magnitude(res: &Results, grid: &[f64]) -> Figure {
     let mut cur = sampled(grid, |r| gain(r, z, view));
     clip_above(&mut cur, top);
     series.push(Series::new(
-        t!("resonance-current", zeta = text::fmt_ratio(z)),
+        t!("resonance-current", zeta = trimmed(z, 3)),
         cur,
         LineStyle::solid(Ink::Blue, 3.0),
     ));
     let drive = res.p.r;
     series.push(Series::new(
-        t!("resonance-drive", ratio = text::fmt_ratio(drive)),
+        t!("resonance-drive", ratio = trimmed(drive, 3)),
         vec![(drive, y_range.0), (drive, y_range.1)],
         LineStyle::dashed(Ink::Vermillion, 1.5),
     ));
@@ -190,12 +191,12 @@ pub(super) fn phase(res: &Results, grid: &[f64]) -> Figure {
     let drive = res.p.r;
     let ph = frf::phase(drive, z);
     fig.with_line(
-        t!("resonance-current", zeta = text::fmt_ratio(z)),
+        t!("resonance-current", zeta = trimmed(z, 3)),
         degrees(z),
         LineStyle::solid(Ink::Blue, 3.0),
     )
     .with_line(
-        t!("resonance-drive", ratio = text::fmt_ratio(drive)),
+        t!("resonance-drive", ratio = trimmed(drive, 3)),
         vec![(drive, PHASE_RANGE.0), (drive, PHASE_RANGE.1)],
         LineStyle::dashed(Ink::Vermillion, 1.5),
     )

@@ -2,8 +2,8 @@
 //! legend entries, and the beats readout.
 
 use super::{Results, View, P};
-use crate::format::{si, significant_plain};
-use crate::i18n::number;
+use crate::demos::digits::trimmed;
+use crate::format::si;
 use crate::t;
 use zeta_solver::forced::{Beats, HarmonicResponse};
 use zeta_solver::frf::{self, HalfPowerPoints};
@@ -30,39 +30,27 @@ pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 <msup><mi>r</mi><mn>2</mn></msup><mo>+</mo><mn>2</mn><mi>i</mi><mi>ζ</mi><mi>r</mi></mrow></mfrac>\
 </mrow></math>";
 
-/// A dimensionless number with 3 significant digits and no trailing zeros (`0.05`, `1.05`),
-/// in the interface language's digits and decimal separator.
-pub(super) fn fmt_ratio(r: f64) -> String {
-    let plain = significant_plain(r, 3);
-    if !plain.contains('.') || plain.contains('e') {
-        return si(r, "", 3);
-    }
-    let trimmed = plain.trim_end_matches('0').trim_end_matches('.');
-    let decimals = trimmed.split_once('.').map_or(0, |(_, f)| f.len());
-    number::fixed(trimmed.parse().unwrap_or(r), decimals)
-}
-
 /// The half-power points of the |H| curve in words: the two-sided peak width, the
 /// one-sided band of a broad peak, or the −3 dB cut-off when there is no peak.
 pub(super) fn describe_band(h: &HalfPowerPoints, width: Option<f64>, has_peak: bool) -> String {
     match (h.lower, width) {
         (Some(l), Some(w)) => t!(
             "resonance-band-width",
-            lower = fmt_ratio(l),
-            upper = fmt_ratio(h.upper),
-            width = fmt_ratio(w)
+            lower = trimmed(l, 3),
+            upper = trimmed(h.upper, 3),
+            width = trimmed(w, 3)
         ),
-        _ if has_peak => t!("resonance-band-broad", upper = fmt_ratio(h.upper)),
-        _ => t!("resonance-band-cutoff", upper = fmt_ratio(h.upper)),
+        _ if has_peak => t!("resonance-band-broad", upper = trimmed(h.upper, 3)),
+        _ => t!("resonance-band-cutoff", upper = trimmed(h.upper, 3)),
     }
 }
 
 /// The legend entry of the half-power level line.
 pub(super) fn band_legend(h: &HalfPowerPoints, width: Option<f64>, has_peak: bool) -> String {
     match width {
-        Some(w) => t!("resonance-legend-width", width = fmt_ratio(w)),
-        None if has_peak => t!("resonance-legend-broad", upper = fmt_ratio(h.upper)),
-        None => t!("resonance-legend-cutoff", upper = fmt_ratio(h.upper)),
+        Some(w) => t!("resonance-legend-width", width = trimmed(w, 3)),
+        None if has_peak => t!("resonance-legend-broad", upper = trimmed(h.upper, 3)),
+        None => t!("resonance-legend-cutoff", upper = trimmed(h.upper, 3)),
     }
 }
 
@@ -99,10 +87,10 @@ pub(super) fn describe_magnitude(res: &Results, band_text: &str) -> String {
     t!(
         "resonance-describe-magnitude",
         view = if db { "db" } else { "linear" },
-        zeta = fmt_ratio(z),
+        zeta = trimmed(z, 3),
         peak = peak_text,
         band = band_text,
-        drive = fmt_ratio(res.p.r),
+        drive = trimmed(res.p.r, 3),
         gain = unit_text(frf::magnitude(res.p.r, z)),
     )
 }
@@ -111,8 +99,8 @@ pub(super) fn describe_magnitude(res: &Results, band_text: &str) -> String {
 pub(super) fn describe_phase(res: &Results, ph: f64) -> String {
     t!(
         "resonance-describe-phase",
-        zeta = fmt_ratio(res.p.zeta),
-        drive = fmt_ratio(res.p.r),
+        zeta = trimmed(res.p.zeta, 3),
+        drive = trimmed(res.p.r, 3),
         degrees = si(ph.to_degrees(), "°", 3),
         radians = si(ph, "", 4),
     )
@@ -121,7 +109,7 @@ pub(super) fn describe_phase(res: &Results, ph: f64) -> String {
 /// The time response in words.
 pub(super) fn describe_time(p: &P, resp: &HarmonicResponse, t_end: f64, max_x: f64) -> String {
     let (ratio, omega, span) = (
-        fmt_ratio(p.r),
+        trimmed(p.r, 3),
         si(p.r * p.wn, "rad/s", 3),
         si(t_end, "s", 3),
     );

@@ -5,6 +5,7 @@
 #![allow(clippy::disallowed_methods)]
 
 use super::text::ohms;
+use crate::demos::regime_cases::each_regime;
 use crate::demos::testing::{self, close, number, value};
 use crate::demos::Frame;
 
@@ -16,26 +17,23 @@ fn run(query: &str) -> Frame {
 fn readouts_match_the_textbook_circuit() {
     // L = 0.5 H, C = 20 mF: ω₀ = 10 rad/s, R_crit = 10 Ω; R = 4 Ω → ζ = 0.4, Q = 1.25.
     let f = run("R=4&L=0.5&C=0.02&V0=12");
-    assert!(close(number(&f, "w0"), 10.0, 1e-14));
-    assert!(close(number(&f, "R_crit"), 10.0, 1e-14));
-    assert!(close(number(&f, "zeta"), 0.4, 1e-14));
-    assert!(close(number(&f, "Q"), 1.25, 1e-14));
-    assert!(close(number(&f, "alpha"), 4.0, 1e-14));
-    assert!(close(number(&f, "bandwidth"), 8.0, 1e-14));
-    assert!(close(number(&f, "wd"), (100.0f64 - 16.0).sqrt(), 1e-14));
+    for (key, want) in [
+        ("w0", 10.0),
+        ("R_crit", 10.0),
+        ("zeta", 0.4),
+        ("Q", 1.25),
+        ("alpha", 4.0),
+        ("bandwidth", 8.0),
+        ("wd", (100.0f64 - 16.0).sqrt()),
+    ] {
+        assert!(close(number(&f, key), want, 1e-14), "{key}");
+    }
     assert_eq!(value(&f, "regime"), "underdamped");
 }
 
 #[test]
 fn every_preset_reaches_its_regime_and_the_plots_start_right() {
-    for (r, regime) in [
-        (0.0, "undamped"),
-        (2.0, "underdamped"),
-        (10.0, "critically damped"),
-        (20.0, "overdamped"),
-    ] {
-        let f = run(&format!("R={r}"));
-        assert_eq!(value(&f, "regime"), regime);
+    for (r, regime, f) in each_regime("rlc", "", "R", [0.0, 2.0, 10.0, 20.0]) {
         // i(0) = 0 and v_C(0) = V₀ on the design's curve (the last series).
         let i0 = f.figures[0].series.last().unwrap().points[0].1;
         let v0 = f.figures[1].series.last().unwrap().points[0].1;

@@ -49,59 +49,35 @@ pub(super) fn describe(r: &Results, signal: Signal) -> String {
         Some(m) if m.zero_crossings >= 1 => ("count", m.zero_crossings, String::new()),
         _ => ("never", 0, String::new()),
     };
-    match (sys.regime(), signal) {
-        (Regime::Undamped, Signal::Current) => t!(
-            "rlc-describe-current-undamped",
-            resistance = resistance,
-            frequency = w0,
-            bound = bound
-        ),
-        (Regime::Undamped, Signal::Voltage) => t!(
-            "rlc-describe-voltage-undamped",
-            resistance = resistance,
-            voltage = si(r.p.v0.abs(), "V", 3),
-            frequency = w0
-        ),
-        (Regime::Underdamped, Signal::Current) => t!(
-            "rlc-describe-current-underdamped",
+    let regime = match sys.regime() {
+        Regime::Undamped => "undamped",
+        Regime::Underdamped => "underdamped",
+        Regime::CriticallyDamped => "critical",
+        _ => "overdamped",
+    };
+    match signal {
+        Signal::Current => t!(
+            "rlc-describe-current",
+            regime = regime,
             resistance = resistance,
             critical = critical,
-            frequency = si(sys.damped_frequency().unwrap_or(0.0), "rad/s", 3),
+            frequency = w0,
+            ringing = si(sys.damped_frequency().unwrap_or(0.0), "rad/s", 3),
             q = si(sys.quality_factor().unwrap_or(f64::NAN), "", 3),
             alpha = si(sys.alpha(), "1/s", 3),
-            bound = bound
+            bound = bound,
+            time = si(sys.time_constants()[0].unwrap_or(f64::NAN), "s", 3)
         ),
-        (Regime::Underdamped, Signal::Voltage) => t!(
-            "rlc-describe-voltage-underdamped",
+        Signal::Voltage => t!(
+            "rlc-describe-voltage",
+            regime = regime,
             resistance = resistance,
             critical = critical,
+            voltage = si(r.p.v0.abs(), "V", 3),
+            frequency = w0,
             reversal = reversal,
             crossings = crossings,
             rebound = rebound,
-            settles = settles,
-            time = time
-        ),
-        (Regime::CriticallyDamped, Signal::Current) => t!(
-            "rlc-describe-current-critical",
-            resistance = resistance,
-            bound = bound
-        ),
-        (Regime::CriticallyDamped, Signal::Voltage) => t!(
-            "rlc-describe-voltage-critical",
-            resistance = resistance,
-            settles = settles,
-            time = time
-        ),
-        (_, Signal::Current) => t!(
-            "rlc-describe-current-overdamped",
-            resistance = resistance,
-            critical = critical,
-            time = si(sys.time_constants()[0].unwrap_or(f64::NAN), "s", 3)
-        ),
-        (_, Signal::Voltage) => t!(
-            "rlc-describe-voltage-overdamped",
-            resistance = resistance,
-            critical = critical,
             settles = settles,
             time = time
         ),
