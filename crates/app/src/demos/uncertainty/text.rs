@@ -5,7 +5,6 @@ use super::ranges::{BandName, Member, Ranges};
 use super::{HistOf, System, P};
 use crate::format::{si, significant, significant_plain};
 use crate::i18n::number;
-use crate::spec::Preset;
 use crate::t;
 
 pub(super) const SUMMARY: &str =
@@ -176,28 +175,4 @@ pub(super) fn mark_provisional(fig: &mut crate::figure::Figure, shown: usize, fu
         full = full,
         description = &fig.description
     );
-}
-
-/// The preset buttons.
-pub(super) fn presets() -> Vec<Preset> {
-    let car = |label, zeta| Preset {
-        label,
-        values: vec![
-            ("system", 0.0),
-            ("m", 300.0),
-            ("k", 24_000.0),
-            ("zeta", zeta),
-            ("dm", 10.0),
-        ],
-    };
-    let rlc = |label, pct| Preset {
-        label,
-        values: vec![("system", 1.0), ("dR", pct), ("dL", pct), ("dC", pct)],
-    };
-    vec![
-        car("ζ = 1 design under ±10 % mass", 1.0),
-        car("ζ = 0.7 design under ±10 % mass", 0.7),
-        rlc("RLC 5 % parts", 5.0),
-        rlc("RLC 20 % parts", 20.0),
-    ]
 }
