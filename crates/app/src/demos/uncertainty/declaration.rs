@@ -121,24 +121,24 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             Param::choice("hist", "second histogram", HistOf::Q, |p, v| p.hist = v),
         ],
         readouts: vec![
-            ReadoutDef::number("zeta_min", "ζ, lowest (exact)", "", 4, |r| {
-                r.ranges.zeta.map(|v| v.0)
-            }),
-            ReadoutDef::number("zeta_max", "ζ, highest (exact)", "", 4, |r| {
-                r.ranges.zeta.map(|v| v.1)
-            }),
-            ReadoutDef::number("wn_min", "ωₙ, lowest (exact)", "rad/s", 4, |r| {
-                r.ranges.wn.map(|v| v.0)
-            }),
-            ReadoutDef::number("wn_max", "ωₙ, highest (exact)", "rad/s", 4, |r| {
-                r.ranges.wn.map(|v| v.1)
-            }),
-            ReadoutDef::number("Q_min", "Q, lowest (exact)", "", 4, |r| {
-                r.ranges.q.map(|v| v.0)
-            }),
-            ReadoutDef::number("Q_max", "Q, highest (exact)", "", 4, |r| {
-                r.ranges.q.map(|v| v.1)
-            }),
+            ReadoutDef::number("zeta_min", "ζ, lowest (exact)", "", 4, exact::<0, false>),
+            ReadoutDef::number("zeta_max", "ζ, highest (exact)", "", 4, exact::<0, true>),
+            ReadoutDef::number(
+                "wn_min",
+                "ωₙ, lowest (exact)",
+                "rad/s",
+                4,
+                exact::<1, false>,
+            ),
+            ReadoutDef::number(
+                "wn_max",
+                "ωₙ, highest (exact)",
+                "rad/s",
+                4,
+                exact::<1, true>,
+            ),
+            ReadoutDef::number("Q_min", "Q, lowest (exact)", "", 4, exact::<2, false>),
+            ReadoutDef::number("Q_max", "Q, highest (exact)", "", 4, exact::<2, true>),
             ReadoutDef::number("yield", "yield (meets spec)", "%", 3, |r| Some(r.yield_pct)),
             ReadoutDef::number("zeta_p5", "ζ, 5th percentile", "", 4, |r| {
                 Some(r.zeta_pct[0])
@@ -186,6 +186,14 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         presets: presets(),
         ..Declaration::new("uncertainty", "Tolerance analysis", text::SUMMARY)
     }
+}
+
+/// The readouts of the exact ranges: the lowest (`HIGH` false) or highest end of the range
+/// of ζ (`WHICH` 0), ωₙ (1) or Q (2).
+fn exact<const WHICH: usize, const HIGH: bool>(r: &Results) -> Option<f64> {
+    let ranges = [r.ranges.zeta, r.ranges.wn, r.ranges.q];
+    let (lo, hi) = ranges.get(WHICH).copied().flatten()?;
+    Some(if HIGH { hi } else { lo })
 }
 
 /// A tolerance slider in percent.

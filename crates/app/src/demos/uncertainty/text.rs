@@ -140,29 +140,18 @@ pub(super) fn describe_histogram(
         si(p5, unit, 4),
         si(p95, unit, 4),
     );
-    match spec_text {
-        Some(spec) => t!(
-            "uncertainty-describe-histogram-spec",
-            quantity = name,
-            draws = count_text(draws),
-            distribution = dist,
-            low = lo,
-            high = hi,
-            p5 = p5,
-            p95 = p95,
-            spec = spec
-        ),
-        None => t!(
-            "uncertainty-describe-histogram",
-            quantity = name,
-            draws = count_text(draws),
-            distribution = dist,
-            low = lo,
-            high = hi,
-            p5 = p5,
-            p95 = p95
-        ),
-    }
+    t!(
+        "uncertainty-describe-histogram",
+        quantity = name,
+        draws = count_text(draws),
+        distribution = dist,
+        low = lo,
+        high = hi,
+        p5 = p5,
+        p95 = p95,
+        marked = if spec_text.is_some() { "yes" } else { "no" },
+        spec = spec_text.unwrap_or_default()
+    )
 }
 
 /// Marks a histogram drawn from the first `shown` draws while the full run of `full` draws
