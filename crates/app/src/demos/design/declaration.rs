@@ -9,15 +9,7 @@ pub(super) fn declaration() -> Declaration<P, Results> {
     Declaration {
         equation_mathml: text::EQUATION,
         params: vec![
-            linear(
-                "m",
-                "sprung mass",
-                "m",
-                "kg",
-                (100.0, 800.0, 1.0),
-                300.0,
-                |p, v| p.m = v,
-            ),
+            sprung_mass("sprung mass", |p, v| p.m = v),
             // Wheel and tyre of the two-DOF car behind the comfort metric: the ranges
             // and defaults of the quarter-car-2dof demo.
             linear(
@@ -191,6 +183,15 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         presets: presets(),
         ..Declaration::new("design", "Design space (k, c)", text::SUMMARY)
     }
+}
+
+/// The quarter car's sprung-mass slider `m` \[kg\] (100–800 kg, 300 kg), with its label;
+/// the `uncertainty` demo's suspension declares the same.
+pub(in crate::demos) fn sprung_mass<Q: 'static>(
+    label: &'static str,
+    set: fn(&mut Q, f64),
+) -> Param<Q> {
+    Param::linear("m", label, "m", "kg", (100.0, 800.0, 1.0), 300.0, set)
 }
 
 /// The preset buttons.

@@ -24,6 +24,7 @@ mod text;
 
 use cache::SweepKey;
 pub use choices::{Metric, Road};
+pub(super) use declaration::sprung_mass;
 pub(crate) use stopwatch::Stopwatch;
 
 use super::progressive::{progressive_hooks, Progressive};

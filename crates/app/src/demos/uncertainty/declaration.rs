@@ -2,6 +2,7 @@
 
 use super::{figures, text, Dist, HistOf, Results, System, P};
 use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::demos::design::sprung_mass;
 use crate::i18n::number;
 use crate::spec::{PlotSpec, Preset};
 use crate::t;
@@ -12,15 +13,7 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         equation_mathml: text::EQUATION,
         params: vec![
             Param::choice("system", "system", System::Suspension, |p, v| p.system = v),
-            linear(
-                "m",
-                "suspension: sprung mass",
-                "m",
-                "kg",
-                (100.0, 800.0, 1.0),
-                300.0,
-                |p, v| p.m = v,
-            ),
+            sprung_mass("suspension: sprung mass", |p, v| p.m = v),
             linear(
                 "k",
                 "suspension: spring rate",
