@@ -2,7 +2,8 @@
 //! [`COARSE_CELLS`]² sweep at once and the full grid a few rows at a time in later short
 //! tasks ([`DesignSpace::refine`]); the full maps replace the coarse ones only if they were
 //! computed for the inputs still current. Off (native tests, snapshots) the full sweep runs
-//! in the step, as before.
+//! in the step, as before. The flags and the job live in the state both progressive demos
+//! share, `demos/progressive.rs`.
 
 use super::cache::SweepKey;
 use super::{DesignSpace, Stopwatch};

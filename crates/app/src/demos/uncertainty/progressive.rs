@@ -3,7 +3,8 @@
 //! draws of the full run) and the full run a few draws at a time in later short tasks
 //! ([`Uncertainty::refine_run`]); the full samples replace the coarse ones only if they were
 //! drawn for the inputs still current. Off (native tests, snapshots) the full run happens in
-//! the step, as before.
+//! the step, as before. The flags and the job live in the state both progressive demos
+//! share, `demos/progressive.rs`.
 
 use super::cache::McKey;
 use super::{Stopwatch, Uncertainty};
