@@ -658,8 +658,10 @@ uncertainty-dist-uniform = uniform
 uncertainty-spec-zeta = The spec window ζ { $low }–{ $high } is marked; { $share } of draws meet the whole spec.
 uncertainty-spec-settling-time = The spec limit { $limit } is marked.
 uncertainty-no-finite = No draw has a finite { $quantity }.
-uncertainty-describe-histogram = Histogram of { $quantity } over { $draws } { $distribution } draws: from { $low } to { $high }, 5th percentile { $p5 }, 95th percentile { $p95 }.
-uncertainty-describe-histogram-spec = Histogram of { $quantity } over { $draws } { $distribution } draws: from { $low } to { $high }, 5th percentile { $p5 }, 95th percentile { $p95 }. { $spec }
+uncertainty-describe-histogram = Histogram of { $quantity } over { $draws } { $distribution } draws: from { $low } to { $high }, 5th percentile { $p5 }, 95th percentile { $p95 }.{ $marked ->
+        [yes] {" "}{ $spec }
+       *[no] {""}
+    }
 uncertainty-provisional-title = { $title } (provisional)
 uncertainty-provisional-description = Provisional: from the first { $shown } draws while the run of { $full } continues. { $description }
 uncertainty-axis-capacitor-voltage = capacitor voltage v_C

@@ -653,8 +653,10 @@ uncertainty-dist-uniform = uniformes
 uncertainty-spec-zeta = La ventana de especificación de ζ, { $low }–{ $high }, está marcada; el { $share } de los sorteos cumple toda la especificación.
 uncertainty-spec-settling-time = El límite de especificación, { $limit }, está marcado.
 uncertainty-no-finite = Ningún sorteo da un valor finito de { $quantity }.
-uncertainty-describe-histogram = Histograma de { $quantity } en { $draws } sorteos { $distribution }: de { $low } a { $high }; percentil 5: { $p5 }; percentil 95: { $p95 }.
-uncertainty-describe-histogram-spec = Histograma de { $quantity } en { $draws } sorteos { $distribution }: de { $low } a { $high }; percentil 5: { $p5 }; percentil 95: { $p95 }. { $spec }
+uncertainty-describe-histogram = Histograma de { $quantity } en { $draws } sorteos { $distribution }: de { $low } a { $high }; percentil 5: { $p5 }; percentil 95: { $p95 }.{ $marked ->
+        [yes] {" "}{ $spec }
+       *[no] {""}
+    }
 uncertainty-provisional-title = { $title } (provisional)
 uncertainty-provisional-description = Provisional: a partir de los primeros { $shown } sorteos mientras continúa la simulación de { $full }. { $description }
 uncertainty-axis-capacitor-voltage = tensión del condensador v_C

@@ -1121,8 +1121,10 @@ uncertainty-dist-uniform = uniformes
 uncertainty-spec-zeta = La fenêtre de spécification de ζ, { $low }–{ $high }, est marquée ; { $share } des tirages respectent toute la spécification.
 uncertainty-spec-settling-time = La limite de spécification, { $limit }, est marquée.
 uncertainty-no-finite = Aucun tirage ne donne de valeur finie de la grandeur « { $quantity } ».
-uncertainty-describe-histogram = Histogramme de la grandeur « { $quantity } » sur { $draws } tirages { $distribution } : de { $low } à { $high }, 5ᵉ centile { $p5 }, 95ᵉ centile { $p95 }.
-uncertainty-describe-histogram-spec = Histogramme de la grandeur « { $quantity } » sur { $draws } tirages { $distribution } : de { $low } à { $high }, 5ᵉ centile { $p5 }, 95ᵉ centile { $p95 }. { $spec }
+uncertainty-describe-histogram = Histogramme de la grandeur « { $quantity } » sur { $draws } tirages { $distribution } : de { $low } à { $high }, 5ᵉ centile { $p5 }, 95ᵉ centile { $p95 }.{ $marked ->
+        [yes] {" "}{ $spec }
+       *[no] {""}
+    }
 uncertainty-provisional-title = { $title } (provisoire)
 uncertainty-provisional-description = Provisoire : d'après les { $shown } premiers tirages, tandis que le calcul de { $full } se poursuit. { $description }
 uncertainty-axis-capacitor-voltage = tension du condensateur v_C

@@ -1121,8 +1121,10 @@ uncertainty-dist-uniform = uniformes
 uncertainty-spec-zeta = A janela de especificação de ζ, { $low }–{ $high }, está marcada; { $share } dos sorteios atendem a toda a especificação.
 uncertainty-spec-settling-time = O limite de especificação, { $limit }, está marcado.
 uncertainty-no-finite = Nenhum sorteio dá um valor finito de { $quantity }.
-uncertainty-describe-histogram = Histograma de { $quantity } em { $draws } sorteios { $distribution }: de { $low } a { $high }, percentil 5: { $p5 }, percentil 95: { $p95 }.
-uncertainty-describe-histogram-spec = Histograma de { $quantity } em { $draws } sorteios { $distribution }: de { $low } a { $high }, percentil 5: { $p5 }, percentil 95: { $p95 }. { $spec }
+uncertainty-describe-histogram = Histograma de { $quantity } em { $draws } sorteios { $distribution }: de { $low } a { $high }, percentil 5: { $p5 }, percentil 95: { $p95 }.{ $marked ->
+        [yes] {" "}{ $spec }
+       *[no] {""}
+    }
 uncertainty-provisional-title = { $title } (provisório)
 uncertainty-provisional-description = Provisório: a partir dos primeiros { $shown } sorteios enquanto a simulação de { $full } continua. { $description }
 uncertainty-axis-capacitor-voltage = tensão do capacitor v_C

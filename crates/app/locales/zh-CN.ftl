@@ -1118,8 +1118,10 @@ uncertainty-dist-uniform = 均匀
 uncertainty-spec-zeta = 图中标出了 ζ 的规格窗口 { $low }–{ $high }；{ $share } 的抽样满足全部规格。
 uncertainty-spec-settling-time = 图中标出了规格限值 { $limit }。
 uncertainty-no-finite = 没有任何抽样得到有限的{ $quantity }。
-uncertainty-describe-histogram = { $quantity }的直方图，共 { $draws } 次{ $distribution }抽样：从 { $low } 到 { $high }，第 5 百分位数 { $p5 }，第 95 百分位数 { $p95 }。
-uncertainty-describe-histogram-spec = { $quantity }的直方图，共 { $draws } 次{ $distribution }抽样：从 { $low } 到 { $high }，第 5 百分位数 { $p5 }，第 95 百分位数 { $p95 }。{ $spec }
+uncertainty-describe-histogram = { $quantity }的直方图，共 { $draws } 次{ $distribution }抽样：从 { $low } 到 { $high }，第 5 百分位数 { $p5 }，第 95 百分位数 { $p95 }。{ $marked ->
+        [yes] { $spec }
+       *[no] {""}
+    }
 uncertainty-provisional-title = { $title }（临时）
 uncertainty-provisional-description = 临时结果：基于前 { $shown } 次抽样，共 { $full } 次的计算仍在进行。{ $description }
 uncertainty-axis-capacitor-voltage = 电容电压 v_C

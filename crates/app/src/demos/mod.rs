@@ -13,6 +13,7 @@ pub mod flutter;
 pub mod integrators;
 pub mod nonlinear;
 pub mod paper;
+mod progressive;
 pub mod quarter_car;
 pub mod quarter_car_2dof;
 pub mod regimes;

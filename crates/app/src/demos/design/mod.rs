@@ -9,11 +9,14 @@
 //! the selected design's readouts call the same [`zeta_solver::ride::stationary`], the map
 //! cells [`zeta_solver::ride::Ride::stationary`]'s block solves of that equation (equal to rounding).
 //!
-//! This file declares the demo and holds its model step (solver calls only) and the sweep
-//! cache; `figures.rs` builds the plots, `text.rs` holds the prose.
+//! `declaration.rs` declares the demo (parameters, readouts, plots and presets as data); this
+//! file holds its model step (solver calls only) and the state kept between steps;
+//! `cache.rs` keys the sweep and `progressive.rs` runs it (coarse first on a page);
+//! `figures.rs` builds the plots, `text.rs` holds the prose.
 
 mod cache;
 mod choices;
+mod declaration;
 mod figures;
 mod progressive;
 mod stopwatch;
@@ -21,12 +24,13 @@ mod text;
 
 use cache::SweepKey;
 pub use choices::{Metric, Road};
+pub(super) use declaration::sprung_mass;
 pub(crate) use stopwatch::Stopwatch;
 
+use super::progressive::{progressive_hooks, Progressive};
 use super::Model;
-use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::declare::Declaration;
 use crate::figure::Figure;
-use crate::spec::PlotSpec;
 use zeta_solver::design::map::lowest;
 use zeta_solver::design::pareto::nearest_on_front;
 use zeta_solver::design::sweep::{KcMaps, KcSweepConfig, RoadInput};
@@ -148,206 +152,14 @@ pub struct DesignSpace {
     front: Vec<usize>,
     /// Axes of the last Pareto plot, for picking the nearest front design.
     pareto_ranges: ((f64, f64), (f64, f64)),
-    /// Whether a moved map input gets a coarse sweep first (on a page; see `progressive.rs`).
-    progressive: bool,
-    /// Whether the maps held are the coarse stand-in for `key`.
-    provisional: bool,
-    /// The full sweep under way, if any.
-    job: Option<progressive::SweepJob>,
+    /// The progressive sweep: a coarse one first on a page, the full one left to `refine`
+    /// (see `progressive.rs`).
+    progress: Progressive<progressive::SweepJob>,
 }
 
 impl Model for DesignSpace {
     type Params = P;
     type Results = Results;
-
-    fn declare() -> Declaration<P, Results> {
-        let linear = Param::linear;
-        Declaration {
-            equation_mathml: text::EQUATION,
-            params: vec![
-                linear(
-                    "m",
-                    "sprung mass",
-                    "m",
-                    "kg",
-                    (100.0, 800.0, 1.0),
-                    300.0,
-                    |p, v| p.m = v,
-                ),
-                // Wheel and tyre of the two-DOF car behind the comfort metric: the ranges
-                // and defaults of the quarter-car-2dof demo.
-                linear(
-                    "mu",
-                    "comfort: wheel (unsprung) mass",
-                    "m_u",
-                    "kg",
-                    (10.0, 150.0, 1.0),
-                    40.0,
-                    |p, v| p.mu = v,
-                ),
-                linear(
-                    "kt",
-                    "comfort: tyre stiffness",
-                    "k_t",
-                    "N/m",
-                    (50_000.0, 500_000.0, 1_000.0),
-                    200_000.0,
-                    |p, v| p.kt = v,
-                ),
-                Param::choice("metric", "map metric", Metric::SettlingTime, |p, v| {
-                    p.metric = v
-                }),
-                linear(
-                    "band",
-                    "settling band, ± % of x₀ (free response)",
-                    "",
-                    "%",
-                    (1.0, 20.0, 0.5),
-                    5.0,
-                    |p, v| p.band = v,
-                ),
-                Param::choice("road", "road (ISO 8608)", Road::C, |p, v| p.road = v),
-                linear(
-                    "V",
-                    "comfort: speed",
-                    "V",
-                    "m/s",
-                    (2.0, 40.0, 0.5),
-                    10.0,
-                    |p, v| p.v = v,
-                ),
-                linear(
-                    "k_min",
-                    "map: lowest spring rate",
-                    "k_min",
-                    "N/m",
-                    (2_000.0, 30_000.0, 500.0),
-                    10_000.0,
-                    |p, v| p.k_min = v,
-                ),
-                linear(
-                    "k_max",
-                    "map: highest spring rate",
-                    "k_max",
-                    "N/m",
-                    (35_000.0, 150_000.0, 500.0),
-                    60_000.0,
-                    |p, v| p.k_max = v,
-                ),
-                linear(
-                    "c_min",
-                    "map: lowest damper rate",
-                    "c_min",
-                    "N·s/m",
-                    (100.0, 2_000.0, 50.0),
-                    500.0,
-                    |p, v| p.c_min = v,
-                ),
-                linear(
-                    "c_max",
-                    "map: highest damper rate",
-                    "c_max",
-                    "N·s/m",
-                    (2_500.0, 15_000.0, 100.0),
-                    8_000.0,
-                    |p, v| p.c_max = v,
-                ),
-                linear(
-                    "k",
-                    "selected spring rate",
-                    "k",
-                    "N/m",
-                    (2_000.0, 150_000.0, 100.0),
-                    24_000.0,
-                    |p, v| p.k = v,
-                ),
-                linear(
-                    "c",
-                    "selected damper rate",
-                    "c",
-                    "N·s/m",
-                    (100.0, 15_000.0, 10.0),
-                    2_000.0,
-                    |p, v| p.c = v,
-                ),
-                linear(
-                    "n",
-                    "grid cells per axis",
-                    "n",
-                    "",
-                    (20.0, 160.0, 1.0),
-                    100.0,
-                    |p, v| p.n = v.round().clamp(2.0, 400.0) as usize,
-                ),
-            ],
-            readouts: vec![
-                ReadoutDef::number("k", "selected spring rate k", "N/m", 4, |r| Some(r.k)),
-                ReadoutDef::number("c", "selected damper rate c", "N·s/m", 4, |r| Some(r.c)),
-                ReadoutDef::number("zeta", "damping ratio ζ", "", 3, |r| r.sel.zeta),
-                ReadoutDef::number(
-                    "settling_time",
-                    "settling time into the ± band of x₀ (free response)",
-                    "s",
-                    4,
-                    |r| r.sel.settling_time,
-                ),
-                ReadoutDef::number(
-                    "overshoot",
-                    "peak rebound, % of x₀ (free response)",
-                    "%",
-                    3,
-                    |r| r.sel.overshoot,
-                ),
-                // Plain: accelerations stay in m/s² (no "mm/s²").
-                // The road and speed written beside the value, as the label cannot vary.
-                ReadoutDef::formatted(
-                    "accel_rms",
-                    "a_w: RMS body acceleration weighted by ISO 2631-1 W_k (two-DOF car, \
-                     stationary on the ISO 8608 road at speed V)",
-                    "m/s²",
-                    |r| {
-                        let a = r.sel.accel_rms?;
-                        Some((a, text::with_road(a, &r.key)))
-                    },
-                ),
-                ReadoutDef::formatted(
-                    "accel_unweighted",
-                    "RMS body acceleration, unweighted (same car and road)",
-                    "m/s²",
-                    |r| {
-                        let a = r.sel.ride?.rms_body_acceleration;
-                        Some((a, text::with_road(a, &r.key)))
-                    },
-                ),
-                ReadoutDef::formatted("grid_size", "grid size (cells)", "", |r| {
-                    Some(((r.grid * r.grid) as f64, text::grid_size(r)))
-                }),
-                // Plain: the value is already in ms (an SI prefix would give "µms").
-                ReadoutDef::plain("compute_time", "sweep compute time", "ms", 3, |r| {
-                    Some(r.sweep_ms)
-                }),
-            ],
-            plots: vec![
-                PlotSpec {
-                    key: "map",
-                    title: figures::MAP_TITLE,
-                    aspect: 1.35,
-                },
-                PlotSpec {
-                    key: "pareto",
-                    title: figures::PARETO_TITLE,
-                    aspect: 1.35,
-                },
-                PlotSpec {
-                    key: "response",
-                    title: figures::RESPONSE_TITLE,
-                    aspect: 1.35,
-                },
-            ],
-            presets: text::presets(),
-            ..Declaration::new("design", "Design space (k, c)", text::SUMMARY)
-        }
-    }
 
     fn step(&mut self, p: &P) -> Option<Results> {
         let key = p.sweep_key()?;
@@ -398,24 +210,11 @@ impl Model for DesignSpace {
             pareto_ranges: self.pareto_ranges,
             sweep_ms: self.sweep_ms,
             grid: self.k_axis.len(),
-            provisional: self.provisional,
+            provisional: self.progress.is_provisional(),
         })
     }
 
-    fn set_progressive(&mut self, on: bool) {
-        self.progressive = on;
-    }
-
-    fn refine(&mut self, budget_ms: f64) -> Option<f64> {
-        self.refine_sweep(budget_ms)
-    }
-
-    fn provisional(&self) -> Vec<&'static str> {
-        match self.provisional {
-            true => progressive::PROVISIONAL.to_vec(),
-            false => Vec::new(),
-        }
-    }
+    progressive_hooks!(progressive::PROVISIONAL, refine_sweep);
 
     fn figures(&self, p: &P, r: &Results) -> Vec<Figure> {
         let figs = vec![
@@ -460,6 +259,10 @@ impl Model for DesignSpace {
             }
             _ => Vec::new(),
         }
+    }
+
+    fn declare() -> Declaration<P, Results> {
+        declaration::declaration()
     }
 }
 

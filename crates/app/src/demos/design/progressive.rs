@@ -2,7 +2,8 @@
 //! [`COARSE_CELLS`]² sweep at once and the full grid a few rows at a time in later short
 //! tasks ([`DesignSpace::refine`]); the full maps replace the coarse ones only if they were
 //! computed for the inputs still current. Off (native tests, snapshots) the full sweep runs
-//! in the step, as before.
+//! in the step, as before. The flags and the job live in the state both progressive demos
+//! share, `demos/progressive.rs`.
 
 use super::cache::SweepKey;
 use super::{DesignSpace, Stopwatch};
@@ -69,12 +70,8 @@ impl DesignSpace {
             return;
         }
         // Inputs moved on: a sweep under way for other inputs is dropped unseen.
-        self.job = None;
-        let n = if self.progressive && key.n > COARSE_CELLS {
-            COARSE_CELLS
-        } else {
-            key.n
-        };
+        self.progress.job = None;
+        let n = self.progress.size_now(key.n, COARSE_CELLS);
         let watch = Stopwatch::start();
         cells(key.k, n, &mut self.k_axis);
         cells(key.c, n, &mut self.c_axis);
@@ -83,8 +80,7 @@ impl DesignSpace {
         let axes = (&self.k_axis[..], &self.c_axis[..]);
         comfort_rows(&ride, &key, axes, 0..n, &mut self.maps);
         self.finish_maps(key, watch.elapsed_ms());
-        self.provisional = n != key.n;
-        if self.provisional {
+        if self.progress.is_provisional() {
             let mut job = SweepJob {
                 key,
                 cfg,
@@ -98,7 +94,7 @@ impl DesignSpace {
             cells(key.k, key.n, &mut job.k_axis);
             cells(key.c, key.n, &mut job.c_axis);
             sweep_kc_start(&job.k_axis, &job.c_axis, &mut job.maps);
-            self.job = Some(job);
+            self.progress.job = Some(job);
         } else {
             self.sweeps += 1;
         }
@@ -119,7 +115,7 @@ impl DesignSpace {
     /// Returns the fraction done, or `None` when no sweep is pending; at 1 the full maps
     /// have replaced the coarse ones.
     pub(super) fn refine_sweep(&mut self, budget_ms: f64) -> Option<f64> {
-        let job = self.job.as_mut()?;
+        let job = self.progress.job.as_mut()?;
         let watch = Stopwatch::start();
         let rows = job.c_axis.len();
         while job.next_row < rows {
@@ -142,7 +138,7 @@ impl DesignSpace {
         if job.next_row < rows {
             return Some(job.next_row as f64 / rows.max(1) as f64);
         }
-        let job = self.job.take()?;
+        let job = self.progress.job.take()?;
         // Shown only if computed for the inputs still current (always so here: a step
         // with other inputs drops the job), never as the answer to other inputs.
         if self.key != Some(job.key) {
@@ -152,7 +148,7 @@ impl DesignSpace {
         self.c_axis = job.c_axis;
         self.maps = job.maps;
         self.finish_maps(job.key, job.ms);
-        self.provisional = false;
+        self.progress.finished();
         self.sweeps += 1;
         Some(1.0)
     }

@@ -3,6 +3,7 @@
 
 use super::figures::ISO_ZETAS;
 use super::*;
+use crate::demos::progressive::shown;
 use crate::demos::testing::{number, run as run_demo};
 use crate::demos::Frame;
 use crate::params::resolve_query;
@@ -203,13 +204,6 @@ fn settling_and_rebound_labels_say_free_response_relative_to_x0() {
         let label = &f.figures[0].heatmap.as_ref().unwrap().label;
         assert!(label.contains(unit), "{metric}: {label}");
     }
-}
-
-/// Every readout but the measured compute time, and the figures.
-fn shown(f: &Frame) -> (Vec<(&str, &str)>, &[Figure]) {
-    let readouts = f.readouts.iter().filter(|r| r.key != "compute_time");
-    let readouts = readouts.map(|r| (r.key, r.data_value.as_str())).collect();
-    (readouts, &f.figures)
 }
 
 #[test]

@@ -5,7 +5,6 @@ use super::figures::ISO_ZETAS;
 use super::{Metric, Results, SweepKey, P, X0};
 use crate::figure::Figure;
 use crate::format::{shortest, si, significant, significant_plain};
-use crate::spec::Preset;
 use crate::t;
 
 pub(super) const SUMMARY: &str =
@@ -294,45 +293,4 @@ pub(super) fn provisional(mut fig: Figure, r: &Results) -> Figure {
         description = std::mem::take(&mut fig.description)
     );
     fig
-}
-
-/// The preset buttons.
-pub(super) fn presets() -> Vec<Preset> {
-    vec![
-        Preset {
-            label: "Settling-time map, 300 kg, ζ ≈ 0.37",
-            values: vec![
-                ("m", 300.0),
-                ("metric", 0.0),
-                ("k", 24_000.0),
-                ("c", 2_000.0),
-            ],
-        },
-        Preset {
-            label: "Laden car 500 kg, same parts",
-            values: vec![
-                ("m", 500.0),
-                ("metric", 0.0),
-                ("k", 24_000.0),
-                ("c", 2_000.0),
-            ],
-        },
-        Preset {
-            label: "Comfort map on a class C road",
-            values: vec![("metric", 2.0), ("road", 2.0), ("m", 300.0)],
-        },
-        Preset {
-            label: "Peak-rebound map, ζ = 0.7 design",
-            values: vec![
-                ("metric", 1.0),
-                ("m", 300.0),
-                ("k", 24_000.0),
-                ("c", 3_760.0),
-            ],
-        },
-        Preset {
-            label: "Fine grid 160 × 160",
-            values: vec![("n", 160.0), ("metric", 0.0)],
-        },
-    ]
 }

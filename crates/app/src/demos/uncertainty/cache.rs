@@ -39,18 +39,14 @@ impl Uncertainty {
             seed: key.seed,
             band: SettlingBand::FREE_DEFAULT,
         };
-        self.provisional = self.progressive && key.draws > COARSE_DRAWS;
-        let now = match self.provisional {
-            true => McConfig {
-                draws: COARSE_DRAWS,
-                ..cfg
-            },
-            false => cfg,
+        let now = McConfig {
+            draws: self.progress.size_now(key.draws, COARSE_DRAWS),
+            ..cfg
         };
         run_into(&now, &mut self.samples);
         self.key = Some(key);
         self.finish_run(watch.elapsed_ms());
-        match self.provisional {
+        match self.progress.is_provisional() {
             true => self.start_job(key, cfg),
             false => self.runs += 1,
         }

@@ -3,12 +3,15 @@
 //! of the range, and a seeded Monte Carlo run: histograms, percentiles and the yield against
 //! a specification.
 //!
-//! This file declares the demo and holds its model step (solver calls only) and the Monte
-//! Carlo cache; `ranges.rs` finds the exact ranges, `figures.rs` builds the plots and
+//! `declaration.rs` declares the demo (parameters, readouts, plots and presets as data); this
+//! file holds its model step (solver calls only) and the state kept between steps;
+//! `cache.rs` keys and runs the Monte Carlo draws and `progressive.rs` runs them in slices
+//! on a page; `ranges.rs` finds the exact ranges, `figures.rs` builds the plots and
 //! `text.rs` holds the prose.
 
 mod cache;
 mod choices;
+mod declaration;
 mod figures;
 mod progressive;
 mod ranges;
@@ -17,11 +20,10 @@ mod text;
 pub use choices::{Dist, HistOf, System};
 
 use super::design::Stopwatch;
+use super::progressive::{progressive_hooks, Progressive};
 use super::Model;
-use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::declare::Declaration;
 use crate::figure::Figure;
-use crate::i18n::number;
-use crate::spec::PlotSpec;
 use crate::t;
 use cache::McKey;
 use ranges::Ranges;
@@ -122,212 +124,17 @@ pub struct Uncertainty {
     scratch: Vec<f64>,
     /// 5th and 95th percentiles per [`HistOf`] index, filled lazily after each run.
     pct: [Option<[f64; 2]>; 5],
-    /// Whether moved inputs get a coarse run first (on a page; see `progressive.rs`).
-    progressive: bool,
-    /// Whether the samples held are the coarse stand-in for `key`.
-    provisional: bool,
-    /// The full run under way, if any.
-    job: Option<progressive::McJob>,
+    /// The progressive run: the first draws at once on a page, the full run left to
+    /// `refine` (see `progressive.rs`).
+    progress: Progressive<progressive::McJob>,
     /// Buffers a full run fills next: the samples a finished run replaced, or those of a
     /// dropped run. Kept so that runs reuse two buffers instead of allocating each time.
     spare: McSamples,
 }
 
-/// A tolerance slider in percent.
-fn tolerance(
-    key: &'static str,
-    label: &'static str,
-    default: f64,
-    set: fn(&mut P, f64),
-) -> Param<P> {
-    Param::linear(key, label, "", "%", (0.0, 30.0, 0.5), default, set)
-}
-
 impl Model for Uncertainty {
     type Params = P;
     type Results = Results;
-
-    fn declare() -> Declaration<P, Results> {
-        let (linear, log) = (Param::linear, Param::log);
-        Declaration {
-            equation_mathml: text::EQUATION,
-            params: vec![
-                Param::choice("system", "system", System::Suspension, |p, v| p.system = v),
-                linear(
-                    "m",
-                    "suspension: sprung mass",
-                    "m",
-                    "kg",
-                    (100.0, 800.0, 1.0),
-                    300.0,
-                    |p, v| p.m = v,
-                ),
-                linear(
-                    "k",
-                    "suspension: spring rate",
-                    "k",
-                    "N/m",
-                    (5_000.0, 100_000.0, 100.0),
-                    24_000.0,
-                    |p, v| p.k = v,
-                ),
-                linear(
-                    "zeta",
-                    "suspension: design ζ at nominal mass",
-                    "ζ",
-                    "",
-                    (0.05, 2.0, 0.01),
-                    0.7,
-                    |p, v| p.zeta = v,
-                ),
-                tolerance("dm", "suspension: mass tolerance ±", 10.0, |p, v| p.dm = v),
-                log(
-                    "R",
-                    "RLC: resistance",
-                    "R",
-                    "Ω",
-                    (0.1, 1_000.0, 0.01),
-                    7.0,
-                    |p, v| p.r = v,
-                ),
-                log(
-                    "L",
-                    "RLC: inductance",
-                    "L",
-                    "H",
-                    (0.001, 10.0, 0.001),
-                    0.5,
-                    |p, v| p.l = v,
-                ),
-                log(
-                    "C",
-                    "RLC: capacitance",
-                    "C",
-                    "F",
-                    (1e-6, 1.0, 1e-6),
-                    0.02,
-                    |p, v| p.cap = v,
-                ),
-                tolerance("dR", "RLC: resistor tolerance ±", 5.0, |p, v| p.dr = v),
-                tolerance("dL", "RLC: inductor tolerance ±", 5.0, |p, v| p.dl = v),
-                tolerance("dC", "RLC: capacitor tolerance ±", 5.0, |p, v| p.dc = v),
-                Param::choice("dist", "distribution of parts", Dist::Uniform, |p, v| {
-                    p.dist = v
-                }),
-                log(
-                    "N",
-                    "Monte Carlo draws",
-                    "N",
-                    "",
-                    (100.0, 100_000.0, 1.0),
-                    10_000.0,
-                    |p, v| p.draws = v.round().clamp(1.0, 100_000.0) as usize,
-                ),
-                linear(
-                    "seed",
-                    "random seed",
-                    "",
-                    "",
-                    (0.0, 999.0, 1.0),
-                    1.0,
-                    |p, v| p.seed = v.round().max(0.0) as u64,
-                ),
-                linear(
-                    "zeta_lo",
-                    "spec: lowest ζ",
-                    "ζ_lo",
-                    "",
-                    (0.0, 2.0, 0.01),
-                    0.6,
-                    |p, v| p.zeta_lo = v,
-                ),
-                linear(
-                    "zeta_hi",
-                    "spec: highest ζ",
-                    "ζ_hi",
-                    "",
-                    (0.0, 3.0, 0.01),
-                    1.0,
-                    |p, v| p.zeta_hi = v,
-                ),
-                log(
-                    "ts_max",
-                    "spec: longest settling time",
-                    "t_s,max",
-                    "s",
-                    (0.01, 10.0, 0.001),
-                    0.5,
-                    |p, v| p.ts_max = v,
-                ),
-                Param::choice("hist", "second histogram", HistOf::Q, |p, v| p.hist = v),
-            ],
-            readouts: vec![
-                ReadoutDef::number("zeta_min", "ζ, lowest (exact)", "", 4, |r| {
-                    r.ranges.zeta.map(|v| v.0)
-                }),
-                ReadoutDef::number("zeta_max", "ζ, highest (exact)", "", 4, |r| {
-                    r.ranges.zeta.map(|v| v.1)
-                }),
-                ReadoutDef::number("wn_min", "ωₙ, lowest (exact)", "rad/s", 4, |r| {
-                    r.ranges.wn.map(|v| v.0)
-                }),
-                ReadoutDef::number("wn_max", "ωₙ, highest (exact)", "rad/s", 4, |r| {
-                    r.ranges.wn.map(|v| v.1)
-                }),
-                ReadoutDef::number("Q_min", "Q, lowest (exact)", "", 4, |r| {
-                    r.ranges.q.map(|v| v.0)
-                }),
-                ReadoutDef::number("Q_max", "Q, highest (exact)", "", 4, |r| {
-                    r.ranges.q.map(|v| v.1)
-                }),
-                ReadoutDef::number("yield", "yield (meets spec)", "%", 3, |r| Some(r.yield_pct)),
-                ReadoutDef::number("zeta_p5", "ζ, 5th percentile", "", 4, |r| {
-                    Some(r.zeta_pct[0])
-                }),
-                ReadoutDef::number("zeta_p95", "ζ, 95th percentile", "", 4, |r| {
-                    Some(r.zeta_pct[1])
-                }),
-                ReadoutDef::number("Q_p5", "Q, 5th percentile", "", 4, |r| Some(r.q_pct[0])),
-                ReadoutDef::number("Q_p95", "Q, 95th percentile", "", 4, |r| Some(r.q_pct[1])),
-                ReadoutDef::formatted("draws", "draws", "", |r| {
-                    Some(match r.provisional_of {
-                        None => (r.draws as f64, number::fixed(r.draws as f64, 0)),
-                        Some(full) => (
-                            r.draws as f64,
-                            t!(
-                                "uncertainty-draws-provisional",
-                                draws = r.draws,
-                                full = full
-                            ),
-                        ),
-                    })
-                }),
-                // Plain: the value is already in ms (an SI prefix would give "µms").
-                ReadoutDef::plain("compute_time", "Monte Carlo compute time", "ms", 3, |r| {
-                    Some(r.mc_ms)
-                }),
-            ],
-            plots: vec![
-                PlotSpec {
-                    key: "band",
-                    title: figures::BAND_TITLE,
-                    aspect: 2.0,
-                },
-                PlotSpec {
-                    key: "zeta_hist",
-                    title: figures::ZETA_HIST_TITLE,
-                    aspect: 1.5,
-                },
-                PlotSpec {
-                    key: "hist",
-                    title: "Monte Carlo: chosen quantity",
-                    aspect: 1.5,
-                },
-            ],
-            presets: text::presets(),
-            ..Declaration::new("uncertainty", "Tolerance analysis", text::SUMMARY)
-        }
-    }
 
     fn step(&mut self, p: &P) -> Option<Results> {
         self.run_if_needed(p.mc_key());
@@ -345,26 +152,14 @@ impl Model for Uncertainty {
             draws: self.samples.zeta.len(),
             mc_ms: self.mc_ms,
             provisional_of: self
-                .provisional
+                .progress
+                .is_provisional()
                 .then_some(self.key.map(|k| k.draws))
                 .flatten(),
         })
     }
 
-    fn set_progressive(&mut self, on: bool) {
-        self.progressive = on;
-    }
-
-    fn refine(&mut self, budget_ms: f64) -> Option<f64> {
-        self.refine_run(budget_ms)
-    }
-
-    fn provisional(&self) -> Vec<&'static str> {
-        match self.provisional {
-            true => progressive::PROVISIONAL.to_vec(),
-            false => Vec::new(),
-        }
-    }
+    progressive_hooks!(progressive::PROVISIONAL, refine_run);
 
     fn figures(&self, p: &P, r: &Results) -> Vec<Figure> {
         let mut figs = vec![
@@ -392,6 +187,10 @@ impl Model for Uncertainty {
             }
         }
         figs
+    }
+
+    fn declare() -> Declaration<P, Results> {
+        declaration::declaration()
     }
 }
 

@@ -3,7 +3,8 @@
 //! draws of the full run) and the full run a few draws at a time in later short tasks
 //! ([`Uncertainty::refine_run`]); the full samples replace the coarse ones only if they were
 //! drawn for the inputs still current. Off (native tests, snapshots) the full run happens in
-//! the step, as before.
+//! the step, as before. The flags and the job live in the state both progressive demos
+//! share, `demos/progressive.rs`.
 
 use super::cache::McKey;
 use super::{Stopwatch, Uncertainty};
@@ -48,7 +49,7 @@ impl Uncertainty {
         let mut samples = std::mem::take(&mut self.spare);
         samples.reserve(MAX_DRAWS);
         let run = McRun::start(&cfg, &mut samples);
-        self.job = Some(McJob {
+        self.progress.job = Some(McJob {
             key,
             cfg,
             run,
@@ -59,7 +60,7 @@ impl Uncertainty {
 
     /// Drops the run under way, unseen, keeping its buffers for the next one.
     pub(super) fn drop_job(&mut self) {
-        if let Some(job) = self.job.take() {
+        if let Some(job) = self.progress.job.take() {
             self.spare = job.samples;
         }
     }
@@ -67,7 +68,7 @@ impl Uncertainty {
     /// Continues the pending full run for about `budget_ms`. Returns the fraction done, or
     /// `None` when no run is pending; at 1 the full samples have replaced the coarse ones.
     pub(super) fn refine_run(&mut self, budget_ms: f64) -> Option<f64> {
-        let job = self.job.as_mut()?;
+        let job = self.progress.job.as_mut()?;
         let watch = Stopwatch::start();
         while !job.run.finished() {
             let upto = job.run.done() + SLICE;
@@ -80,7 +81,7 @@ impl Uncertainty {
         if !job.run.finished() {
             return Some(job.run.done() as f64 / job.run.total().max(1) as f64);
         }
-        let job = self.job.take()?;
+        let job = self.progress.job.take()?;
         // Shown only if drawn for the inputs still current (a step with other inputs drops
         // the job), never as the answer to other inputs.
         if self.key != Some(job.key) {
@@ -89,7 +90,7 @@ impl Uncertainty {
         }
         self.spare = std::mem::replace(&mut self.samples, job.samples);
         self.finish_run(job.ms);
-        self.provisional = false;
+        self.progress.finished();
         self.runs += 1;
         Some(1.0)
     }

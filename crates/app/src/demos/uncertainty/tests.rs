@@ -5,6 +5,7 @@
 #![allow(clippy::disallowed_methods)]
 
 use super::*;
+use crate::demos::progressive::shown;
 use crate::demos::testing::{number, run as run_demo, text, value};
 use crate::demos::Frame;
 use crate::params::resolve_query;
@@ -128,13 +129,6 @@ fn percentiles_and_yield_follow_the_distribution_of_the_parts() {
         1.0 / (1.0 + 0.1 * 1.6449 / 3.0f64).sqrt(),
         "normal ζ p5",
     );
-}
-
-/// Every readout but the measured compute time, and the figures.
-fn shown(f: &Frame) -> (Vec<(&str, &str)>, &[crate::figure::Figure]) {
-    let readouts = f.readouts.iter().filter(|r| r.key != "compute_time");
-    let readouts = readouts.map(|r| (r.key, r.data_value.as_str())).collect();
-    (readouts, &f.figures)
 }
 
 #[test]

@@ -5,7 +5,6 @@ use super::ranges::{BandName, Member, Ranges};
 use super::{HistOf, System, P};
 use crate::format::{si, significant, significant_plain};
 use crate::i18n::number;
-use crate::spec::Preset;
 use crate::t;
 
 pub(super) const SUMMARY: &str =
@@ -141,29 +140,18 @@ pub(super) fn describe_histogram(
         si(p5, unit, 4),
         si(p95, unit, 4),
     );
-    match spec_text {
-        Some(spec) => t!(
-            "uncertainty-describe-histogram-spec",
-            quantity = name,
-            draws = count_text(draws),
-            distribution = dist,
-            low = lo,
-            high = hi,
-            p5 = p5,
-            p95 = p95,
-            spec = spec
-        ),
-        None => t!(
-            "uncertainty-describe-histogram",
-            quantity = name,
-            draws = count_text(draws),
-            distribution = dist,
-            low = lo,
-            high = hi,
-            p5 = p5,
-            p95 = p95
-        ),
-    }
+    t!(
+        "uncertainty-describe-histogram",
+        quantity = name,
+        draws = count_text(draws),
+        distribution = dist,
+        low = lo,
+        high = hi,
+        p5 = p5,
+        p95 = p95,
+        marked = if spec_text.is_some() { "yes" } else { "no" },
+        spec = spec_text.unwrap_or_default()
+    )
 }
 
 /// Marks a histogram drawn from the first `shown` draws while the full run of `full` draws
@@ -176,28 +164,4 @@ pub(super) fn mark_provisional(fig: &mut crate::figure::Figure, shown: usize, fu
         full = full,
         description = &fig.description
     );
-}
-
-/// The preset buttons.
-pub(super) fn presets() -> Vec<Preset> {
-    let car = |label, zeta| Preset {
-        label,
-        values: vec![
-            ("system", 0.0),
-            ("m", 300.0),
-            ("k", 24_000.0),
-            ("zeta", zeta),
-            ("dm", 10.0),
-        ],
-    };
-    let rlc = |label, pct| Preset {
-        label,
-        values: vec![("system", 1.0), ("dR", pct), ("dL", pct), ("dC", pct)],
-    };
-    vec![
-        car("ζ = 1 design under ±10 % mass", 1.0),
-        car("ζ = 0.7 design under ±10 % mass", 0.7),
-        rlc("RLC 5 % parts", 5.0),
-        rlc("RLC 20 % parts", 20.0),
-    ]
 }

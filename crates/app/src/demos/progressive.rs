@@ -1,0 +1,95 @@
+//! Progressive studies (issue 13), shared by the demos with a heavy study (`design`'s
+//! (k, c) sweep, `uncertainty`'s Monte Carlo run): on a page, moved inputs get a coarse
+//! study at once and the full one in later short tasks ([`super::Demo::refine`]); the full
+//! study replaces the coarse one only if it was computed for the inputs still current. Off
+//! (native tests, snapshots) the full study runs in the step. Each demo's own
+//! `progressive.rs` holds its study job; this file holds what they share.
+
+/// Where a demo's progressive study stands; `J` is the demo's full-study job.
+#[derive(Debug)]
+pub(super) struct Progressive<J> {
+    /// Whether moved inputs get a coarse study first (on a page).
+    on: bool,
+    /// Whether the study held is the coarse stand-in for the current inputs.
+    provisional: bool,
+    /// The full study under way, if any.
+    pub(super) job: Option<J>,
+}
+
+impl<J> Default for Progressive<J> {
+    fn default() -> Self {
+        Self {
+            on: false,
+            provisional: false,
+            job: None,
+        }
+    }
+}
+
+impl<J> Progressive<J> {
+    /// Turns progressive studies on or off (see [`super::Demo::set_progressive`]).
+    pub(super) fn set_on(&mut self, on: bool) {
+        self.on = on;
+    }
+
+    /// The size of the study to compute at once for inputs whose full study has size
+    /// `full`: `coarse` when progressive and the full study is larger (what is shown is then
+    /// provisional until [`Progressive::finished`]), else `full`.
+    pub(super) fn size_now(&mut self, full: usize, coarse: usize) -> usize {
+        self.provisional = self.on && full > coarse;
+        match self.provisional {
+            true => coarse,
+            false => full,
+        }
+    }
+
+    /// Whether the study held is the coarse stand-in while the full one runs.
+    pub(super) fn is_provisional(&self) -> bool {
+        self.provisional
+    }
+
+    /// The full study has replaced the coarse one.
+    pub(super) fn finished(&mut self) {
+        self.provisional = false;
+    }
+
+    /// The demo's readouts and plots drawn from its study, `keys`, while that study is
+    /// provisional; none when everything shown is final (see [`super::Demo::provisional`]).
+    pub(super) fn provisional(&self, keys: &[&'static str]) -> Vec<&'static str> {
+        match self.provisional {
+            true => keys.to_vec(),
+            false => Vec::new(),
+        }
+    }
+}
+
+/// The three progressive-study hooks of [`super::Model`] (`set_progressive`, `refine`,
+/// `provisional`), inside `impl Model` of a demo whose [`Progressive`] state is its field
+/// `progress`: `progressive_hooks!(KEYS, refine_method)`, where `KEYS` are the readouts and
+/// plots drawn from its study and `self.refine_method(budget_ms)` continues the full study
+/// (see [`super::Demo::refine`]).
+macro_rules! progressive_hooks {
+    ($keys:expr, $refine:ident) => {
+        fn set_progressive(&mut self, on: bool) {
+            self.progress.set_on(on);
+        }
+
+        fn refine(&mut self, budget_ms: f64) -> Option<f64> {
+            self.$refine(budget_ms)
+        }
+
+        fn provisional(&self) -> Vec<&'static str> {
+            self.progress.provisional(&$keys)
+        }
+    };
+}
+pub(super) use progressive_hooks;
+
+/// Every readout of a frame but the measured compute time, and its figures: what a
+/// progressive study must end up showing exactly as the full study in the step does.
+#[cfg(test)]
+pub(super) fn shown(f: &super::Frame) -> (Vec<(&str, &str)>, &[crate::figure::Figure]) {
+    let readouts = f.readouts.iter().filter(|r| r.key != "compute_time");
+    let readouts = readouts.map(|r| (r.key, r.data_value.as_str())).collect();
+    (readouts, &f.figures)
+}
