@@ -113,13 +113,6 @@ pub fn schema(spec: &DemoSpec) -> Schema {
     }
 }
 
-fn notice(key: &str, message: String) -> Notice {
-    Notice {
-        key: key.to_string(),
-        message,
-    }
-}
-
 /// Applies the authoring overrides of `query` to `spec`: `range.<key>=lo,hi` narrows a
 /// slider to `[lo, hi]` (clamped into the declared range; `lo < hi`), `step.<key>=s` sets
 /// its step (`0 < s ≤ hi − lo`). The default is clamped into the new range. Anything
@@ -134,40 +127,17 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
         };
         let bounds = v
             .split_once(',')
-            .and_then(|(a, b)| Some((parse_number(a)?, parse_number(b)?)));
-        let shown = shown(v);
+            .and_then(|(a, b)| Some((parse_number(a)?, parse_number(b)?)))
+            .map(|(lo, hi)| (lo.clamp(p.min, p.max), hi.clamp(p.min, p.max)));
         match bounds {
-            Some((lo, hi)) => {
-                let lo = lo.clamp(p.min, p.max);
-                let hi = hi.clamp(p.min, p.max);
-                if lo < hi {
-                    p.min = lo;
-                    p.max = hi;
-                    p.default = p.default.clamp(lo, hi);
-                    p.step = p.step.min(hi - lo);
-                } else {
-                    notices.push(notice(
-                        key,
-                        t!(
-                            "notice-range-empty",
-                            label = p.display_label(),
-                            key = key,
-                            value = shown,
-                            min = shortest(p.min),
-                            max = shortest(p.max)
-                        ),
-                    ));
-                }
+            Some((lo, hi)) if lo < hi => {
+                p.min = lo;
+                p.max = hi;
+                p.default = p.default.clamp(lo, hi);
+                p.step = p.step.min(hi - lo);
             }
-            None => notices.push(notice(
-                key,
-                t!(
-                    "notice-range-not-two-numbers",
-                    label = p.display_label(),
-                    key = key,
-                    value = shown
-                ),
-            )),
+            Some(_) => notices.push(ignored(p, v, "empty")),
+            None => notices.push(ignored(p, v, "not-two-numbers")),
         }
     }
     for (key, v) in overrides(&pairs, "step.") {
@@ -176,23 +146,27 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
         };
         match parse_number(v) {
             Some(s) if s > 0.0 && s <= p.max - p.min => p.step = s,
-            _ => {
-                let shown = shown(v);
-                notices.push(notice(
-                    key,
-                    t!(
-                        "notice-step-invalid",
-                        label = p.display_label(),
-                        key = key,
-                        value = shown,
-                        span = shortest(p.max - p.min),
-                        step = shortest(p.step)
-                    ),
-                ));
-            }
+            _ => notices.push(ignored(p, v, "step")),
         }
     }
     notices
+}
+
+/// The notice that override value `raw` of slider `p` was ignored: `problem` is the variant
+/// of message `notice-override` (`empty` or `not-two-numbers` for a range, `step`).
+fn ignored(p: &ParamSpec, raw: &str, problem: &str) -> Notice {
+    let message = t!(
+        "notice-override",
+        problem = problem,
+        label = p.display_label(),
+        key = p.key,
+        value = shown(raw),
+        min = shortest(p.min),
+        max = shortest(p.max),
+        span = shortest(p.max - p.min),
+        step = shortest(p.step)
+    );
+    Notice::about(p, message)
 }
 
 /// The `(key, value)` of each `<prefix><key>=<value>` pair.
