@@ -131,12 +131,10 @@ notice-value = { $problem ->
         [toggle] { $label } ({ $key }): «{ $value }» no es sí ni no; se usa el valor predeterminado.
         [option] { $label } ({ $key }): «{ $value }» no es ninguna de { $options }; se usa el valor predeterminado.
         [number] { $label } ({ $key }): «{ $value }» no es un número; se usa el valor predeterminado { $default }.
+        [range-empty] { $label } ({ $key }): el intervalo «{ $value }» queda vacío dentro de { $min } … { $max }; se mantiene el intervalo completo.
+        [range-not-two-numbers] { $label } ({ $key }): el intervalo «{ $value }» no son dos números «mín,máx»; se mantiene el intervalo completo.
+        [step] { $label } ({ $key }): el paso «{ $value }» no es un número entre 0 y { $span }; se mantiene { $step }.
        *[range] { $label } ({ $key }) = { $value } está fuera de { $min } … { $max }{ $unit }; se usa { $used }.
-    }
-notice-override = { $problem ->
-        [empty] { $label } ({ $key }): el intervalo «{ $value }» queda vacío dentro de { $min } … { $max }; se mantiene el intervalo completo.
-        [not-two-numbers] { $label } ({ $key }): el intervalo «{ $value }» no son dos números «mín,máx»; se mantiene el intervalo completo.
-       *[step] { $label } ({ $key }): el paso «{ $value }» no es un número entre 0 y { $span }; se mantiene { $step }.
     }
 
 ## Archivos exportados

@@ -1443,12 +1443,10 @@ notice-value = { $problem ->
         [toggle] { $label } ({ $key }) : « { $value } » n’est ni activé ni désactivé ; valeur par défaut utilisée.
         [option] { $label } ({ $key }) : « { $value } » ne fait pas partie de { $options } ; valeur par défaut utilisée.
         [number] { $label } ({ $key }) : « { $value } » n’est pas un nombre ; valeur par défaut { $default } utilisée.
+        [range-empty] { $label } ({ $key }) : la plage « { $value } » est vide dans { $min } … { $max } ; plage complète conservée.
+        [range-not-two-numbers] { $label } ({ $key }) : la plage « { $value } » n’est pas deux nombres « bas,haut » ; plage complète conservée.
+        [step] { $label } ({ $key }) : le pas « { $value } » n’est pas un nombre entre 0 et { $span } ; { $step } conservé.
        *[range] { $label } ({ $key }) = { $value } est hors de { $min } … { $max }{ $unit } ; { $used } utilisé.
-    }
-notice-override = { $problem ->
-        [empty] { $label } ({ $key }) : la plage « { $value } » est vide dans { $min } … { $max } ; plage complète conservée.
-        [not-two-numbers] { $label } ({ $key }) : la plage « { $value } » n’est pas deux nombres « bas,haut » ; plage complète conservée.
-       *[step] { $label } ({ $key }) : le pas « { $value } » n’est pas un nombre entre 0 et { $span } ; { $step } conservé.
     }
 
 ## Fichiers exportés

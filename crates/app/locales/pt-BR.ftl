@@ -1443,12 +1443,10 @@ notice-value = { $problem ->
         [toggle] { $label } ({ $key }): “{ $value }” não é ligado nem desligado; usando o padrão.
         [option] { $label } ({ $key }): “{ $value }” não é nenhuma de { $options }; usando o padrão.
         [number] { $label } ({ $key }): “{ $value }” não é um número; usando o padrão { $default }.
+        [range-empty] { $label } ({ $key }): o intervalo “{ $value }” fica vazio dentro de { $min } … { $max }; mantendo o intervalo completo.
+        [range-not-two-numbers] { $label } ({ $key }): o intervalo “{ $value }” não são dois números “mín,máx”; mantendo o intervalo completo.
+        [step] { $label } ({ $key }): o passo “{ $value }” não é um número entre 0 e { $span }; mantendo { $step }.
        *[range] { $label } ({ $key }) = { $value } está fora de { $min } … { $max }{ $unit }; usando { $used }.
-    }
-notice-override = { $problem ->
-        [empty] { $label } ({ $key }): o intervalo “{ $value }” fica vazio dentro de { $min } … { $max }; mantendo o intervalo completo.
-        [not-two-numbers] { $label } ({ $key }): o intervalo “{ $value }” não são dois números “mín,máx”; mantendo o intervalo completo.
-       *[step] { $label } ({ $key }): o passo “{ $value }” não é um número entre 0 e { $span }; mantendo { $step }.
     }
 
 ## Arquivos exportados

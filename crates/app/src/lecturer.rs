@@ -6,10 +6,8 @@
 //! Every value from outside still passes through [`crate::params`]: overrides are parsed
 //! with [`parse_number`] and may only narrow the declared range, never widen it.
 
-use crate::format::shortest;
-use crate::params::{parse_number, parse_query, shown, Notice};
+use crate::params::{parse_number, parse_query, Notice};
 use crate::spec::{DemoSpec, Kind, ParamSpec, ReadoutSpec, Scale};
-use crate::t;
 use serde::Serialize;
 
 /// Version of the [`Schema`] layout; `docs/zeta-schema.json` pins the same number.
@@ -136,8 +134,8 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
                 p.default = p.default.clamp(lo, hi);
                 p.step = p.step.min(hi - lo);
             }
-            Some(_) => notices.push(ignored(p, v, "empty")),
-            None => notices.push(ignored(p, v, "not-two-numbers")),
+            Some(_) => notices.push(Notice::about(p, v, "range-empty", None)),
+            None => notices.push(Notice::about(p, v, "range-not-two-numbers", None)),
         }
     }
     for (key, v) in overrides(&pairs, "step.") {
@@ -146,27 +144,10 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
         };
         match parse_number(v) {
             Some(s) if s > 0.0 && s <= p.max - p.min => p.step = s,
-            _ => notices.push(ignored(p, v, "step")),
+            _ => notices.push(Notice::about(p, v, "step", None)),
         }
     }
     notices
-}
-
-/// The notice that override value `raw` of slider `p` was ignored: `problem` is the variant
-/// of message `notice-override` (`empty` or `not-two-numbers` for a range, `step`).
-fn ignored(p: &ParamSpec, raw: &str, problem: &str) -> Notice {
-    let message = t!(
-        "notice-override",
-        problem = problem,
-        label = p.display_label(),
-        key = p.key,
-        value = shown(raw),
-        min = shortest(p.min),
-        max = shortest(p.max),
-        span = shortest(p.max - p.min),
-        step = shortest(p.step)
-    );
-    Notice::about(p, message)
 }
 
 /// The `(key, value)` of each `<prefix><key>=<value>` pair.

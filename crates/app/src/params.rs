@@ -19,8 +19,28 @@ pub struct Notice {
 }
 
 impl Notice {
-    /// `message` about parameter `p`.
-    pub(crate) fn about(p: &ParamSpec, message: String) -> Self {
+    /// The notice about value `raw` given for `p`. `problem` is the variant of message
+    /// `notice-value` that says what was wrong: `toggle`, `option`, `number` or `range` for
+    /// a parameter's value, `range-empty`, `range-not-two-numbers` or `step` for a
+    /// lecturer's override (`crate::lecturer::narrow`); `used` is the value taken instead,
+    /// where there is one.
+    pub(crate) fn about(p: &ParamSpec, raw: &str, problem: &str, used: Option<f64>) -> Self {
+        let options: Vec<&str> = p.options.iter().map(|o| o.key).collect();
+        let message = t!(
+            "notice-value",
+            problem = problem,
+            label = p.display_label(),
+            key = p.key,
+            value = shown(raw),
+            options = options.join(", "),
+            default = shortest(p.default),
+            min = shortest(p.min),
+            max = shortest(p.max),
+            unit = unit_suffix(p.unit),
+            span = shortest(p.max - p.min),
+            step = shortest(p.step),
+            used = used.map(shortest).unwrap_or_default()
+        );
         Self {
             key: p.key.to_string(),
             message,
@@ -78,7 +98,7 @@ impl Params {
 }
 
 /// A value as a notice quotes it: at most 40 characters, no control characters.
-pub(crate) fn shown(raw: &str) -> String {
+fn shown(raw: &str) -> String {
     raw.chars().take(40).filter(|c| !c.is_control()).collect()
 }
 
@@ -111,24 +131,9 @@ pub fn resolve_value(p: &ParamSpec, raw: &str) -> (f64, Option<Notice>) {
     }
 }
 
-/// `used` in place of `raw` for `p`, with the notice that says why: `problem` is the
-/// variant of message `notice-value` (`toggle`, `option`, `number` or `range`).
+/// `used` in place of `raw` for `p`, with the notice that says why (see [`Notice::about`]).
 fn corrected(p: &ParamSpec, raw: &str, used: f64, problem: &str) -> (f64, Option<Notice>) {
-    let options: Vec<&str> = p.options.iter().map(|o| o.key).collect();
-    let message = t!(
-        "notice-value",
-        problem = problem,
-        label = p.display_label(),
-        key = p.key,
-        value = shown(raw),
-        options = options.join(", "),
-        default = shortest(p.default),
-        min = shortest(p.min),
-        max = shortest(p.max),
-        unit = unit_suffix(p.unit),
-        used = shortest(used)
-    );
-    (used, Some(Notice::about(p, message)))
+    (used, Some(Notice::about(p, raw, problem, Some(used))))
 }
 
 fn unit_suffix(unit: &str) -> String {
