@@ -5,13 +5,10 @@
 import { gzipSync } from 'node:zlib';
 import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { serve, DIST } from '../tests/support/server.mjs';
-import { launch } from '../tests/support/browser.mjs';
-import { quantile, installSlider, fraction } from './slide.mjs';
+import { DIST } from '../tests/support/server.mjs';
+import { quantile, installSlider, fraction, benchArgs, withSite, demoIds, run } from './slide.mjs';
 
-const EVENTS = Math.max(10, Number(process.argv[2]) || 300);
-// Optional second argument: only these demos (comma-separated ids).
-const ONLY = process.argv[3] ? new Set(process.argv[3].split(',')) : null;
+const { events: EVENTS, only: ONLY } = benchArgs(300);
 
 /** Runs in the page: moves sliders `n` times and times each event's work. */
 async function measureInPage([n, fractions]) {
@@ -21,20 +18,33 @@ async function measureInPage([n, fractions]) {
   return times;
 }
 
+/**
+ * The `compute_time` readout (ms) of the page at `url` after each value of `values` is typed
+ * into parameter `key`'s number box, once the address shows it and any coarse stand-in
+ * (issue 13) has given way to the full study; ascending.
+ */
+async function computeTimes(page, url, key, values) {
+  await page.goto(url);
+  await page.waitForSelector('html[data-ready="true"]');
+  const box = `input[type=number][data-key="${key}"]`;
+  const times = [];
+  for (const v of values) {
+    await page.fill(box, String(v));
+    await page.press(box, 'Enter');
+    await page.waitForFunction(([k, vv]) => new URLSearchParams(location.search).get(k) === String(vv), [key, v]);
+    await page.waitForFunction(() => !document.querySelector('[data-provisional]'));
+    times.push(await page.evaluate(() => Number(document.querySelector('[data-readout="compute_time"]').dataset.value)));
+  }
+  return times.sort((a, b) => a - b);
+}
+
 async function main() {
-  const server = await serve();
-  const browser = await launch();
   const rows = [];
-  try {
-    const probe = await browser.newPage();
-    await probe.goto(server.url);
-    await probe.waitForSelector('html[data-ready="true"]');
-    const ids = (await probe.$$eval('#demo-select option', (os) => os.map((o) => o.value))).filter((id) => !ONLY || ONLY.has(id));
-    await probe.close();
-    for (const id of ids) {
+  await withSite({}, async (browser, url) => {
+    for (const id of await demoIds(browser, url, ONLY)) {
       const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
       const page = await context.newPage();
-      await page.goto(`${server.url}?demo=${id}`);
+      await page.goto(`${url}?demo=${id}`);
       await page.waitForSelector('html[data-ready="true"]');
       await page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0);
       const firstDraw = await page.evaluate(() => performance.getEntriesByName('zeta:first-draw')[0].startTime);
@@ -44,52 +54,22 @@ async function main() {
       rows.push({ id, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), max: times[times.length - 1], firstDraw });
       await context.close();
     }
-  } finally {
-    await browser.close();
-    await server.close();
-  }
+  });
   // The two heavy computations the issues budget separately, read from the demos' own
   // `compute_time` readouts (measured in wasm around the solver call). Pages that show a
   // coarse study first (issue 13) are read once the full one is shown: its compute time is
   // the sum of its slices.
-  const full = (page) => page.waitForFunction(() => !document.querySelector('[data-provisional]'));
-  const compute = [];
-  {
-    const b2 = await launch();
-    const srv = await serve();
-    try {
-      const page = await b2.newPage({ viewport: { width: 1280, height: 800 } });
-      const read = () => page.evaluate(() => Number(document.querySelector('[data-readout="compute_time"]').dataset.value));
-      await page.goto(`${srv.url}?demo=design&n=100`);
-      await page.waitForSelector('html[data-ready="true"]');
-      const sweeps = [];
-      for (let i = 0; i < 40; i++) {
-        const m = 250 + (i % 2 ? 7 : 0) + i;
-        await page.fill('input[type=number][data-key="m"]', String(m));
-        await page.press('input[type=number][data-key="m"]', 'Enter');
-        await page.waitForFunction((mm) => new URLSearchParams(location.search).get('m') === String(mm), m);
-        await full(page);
-        sweeps.push(await read());
-      }
-      sweeps.sort((a, b) => a - b);
-      compute.push(['design: 100 × 100 (k, c) sweep on a mass change', quantile(sweeps, 0.5), quantile(sweeps, 0.95), '< 16 ms']);
-      await page.goto(`${srv.url}?demo=uncertainty&N=100000`);
-      await page.waitForSelector('html[data-ready="true"]');
-      const runs = [];
-      for (let i = 11; i <= 22; i++) {
-        await page.fill('input[type=number][data-key="seed"]', String(i));
-        await page.press('input[type=number][data-key="seed"]', 'Enter');
-        await page.waitForFunction((sd) => new URLSearchParams(location.search).get('seed') === String(sd), i);
-        await full(page);
-        runs.push(await read());
-      }
-      runs.sort((a, b) => a - b);
-      compute.push(['uncertainty: Monte Carlo, 100 000 draws', quantile(runs, 0.5), quantile(runs, 0.95), '< 200 ms']);
-    } finally {
-      await b2.close();
-      await srv.close();
-    }
-  }
+  const compute = await withSite({}, async (browser, url) => {
+    const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+    const masses = Array.from({ length: 40 }, (_, i) => 250 + (i % 2 ? 7 : 0) + i);
+    const sweeps = await computeTimes(page, `${url}?demo=design&n=100`, 'm', masses);
+    const seeds = Array.from({ length: 12 }, (_, i) => 11 + i);
+    const runs = await computeTimes(page, `${url}?demo=uncertainty&N=100000`, 'seed', seeds);
+    return [
+      ['design: 100 × 100 (k, c) sweep on a mass change', quantile(sweeps, 0.5), quantile(sweeps, 0.95), '< 16 ms'],
+      ['uncertainty: Monte Carlo, 100 000 draws', quantile(runs, 0.5), quantile(runs, 0.95), '< 200 ms'],
+    ];
+  });
   const files = ['zeta-app_bg.wasm', 'zeta-app.js', ...readdirSync(join(DIST, 'web')).filter((f) => f.endsWith('.js')).map((f) => `web/${f}`)];
   let wasmRaw = 0, wasmGz = 0, jsRaw = 0, jsGz = 0;
   for (const f of files) {
@@ -111,7 +91,4 @@ async function main() {
   console.log(`\nBytes: wasm ${kb(wasmRaw)} KiB (${kb(wasmGz)} KiB gzipped), JS ${kb(jsRaw)} KiB (${kb(jsGz)} KiB gzipped), total gzipped ${kb(wasmGz + jsGz)} KiB`);
 }
 
-main().catch((e) => {
-  console.error(e);
-  process.exit(1);
-});
+run(main);

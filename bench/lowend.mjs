@@ -7,12 +7,9 @@
 // after navigation, the bytes transferred before it, and both again on a second visit (the
 // service worker then answers every file but the page). Prints Markdown tables.
 // Usage: node bench/lowend.mjs [events-per-slider] [demo,demo…]   (after scripts/build.sh)
-import { serve } from '../tests/support/server.mjs';
-import { launch } from '../tests/support/browser.mjs';
-import { quantile, installSlider, fraction } from './slide.mjs';
+import { quantile, installSlider, fraction, benchArgs, withSite, demoIds, run } from './slide.mjs';
 
-const EVENTS = Math.max(10, Number(process.argv[2]) || 40);
-const ONLY = process.argv[3] ? new Set(process.argv[3].split(',')) : null;
+const { events: EVENTS, only: ONLY } = benchArgs(40);
 const CPU_SLOWDOWN = 4;
 const SLOW_4G = { offline: false, latency: 150, downloadThroughput: (1.6 * 1024 * 1024) / 8, uploadThroughput: (750 * 1024) / 8 };
 
@@ -49,20 +46,13 @@ async function lowEndPage(browser, { network }) {
 }
 
 async function main() {
-  const server = await serve({ brotli: true });
-  const browser = await launch();
   const rows = [];
-  try {
-    const probe = await browser.newPage();
-    await probe.goto(server.url);
-    await probe.waitForSelector('html[data-ready="true"]');
-    const ids = (await probe.$$eval('#demo-select option', (os) => os.map((o) => o.value))).filter((id) => !ONLY || ONLY.has(id));
-    await probe.close();
-    for (const id of ids) {
+  await withSite({ brotli: true }, async (browser, url) => {
+    for (const id of await demoIds(browser, url, ONLY)) {
       // Loading: Slow 4G + 4× CPU, cold cache; bytes counted up to the first plot.
       const load = await lowEndPage(browser, { network: true });
       const t0 = Date.now();
-      await load.page.goto(`${server.url}?demo=${id}`);
+      await load.page.goto(`${url}?demo=${id}`);
       await load.page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0, null, { timeout: 60000 });
       const firstPlot = await load.page.evaluate(() => performance.getEntriesByName('zeta:first-draw')[0].startTime);
       const bytes = load.bytes();
@@ -70,7 +60,7 @@ async function main() {
       // the page (the navigation itself still goes to the network first).
       await load.page.evaluate(() => navigator.serviceWorker?.ready);
       const before = load.bytes();
-      await load.page.goto(`${server.url}?demo=${id}`);
+      await load.page.goto(`${url}?demo=${id}`);
       await load.page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0, null, { timeout: 60000 });
       const again = await load.page.evaluate(() => ({
         ms: performance.getEntriesByName('zeta:first-draw')[0].startTime,
@@ -81,7 +71,7 @@ async function main() {
       await load.context.close();
       // Sliding: 4× CPU, no network shaping (the page is loaded).
       const slide = await lowEndPage(browser, { network: false });
-      await slide.page.goto(`${server.url}?demo=${id}`);
+      await slide.page.goto(`${url}?demo=${id}`);
       await slide.page.waitForSelector('html[data-ready="true"]', { timeout: 60000 });
       await slide.page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0, null, { timeout: 60000 });
       await installSlider(slide.page);
@@ -91,10 +81,7 @@ async function main() {
       const times = r.times.sort((a, b) => a - b);
       rows.push({ id, sliders: r.sliders, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), longest: r.longest, firstPlot, bytes, secondPlot, secondBytes, wall: Date.now() - t0 });
     }
-  } finally {
-    await browser.close();
-    await server.close();
-  }
+  });
   console.log(`\nLow-end (4× CPU, 360 × 740 at DPR 2; loading on Slow 4G, brotli, cold cache; ${EVENTS} events per slider):\n`);
   console.log('| demo | sliders | events | p50 (ms) | p95 (ms) | longest task (ms) | first plot (ms) | KB before first plot | second visit: first plot (ms) | second visit: KB |');
   console.log('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |');
@@ -103,7 +90,4 @@ async function main() {
   }
 }
 
-main().catch((e) => {
-  console.error(e);
-  process.exit(1);
-});
+run(main);

@@ -1,18 +1,14 @@
 // Profiles one demo's slider events at 4× CPU slowdown (DevTools Protocol `Profiler`) and
 // prints the functions with the most self time. Usage, after scripts/build.sh:
 //   node bench/profile.mjs <demo> [slider-key] [events]
-import { serve } from '../tests/support/server.mjs';
-import { launch } from '../tests/support/browser.mjs';
-import { installSlider, fraction } from './slide.mjs';
+import { installSlider, fraction, withSite } from './slide.mjs';
 
 const [id = 'design', key = '', n = '10'] = process.argv.slice(2);
-const server = await serve({ brotli: true });
-const browser = await launch();
-try {
+await withSite({ brotli: true }, async (browser, url) => {
   const context = await browser.newContext({ viewport: { width: 360, height: 740 }, deviceScaleFactor: 2 });
   const page = await context.newPage();
   const cdp = await context.newCDPSession(page);
-  await page.goto(`${server.url}?demo=${id}`);
+  await page.goto(`${url}?demo=${id}`);
   await page.waitForSelector('html[data-ready="true"]');
   await page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0);
   await installSlider(page);
@@ -47,7 +43,4 @@ try {
   console.log('per slider (ms):', JSON.stringify(perKey));
   console.log(`total sampled ${total.toFixed(0)} ms; top self time:`);
   for (const [name, t] of [...self].sort((a, b) => b[1] - a[1]).slice(0, 25)) console.log(`${t.toFixed(1).padStart(8)} ms  ${name}`);
-} finally {
-  await browser.close();
-  await server.close();
-}
+});

@@ -1,5 +1,51 @@
-// Shared by the browser benchmarks: quantiles, and the in-page timing of one slider event
-// (the input handler plus the animation frame that redraws).
+// Shared by the browser benchmarks: the command line, the served site with its browser and
+// the demos to measure, quantiles, and the in-page timing of one slider event (the input
+// handler plus the animation frame that redraws).
+import { serve } from '../tests/support/server.mjs';
+import { launch } from '../tests/support/browser.mjs';
+
+/**
+ * The benchmark's command line `[events] [demo,demo…]`: the number of events (at least 10,
+ * `fallback` when not given) and the set of demo ids to measure (null: every demo).
+ */
+export function benchArgs(fallback) {
+  const events = Math.max(10, Number(process.argv[2]) || fallback);
+  const only = process.argv[3] ? new Set(process.argv[3].split(',')) : null;
+  return { events, only };
+}
+
+/**
+ * Serves the built site (`serveOptions`, see tests/support/server.mjs), launches Chromium,
+ * and resolves to what `body(browser, url)` resolves to; closes both afterwards.
+ */
+export async function withSite(serveOptions, body) {
+  const server = await serve(serveOptions);
+  const browser = await launch();
+  try {
+    return await body(browser, server.url);
+  } finally {
+    await browser.close();
+    await server.close();
+  }
+}
+
+/** The ids of the demos in the page's picker at `url`, only those in `only` if it is a set. */
+export async function demoIds(browser, url, only) {
+  const probe = await browser.newPage();
+  await probe.goto(url);
+  await probe.waitForSelector('html[data-ready="true"]');
+  const ids = await probe.$$eval('#demo-select option', (os) => os.map((o) => o.value));
+  await probe.close();
+  return ids.filter((id) => !only || only.has(id));
+}
+
+/** Runs `main`; on failure prints the error and exits with status 1. */
+export function run(main) {
+  main().catch((e) => {
+    console.error(e);
+    process.exit(1);
+  });
+}
 
 /** The `q` quantile of an ascending array, linearly interpolated. */
 export function quantile(sorted, q) {

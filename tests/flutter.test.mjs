@@ -5,8 +5,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
-import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { nudge, assertDrawn, assertRowCurrent } from './support/page.mjs';
+import { golden, goldenState, openRecorded } from './support/golden.mjs';
+import { nudge, assertDrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -16,11 +16,7 @@ const FAILURE_DAY = 'Tacoma 1940, 19 m/s (failure day, ≈ 42 mph)';
 
 for (const state of golden('flutter').states) {
   test(`${state.name}: readouts as computed natively, plots drawn, regime row highlighted`, async () => {
-    const { page, errors, context } = await open(browser, `${server.url}?demo=flutter&${state.query}`);
-    await assertReadoutsMatch(page, state);
-    await assertRowCurrent(page, 'regime');
-    await assertDrawn(page, PLOTS, 2000);
-    await assertDrawn(page, ['schematic'], 500);
+    const { page, errors, context } = await openRecorded(browser, server.url, 'flutter', state, { plots: PLOTS, row: 'regime' });
     // The caption is the one computed natively.
     assert.equal(await page.textContent('#desc-response'), state.figures[3].description);
     assert.deepEqual(errors, []);

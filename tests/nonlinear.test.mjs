@@ -5,8 +5,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
-import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
-import { nudge, assertDrawn, assertRowCurrent } from './support/page.mjs';
+import { golden, goldenState, openRecorded } from './support/golden.mjs';
+import { nudge, assertDrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -15,11 +15,7 @@ const PLOTS = ['response', 'phase', 'spring', 'damper'];
 
 for (const state of golden('nonlinear').states) {
   test(`${state.name}: readouts as computed natively, plots drawn, effect row highlighted`, async () => {
-    const { page, errors, context } = await open(browser, `${server.url}?demo=nonlinear&${state.query}`);
-    await assertReadoutsMatch(page, state);
-    await assertRowCurrent(page, 'effect');
-    await assertDrawn(page, PLOTS, 2000);
-    await assertDrawn(page, ['schematic'], 500);
+    const { page, errors, context } = await openRecorded(browser, server.url, 'nonlinear', state, { plots: PLOTS, row: 'effect' });
     const slug = state.name.toLowerCase().replace(/[^a-z]+/g, '-');
     await page.screenshot({ path: `${SHOTS}nonlinear-${slug}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);

@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
-import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
+import { golden, goldenState, openRecorded } from './support/golden.mjs';
 import { nudge, assertDrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
@@ -20,10 +20,7 @@ const close = (a, b, rel) => Math.abs(a - b) <= rel * Math.abs(b);
 
 for (const state of golden(ID).states) {
   test(`${state.name}: the readouts computed natively, every plot drawn`, async () => {
-    const { page, errors, context } = await open(browser, url(state.query));
-    await assertReadoutsMatch(page, state);
-    await assertDrawn(page, PLOTS, 2000);
-    await assertDrawn(page, ['schematic'], 500);
+    const { page, errors, context } = await openRecorded(browser, server.url, ID, state, { plots: PLOTS });
     const shot = state.name.replace(/[^A-Za-z0-9]+/g, '-').toLowerCase();
     await page.screenshot({ path: `${SHOTS}${ID}-${shot}-1280.png`, fullPage: true });
     assert.deepEqual(errors, []);

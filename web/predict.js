@@ -11,18 +11,12 @@
 // is announced through a polite live region and receives focus.
 import { parseNumber } from '../zeta-app.js';
 import { numberLocale, t } from './i18n.js';
+import { el } from './ui.js';
 
 const VERB = { id: 'http://adlnet.gov/expapi/verbs/answered', display: { 'en-US': 'answered' } };
 const INTERACTION = 'http://adlnet.gov/expapi/activities/cmi.interaction';
 const EXT = 'urn:zeta-lab:xapi:';
 const DEFAULT_TOL = '10%';
-
-function el(tag, attrs = {}, text) {
-  const node = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, v);
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
 
 /** `{abs, text}` of a tolerance string around `value`; null when malformed. */
 export function tolerance(raw, value) {

@@ -1,18 +1,12 @@
 import { languages, t } from './i18n.js';
 import { encodeToken, formatPresets, parsePresets, viewQuery } from './state.js';
+import { el } from './ui.js';
 
 // The "Share / Embed" dialog: builds the link, the <iframe> snippet and the state token for
 // the current view and the chosen options (embed view, sliders shown and locked, plots and
 // readouts shown, theme, language, per-slider range and step, fullscreen button, a
 // prediction task), with copy buttons and a live preview. Overrides are only written into
 // the link: the page that opens it validates them in Rust (crates/app/src/lecturer.rs).
-
-function el(tag, attrs = {}, text) {
-  const node = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, v);
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
 
 /** The page URL for a demo, its values and the chosen options. */
 export function shareUrl(base, demoId, values, opts) {

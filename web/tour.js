@@ -4,13 +4,7 @@
 // Every string is inserted with textContent; links are relative queries built in Rust.
 
 import { t } from './i18n.js';
-
-function el(tag, attrs = {}, text) {
-  const node = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, v);
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
+import { el } from './ui.js';
 
 /** A link that opens `query` (from Rust, always `?demo=…`) on this page. */
 function stateLink(query, text) {

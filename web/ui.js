@@ -6,7 +6,8 @@ import { t } from './i18n.js';
 
 const LOG_STEPS = 1000;
 
-function el(tag, attrs = {}, text) {
+/** A new `tag` element with attributes `attrs` and, if given, `text` as its text content. */
+export function el(tag, attrs = {}, text) {
   const node = document.createElement(tag);
   for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, v);
   if (text !== undefined) node.textContent = text;

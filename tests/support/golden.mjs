@@ -3,7 +3,8 @@
 // that the page shows the same values, instead of recomputing physics in JavaScript.
 import { readFileSync } from 'node:fs';
 import assert from 'node:assert/strict';
-import { assertDrawn } from './page.mjs';
+import { open } from './browser.mjs';
+import { assertDrawn, assertRowCurrent } from './page.mjs';
 
 const DIR = new URL('../../crates/app/tests/snapshots/', import.meta.url);
 
@@ -63,4 +64,19 @@ export async function assertReadoutsMatch(page, state) {
       assert.equal(value, expected, `${state.name}: ${r.key}`);
     }
   }
+}
+
+/**
+ * Opens demo `id` at recorded `state` (the site served at `url`) and asserts what the page
+ * shows: every readout as recorded (`assertReadoutsMatch`), the table row named by readout
+ * `row` (if given) marked current, each plot of `plots` and the schematic drawn. Resolves to
+ * `open`'s {page, errors, context}.
+ */
+export async function openRecorded(browser, url, id, state, { plots, row }) {
+  const opened = await open(browser, `${url}?demo=${id}&${state.query}`);
+  await assertReadoutsMatch(opened.page, state);
+  if (row) await assertRowCurrent(opened.page, row);
+  await assertDrawn(opened.page, plots, 2000);
+  await assertDrawn(opened.page, ['schematic'], 500);
+  return opened;
 }

@@ -118,3 +118,29 @@ export async function assertFitsPhone(page, plot, shot) {
   assert.ok(overflow <= 0.5, `nothing wider than the screen (${overflow} px)`);
   await page.screenshot({ path: `${SHOTS}${shot}`, fullPage: true });
 }
+
+/**
+ * On a fresh page at `url`: presses `keys` on slider `key` and asserts that each readout of
+ * `drives` changes or, when it drives none, that each readout of `steady` keeps its value
+ * once the address shows the move; that each plot of `plots` is drawn anew; that the page's
+ * link reproduces it; and that the console stays clean.
+ */
+export async function assertKeyboardMove(browser, url, key, keys, { drives, steady = [], plots }) {
+  const { page, errors, context } = await open(browser, url);
+  const before = await allReadouts(page);
+  const pixels = await fingerprints(page, plots);
+  const inUrl = () => page.evaluate((k) => new URLSearchParams(location.search).get(k), key);
+  const shown = await inUrl();
+  await pressOn(page, key, ...keys);
+  if (drives.length) {
+    for (const r of drives) await waitForChange(page, r, before[r]);
+  } else {
+    await page.waitForFunction(([k, old]) => new URLSearchParams(location.search).get(k) !== old, [key, shown]);
+    await page.waitForTimeout(100);
+    for (const r of steady) assert.equal(await readout(page, r), before[r], `${r} does not change with ${key}`);
+  }
+  await assertRedrawn(page, pixels, `after moving ${key}`);
+  await assertLinkReproduces(page, key);
+  assert.deepEqual(errors, []);
+  await context.close();
+}

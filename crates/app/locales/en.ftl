@@ -135,13 +135,15 @@ plot-clipped = clipped: some values lie beyond the axes
 
 ## Notices (a parameter value that could not be used)
 
-notice-not-a-toggle = { $label } ({ $key }): “{ $value }” is not on or off; using the default.
-notice-not-an-option = { $label } ({ $key }): “{ $value }” is not one of { $options }; using the default.
-notice-not-a-number = { $label } ({ $key }): “{ $value }” is not a number; using the default { $default }.
-notice-out-of-range = { $label } ({ $key }) = { $value } is outside { $min } … { $max }{ $unit }; using { $used }.
-notice-range-empty = { $label } ({ $key }): range “{ $value }” is empty inside { $min } … { $max }; keeping the full range.
-notice-range-not-two-numbers = { $label } ({ $key }): range “{ $value }” is not two numbers “low,high”; keeping the full range.
-notice-step-invalid = { $label } ({ $key }): step “{ $value }” is not a number between 0 and { $span }; keeping { $step }.
+notice-value = { $problem ->
+        [toggle] { $label } ({ $key }): “{ $value }” is not on or off; using the default.
+        [option] { $label } ({ $key }): “{ $value }” is not one of { $options }; using the default.
+        [number] { $label } ({ $key }): “{ $value }” is not a number; using the default { $default }.
+        [range-empty] { $label } ({ $key }): range “{ $value }” is empty inside { $min } … { $max }; keeping the full range.
+        [range-not-two-numbers] { $label } ({ $key }): range “{ $value }” is not two numbers “low,high”; keeping the full range.
+        [step] { $label } ({ $key }): step “{ $value }” is not a number between 0 and { $span }; keeping { $step }.
+       *[range] { $label } ({ $key }) = { $value } is outside { $min } … { $max }{ $unit }; using { $used }.
+    }
 
 ## Exported files
 

@@ -127,13 +127,15 @@ plot-clipped = recortado: algunos valores quedan fuera de los ejes
 
 ## Avisos (un valor de parámetro que no se pudo usar)
 
-notice-not-a-toggle = { $label } ({ $key }): «{ $value }» no es sí ni no; se usa el valor predeterminado.
-notice-not-an-option = { $label } ({ $key }): «{ $value }» no es ninguna de { $options }; se usa el valor predeterminado.
-notice-not-a-number = { $label } ({ $key }): «{ $value }» no es un número; se usa el valor predeterminado { $default }.
-notice-out-of-range = { $label } ({ $key }) = { $value } está fuera de { $min } … { $max }{ $unit }; se usa { $used }.
-notice-range-empty = { $label } ({ $key }): el intervalo «{ $value }» queda vacío dentro de { $min } … { $max }; se mantiene el intervalo completo.
-notice-range-not-two-numbers = { $label } ({ $key }): el intervalo «{ $value }» no son dos números «mín,máx»; se mantiene el intervalo completo.
-notice-step-invalid = { $label } ({ $key }): el paso «{ $value }» no es un número entre 0 y { $span }; se mantiene { $step }.
+notice-value = { $problem ->
+        [toggle] { $label } ({ $key }): «{ $value }» no es sí ni no; se usa el valor predeterminado.
+        [option] { $label } ({ $key }): «{ $value }» no es ninguna de { $options }; se usa el valor predeterminado.
+        [number] { $label } ({ $key }): «{ $value }» no es un número; se usa el valor predeterminado { $default }.
+        [range-empty] { $label } ({ $key }): el intervalo «{ $value }» queda vacío dentro de { $min } … { $max }; se mantiene el intervalo completo.
+        [range-not-two-numbers] { $label } ({ $key }): el intervalo «{ $value }» no son dos números «mín,máx»; se mantiene el intervalo completo.
+        [step] { $label } ({ $key }): el paso «{ $value }» no es un número entre 0 y { $span }; se mantiene { $step }.
+       *[range] { $label } ({ $key }) = { $value } está fuera de { $min } … { $max }{ $unit }; se usa { $used }.
+    }
 
 ## Archivos exportados
 

@@ -1445,13 +1445,15 @@ design-preset-5 = Grille fine de 160 × 160
 
 ## Avis (une valeur de paramètre inutilisable)
 
-notice-not-a-toggle = { $label } ({ $key }) : « { $value } » n’est ni activé ni désactivé ; valeur par défaut utilisée.
-notice-not-an-option = { $label } ({ $key }) : « { $value } » ne fait pas partie de { $options } ; valeur par défaut utilisée.
-notice-not-a-number = { $label } ({ $key }) : « { $value } » n’est pas un nombre ; valeur par défaut { $default } utilisée.
-notice-out-of-range = { $label } ({ $key }) = { $value } est hors de { $min } … { $max }{ $unit } ; { $used } utilisé.
-notice-range-empty = { $label } ({ $key }) : la plage « { $value } » est vide dans { $min } … { $max } ; plage complète conservée.
-notice-range-not-two-numbers = { $label } ({ $key }) : la plage « { $value } » n’est pas deux nombres « bas,haut » ; plage complète conservée.
-notice-step-invalid = { $label } ({ $key }) : le pas « { $value } » n’est pas un nombre entre 0 et { $span } ; { $step } conservé.
+notice-value = { $problem ->
+        [toggle] { $label } ({ $key }) : « { $value } » n’est ni activé ni désactivé ; valeur par défaut utilisée.
+        [option] { $label } ({ $key }) : « { $value } » ne fait pas partie de { $options } ; valeur par défaut utilisée.
+        [number] { $label } ({ $key }) : « { $value } » n’est pas un nombre ; valeur par défaut { $default } utilisée.
+        [range-empty] { $label } ({ $key }) : la plage « { $value } » est vide dans { $min } … { $max } ; plage complète conservée.
+        [range-not-two-numbers] { $label } ({ $key }) : la plage « { $value } » n’est pas deux nombres « bas,haut » ; plage complète conservée.
+        [step] { $label } ({ $key }) : le pas « { $value } » n’est pas un nombre entre 0 et { $span } ; { $step } conservé.
+       *[range] { $label } ({ $key }) = { $value } est hors de { $min } … { $max }{ $unit } ; { $used } utilisé.
+    }
 
 ## Fichiers exportés
 

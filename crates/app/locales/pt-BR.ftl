@@ -1445,13 +1445,15 @@ design-preset-5 = Malha fina de 160 × 160
 
 ## Avisos (um valor de parâmetro que não pôde ser usado)
 
-notice-not-a-toggle = { $label } ({ $key }): “{ $value }” não é ligado nem desligado; usando o padrão.
-notice-not-an-option = { $label } ({ $key }): “{ $value }” não é nenhuma de { $options }; usando o padrão.
-notice-not-a-number = { $label } ({ $key }): “{ $value }” não é um número; usando o padrão { $default }.
-notice-out-of-range = { $label } ({ $key }) = { $value } está fora de { $min } … { $max }{ $unit }; usando { $used }.
-notice-range-empty = { $label } ({ $key }): o intervalo “{ $value }” fica vazio dentro de { $min } … { $max }; mantendo o intervalo completo.
-notice-range-not-two-numbers = { $label } ({ $key }): o intervalo “{ $value }” não são dois números “mín,máx”; mantendo o intervalo completo.
-notice-step-invalid = { $label } ({ $key }): o passo “{ $value }” não é um número entre 0 e { $span }; mantendo { $step }.
+notice-value = { $problem ->
+        [toggle] { $label } ({ $key }): “{ $value }” não é ligado nem desligado; usando o padrão.
+        [option] { $label } ({ $key }): “{ $value }” não é nenhuma de { $options }; usando o padrão.
+        [number] { $label } ({ $key }): “{ $value }” não é um número; usando o padrão { $default }.
+        [range-empty] { $label } ({ $key }): o intervalo “{ $value }” fica vazio dentro de { $min } … { $max }; mantendo o intervalo completo.
+        [range-not-two-numbers] { $label } ({ $key }): o intervalo “{ $value }” não são dois números “mín,máx”; mantendo o intervalo completo.
+        [step] { $label } ({ $key }): o passo “{ $value }” não é um número entre 0 e { $span }; mantendo { $step }.
+       *[range] { $label } ({ $key }) = { $value } está fora de { $min } … { $max }{ $unit }; usando { $used }.
+    }
 
 ## Arquivos exportados
 

@@ -1427,13 +1427,15 @@ design-preset-5 = 细网格 160 × 160
 
 ## 提示（无法使用的参数值）
 
-notice-not-a-toggle = { $label }（{ $key }）：“{ $value }”不是开或关；改用默认值。
-notice-not-an-option = { $label }（{ $key }）：“{ $value }”不是 { $options } 之一；改用默认值。
-notice-not-a-number = { $label }（{ $key }）：“{ $value }”不是数字；改用默认值 { $default }。
-notice-out-of-range = { $label }（{ $key }）= { $value } 超出 { $min } … { $max }{ $unit }；改用 { $used }。
-notice-range-empty = { $label }（{ $key }）：范围“{ $value }”在 { $min } … { $max } 内为空；保留完整范围。
-notice-range-not-two-numbers = { $label }（{ $key }）：范围“{ $value }”不是“下限,上限”两个数；保留完整范围。
-notice-step-invalid = { $label }（{ $key }）：步长“{ $value }”不是 0 到 { $span } 之间的数；保留 { $step }。
+notice-value = { $problem ->
+        [toggle] { $label }（{ $key }）：“{ $value }”不是开或关；改用默认值。
+        [option] { $label }（{ $key }）：“{ $value }”不是 { $options } 之一；改用默认值。
+        [number] { $label }（{ $key }）：“{ $value }”不是数字；改用默认值 { $default }。
+        [range-empty] { $label }（{ $key }）：范围“{ $value }”在 { $min } … { $max } 内为空；保留完整范围。
+        [range-not-two-numbers] { $label }（{ $key }）：范围“{ $value }”不是“下限,上限”两个数；保留完整范围。
+        [step] { $label }（{ $key }）：步长“{ $value }”不是 0 到 { $span } 之间的数；保留 { $step }。
+       *[range] { $label }（{ $key }）= { $value } 超出 { $min } … { $max }{ $unit }；改用 { $used }。
+    }
 
 ## 导出文件
 

@@ -60,6 +60,16 @@ impl<B: DrawingBackend> Measured<B> {
 
 type Result<T, E> = std::result::Result<T, DrawingErrorKind<E>>;
 
+/// `DrawingBackend` methods of `Measured<B>` that return `Result<(), B::ErrorType>` and only
+/// hand their arguments to the wrapped backend (its own drawing, not the trait's defaults).
+macro_rules! forward_to_inner {
+    ($(fn $name:ident $(<$($g:ident: $bound:path),+>)? ($($arg:ident: $ty:ty),*);)*) => {$(
+        fn $name $(<$($g: $bound),+>)? (&mut self, $($arg: $ty),*) -> Result<(), B::ErrorType> {
+            self.inner.$name($($arg),*)
+        }
+    )*};
+}
+
 impl<B: DrawingBackend> DrawingBackend for Measured<B> {
     type ErrorType = B::ErrorType;
 
@@ -67,70 +77,16 @@ impl<B: DrawingBackend> DrawingBackend for Measured<B> {
         self.inner.get_size()
     }
 
-    fn ensure_prepared(&mut self) -> Result<(), B::ErrorType> {
-        self.inner.ensure_prepared()
-    }
-
-    fn present(&mut self) -> Result<(), B::ErrorType> {
-        self.inner.present()
-    }
-
-    fn draw_pixel(&mut self, point: BackendCoord, color: BackendColor) -> Result<(), B::ErrorType> {
-        self.inner.draw_pixel(point, color)
-    }
-
-    fn draw_line<S: BackendStyle>(
-        &mut self,
-        from: BackendCoord,
-        to: BackendCoord,
-        style: &S,
-    ) -> Result<(), B::ErrorType> {
-        self.inner.draw_line(from, to, style)
-    }
-
-    fn draw_rect<S: BackendStyle>(
-        &mut self,
-        upper_left: BackendCoord,
-        bottom_right: BackendCoord,
-        style: &S,
-        fill: bool,
-    ) -> Result<(), B::ErrorType> {
-        self.inner.draw_rect(upper_left, bottom_right, style, fill)
-    }
-
-    fn draw_path<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
-        &mut self,
-        path: I,
-        style: &S,
-    ) -> Result<(), B::ErrorType> {
-        self.inner.draw_path(path, style)
-    }
-
-    fn draw_circle<S: BackendStyle>(
-        &mut self,
-        center: BackendCoord,
-        radius: u32,
-        style: &S,
-        fill: bool,
-    ) -> Result<(), B::ErrorType> {
-        self.inner.draw_circle(center, radius, style, fill)
-    }
-
-    fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
-        &mut self,
-        vert: I,
-        style: &S,
-    ) -> Result<(), B::ErrorType> {
-        self.inner.fill_polygon(vert, style)
-    }
-
-    fn draw_text<S: BackendTextStyle>(
-        &mut self,
-        text: &str,
-        style: &S,
-        pos: BackendCoord,
-    ) -> Result<(), B::ErrorType> {
-        self.inner.draw_text(text, style, pos)
+    forward_to_inner! {
+        fn ensure_prepared();
+        fn present();
+        fn draw_pixel(point: BackendCoord, color: BackendColor);
+        fn draw_line<S: BackendStyle>(from: BackendCoord, to: BackendCoord, style: &S);
+        fn draw_rect<S: BackendStyle>(upper_left: BackendCoord, bottom_right: BackendCoord, style: &S, fill: bool);
+        fn draw_path<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(path: I, style: &S);
+        fn draw_circle<S: BackendStyle>(center: BackendCoord, radius: u32, style: &S, fill: bool);
+        fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(vert: I, style: &S);
+        fn draw_text<S: BackendTextStyle>(text: &str, style: &S, pos: BackendCoord);
     }
 
     fn estimate_text_size<S: BackendTextStyle>(

@@ -317,6 +317,13 @@ impl Figure {
         self
     }
 
+    /// Whether every series point is finite (no line of the figure breaks).
+    pub fn all_points_finite(&self) -> bool {
+        self.series
+            .iter()
+            .all(|s| s.points.iter().all(|p| p.0.is_finite() && p.1.is_finite()))
+    }
+
     /// Whether any series or marker point is finite and inside the axes.
     pub fn has_visible_data(&self) -> bool {
         let inside = |&(x, y): &(f64, f64)| {

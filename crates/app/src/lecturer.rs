@@ -6,10 +6,8 @@
 //! Every value from outside still passes through [`crate::params`]: overrides are parsed
 //! with [`parse_number`] and may only narrow the declared range, never widen it.
 
-use crate::format::shortest;
-use crate::params::{parse_number, parse_query, shown, Notice};
+use crate::params::{parse_number, parse_query, Notice};
 use crate::spec::{DemoSpec, Kind, ParamSpec, ReadoutSpec, Scale};
-use crate::t;
 use serde::Serialize;
 
 /// Version of the [`Schema`] layout; `docs/zeta-schema.json` pins the same number.
@@ -113,13 +111,6 @@ pub fn schema(spec: &DemoSpec) -> Schema {
     }
 }
 
-fn notice(key: &str, message: String) -> Notice {
-    Notice {
-        key: key.to_string(),
-        message,
-    }
-}
-
 /// Applies the authoring overrides of `query` to `spec`: `range.<key>=lo,hi` narrows a
 /// slider to `[lo, hi]` (clamped into the declared range; `lo < hi`), `step.<key>=s` sets
 /// its step (`0 < s ≤ hi − lo`). The default is clamped into the new range. Anything
@@ -134,40 +125,17 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
         };
         let bounds = v
             .split_once(',')
-            .and_then(|(a, b)| Some((parse_number(a)?, parse_number(b)?)));
-        let shown = shown(v);
+            .and_then(|(a, b)| Some((parse_number(a)?, parse_number(b)?)))
+            .map(|(lo, hi)| (lo.clamp(p.min, p.max), hi.clamp(p.min, p.max)));
         match bounds {
-            Some((lo, hi)) => {
-                let lo = lo.clamp(p.min, p.max);
-                let hi = hi.clamp(p.min, p.max);
-                if lo < hi {
-                    p.min = lo;
-                    p.max = hi;
-                    p.default = p.default.clamp(lo, hi);
-                    p.step = p.step.min(hi - lo);
-                } else {
-                    notices.push(notice(
-                        key,
-                        t!(
-                            "notice-range-empty",
-                            label = p.display_label(),
-                            key = key,
-                            value = shown,
-                            min = shortest(p.min),
-                            max = shortest(p.max)
-                        ),
-                    ));
-                }
+            Some((lo, hi)) if lo < hi => {
+                p.min = lo;
+                p.max = hi;
+                p.default = p.default.clamp(lo, hi);
+                p.step = p.step.min(hi - lo);
             }
-            None => notices.push(notice(
-                key,
-                t!(
-                    "notice-range-not-two-numbers",
-                    label = p.display_label(),
-                    key = key,
-                    value = shown
-                ),
-            )),
+            Some(_) => notices.push(Notice::about(p, v, "range-empty", None)),
+            None => notices.push(Notice::about(p, v, "range-not-two-numbers", None)),
         }
     }
     for (key, v) in overrides(&pairs, "step.") {
@@ -176,20 +144,7 @@ pub fn narrow(spec: &mut DemoSpec, query: &str) -> Vec<Notice> {
         };
         match parse_number(v) {
             Some(s) if s > 0.0 && s <= p.max - p.min => p.step = s,
-            _ => {
-                let shown = shown(v);
-                notices.push(notice(
-                    key,
-                    t!(
-                        "notice-step-invalid",
-                        label = p.display_label(),
-                        key = key,
-                        value = shown,
-                        span = shortest(p.max - p.min),
-                        step = shortest(p.step)
-                    ),
-                ));
-            }
+            _ => notices.push(Notice::about(p, v, "step", None)),
         }
     }
     notices

@@ -18,6 +18,36 @@ pub struct Notice {
     pub message: String,
 }
 
+impl Notice {
+    /// The notice about value `raw` given for `p`. `problem` is the variant of message
+    /// `notice-value` that says what was wrong: `toggle`, `option`, `number` or `range` for
+    /// a parameter's value, `range-empty`, `range-not-two-numbers` or `step` for a
+    /// lecturer's override (`crate::lecturer::narrow`); `used` is the value taken instead,
+    /// where there is one.
+    pub(crate) fn about(p: &ParamSpec, raw: &str, problem: &str, used: Option<f64>) -> Self {
+        let options: Vec<&str> = p.options.iter().map(|o| o.key).collect();
+        let message = t!(
+            "notice-value",
+            problem = problem,
+            label = p.display_label(),
+            key = p.key,
+            value = shown(raw),
+            options = options.join(", "),
+            default = shortest(p.default),
+            min = shortest(p.min),
+            max = shortest(p.max),
+            unit = unit_suffix(p.unit),
+            span = shortest(p.max - p.min),
+            step = shortest(p.step),
+            used = used.map(shortest).unwrap_or_default()
+        );
+        Self {
+            key: p.key.to_string(),
+            message,
+        }
+    }
+}
+
 /// Validated parameter values of one demo, in the order of its spec.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Params {
@@ -68,97 +98,42 @@ impl Params {
 }
 
 /// A value as a notice quotes it: at most 40 characters, no control characters.
-pub(crate) fn shown(raw: &str) -> String {
+fn shown(raw: &str) -> String {
     raw.chars().take(40).filter(|c| !c.is_control()).collect()
 }
 
 /// Parses `raw` for parameter `p`: a finite decimal clamped into range for sliders,
 /// `1`/`0`/`true`/`false`/`on`/`off` for toggles, an option key or index for choices.
 pub fn resolve_value(p: &ParamSpec, raw: &str) -> (f64, Option<Notice>) {
-    let shown = shown(raw);
     match p.kind {
-        Kind::Toggle => {
-            return match raw.trim().to_ascii_lowercase().as_str() {
-                "1" | "true" | "on" | "yes" => (1.0, None),
-                "0" | "false" | "off" | "no" => (0.0, None),
-                _ => (
-                    p.default,
-                    Some(notice(
-                        p,
-                        t!(
-                            "notice-not-a-toggle",
-                            label = p.display_label(),
-                            key = p.key,
-                            value = shown
-                        ),
-                    )),
-                ),
-            };
-        }
+        Kind::Toggle => match raw.trim().to_ascii_lowercase().as_str() {
+            "1" | "true" | "on" | "yes" => (1.0, None),
+            "0" | "false" | "off" | "no" => (0.0, None),
+            _ => corrected(p, raw, p.default, "toggle"),
+        },
         Kind::Choice => {
             let t = raw.trim();
-            if let Some(i) = p.options.iter().position(|o| o.key == t) {
-                return (i as f64, None);
+            let index = p
+                .options
+                .iter()
+                .position(|o| o.key == t)
+                .or_else(|| t.parse::<usize>().ok().filter(|&i| i < p.options.len()));
+            match index {
+                Some(i) => (i as f64, None),
+                None => corrected(p, raw, p.default, "option"),
             }
-            return match t.parse::<usize>() {
-                Ok(i) if i < p.options.len() => (i as f64, None),
-                _ => {
-                    let keys: Vec<&str> = p.options.iter().map(|o| o.key).collect();
-                    let message = t!(
-                        "notice-not-an-option",
-                        label = p.display_label(),
-                        key = p.key,
-                        value = shown,
-                        options = keys.join(", ")
-                    );
-                    (p.default, Some(notice(p, message)))
-                }
-            };
         }
-        Kind::Slider => {}
-    }
-    match parse_number(raw) {
-        None => (
-            p.default,
-            Some(notice(
-                p,
-                t!(
-                    "notice-not-a-number",
-                    label = p.display_label(),
-                    key = p.key,
-                    value = shown,
-                    default = shortest(p.default)
-                ),
-            )),
-        ),
-        Some(v) if v < p.min || v > p.max => {
-            let c = v.clamp(p.min, p.max);
-            (
-                c,
-                Some(notice(
-                    p,
-                    t!(
-                        "notice-out-of-range",
-                        label = p.display_label(),
-                        key = p.key,
-                        value = shown,
-                        min = shortest(p.min),
-                        max = shortest(p.max),
-                        unit = unit_suffix(p.unit),
-                        used = shortest(c)
-                    ),
-                )),
-            )
-        }
-        Some(v) => (v, None),
+        Kind::Slider => match parse_number(raw) {
+            None => corrected(p, raw, p.default, "number"),
+            Some(v) if v < p.min || v > p.max => corrected(p, raw, v.clamp(p.min, p.max), "range"),
+            Some(v) => (v, None),
+        },
     }
 }
 
-fn notice(p: &ParamSpec, message: String) -> Notice {
-    Notice {
-        key: p.key.to_string(),
-        message,
-    }
+/// `used` in place of `raw` for `p`, with the notice that says why (see [`Notice::about`]).
+fn corrected(p: &ParamSpec, raw: &str, used: f64, problem: &str) -> (f64, Option<Notice>) {
+    (used, Some(Notice::about(p, raw, problem, Some(used))))
 }
 
 fn unit_suffix(unit: &str) -> String {

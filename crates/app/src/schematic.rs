@@ -310,10 +310,7 @@ mod tests {
         };
         assert!(top(&up) > top(&down) + 1.0);
         let nan = mass_spring_damper(f64::NAN, f64::INFINITY, &labels, String::new());
-        assert!(nan
-            .series
-            .iter()
-            .all(|s| s.points.iter().all(|p| p.0.is_finite() && p.1.is_finite())));
+        assert!(nan.all_points_finite());
     }
 
     #[test]
