@@ -3,6 +3,7 @@
 
 use super::run::{Run, FRF_RANGE};
 use super::{text, RoadKind};
+use crate::demos::rows::Plot;
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
 use crate::plot::Ink;
 use crate::t;
@@ -10,10 +11,13 @@ use std::f64::consts::TAU;
 use zeta_solver::two_dof::{TwoDof, G};
 use zeta_solver::two_dof_exact::ExactMetrics;
 
-pub(super) const MOTION_TITLE: &str = "Body, wheel and road";
-pub(super) const ACCEL_TITLE: &str = "Body acceleration";
-pub(super) const FRF_TITLE: &str = "Frequency response per unit road height";
-pub(super) const TYRE_TITLE: &str = "Tyre deflection";
+/// The plots, in order: key, title and width / height.
+pub(super) const PLOTS: [Plot; 4] = [
+    ("motion", "Body, wheel and road", 2.0),
+    ("accel", "Body acceleration", 1.25),
+    ("frf", "Frequency response per unit road height", 2.0),
+    ("tyre", "Tyre deflection", 1.25),
+];
 
 /// Every `stride`-th state is plotted once a run exceeds this many points.
 const PLOT_POINTS: usize = 1000;
