@@ -1,61 +1,53 @@
-//! The nonlinear demo's declaration: parameters, readouts and plots as tables.
+//! The nonlinear demo's declaration: parameters and readouts as tables, the plots of
+//! `figures.rs`, presets and the effects table of `text.rs`.
 
 use super::{figures, text, Results, P, STICK_RATIO};
-use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::declare::Declaration;
 use crate::demos::rows::{self, readouts, sliders};
 
 /// The demo's declaration.
 pub(super) fn declaration() -> Declaration<P, Results> {
     Declaration {
         equation_mathml: text::EQUATION,
-        params: params(),
-        readouts: readouts(),
+        params: sliders! { P;
+            linear "m", "sprung mass", "m", "kg", (100.0, 600.0, 1.0), 300.0 => m;
+            linear "k", "linear spring rate", "k", "N/m",
+                (5_000.0, 60_000.0, 100.0), 24_000.0 => k;
+            linear "k3", "cubic spring coefficient (+ hardening, − softening)", "k₃", "N/m³",
+                (-4.0e6, 4.0e6, 10_000.0), 1.0e6 => k3;
+            linear "c_comp", "damper rate in compression", "c_c", "N·s/m",
+                (0.0, 6_000.0, 10.0), 1_500.0 => c_comp;
+            linear "c_reb", "damper rate in rebound", "c_r", "N·s/m",
+                (0.0, 6_000.0, 10.0), 1_500.0 => c_reb;
+            linear "friction", "Coulomb friction force while sliding", "F_c", "N",
+                (0.0, 1_500.0, 10.0), 0.0 => friction;
+            linear "stick_ratio", "static-to-sliding friction ratio", "F_static/F_c", "",
+                (1.0, 2.0, 0.05), STICK_RATIO => stick_ratio;
+            linear "gap", "bump-stop clearance", "gap", "m", (0.01, 0.2, 0.001), 0.06 => gap;
+            linear "k_stop", "bump-stop rate (0 = no stops)", "k_stop", "N/m",
+                (0.0, 500_000.0, 1_000.0), 0.0 => k_stop;
+            linear "x0", "initial extension", "x₀", "m", (-0.15, 0.15, 0.001), 0.08 => x0;
+            linear "v0", "initial velocity", "v₀", "m/s", (-2.0, 2.0, 0.01), 0.0 => v0;
+        },
+        readouts: readouts! { Results, |r|;
+            text "effect", "dominant nonlinearity" => text::effect_name(r.effect);
+            number "period_ratio", "first-swing period ratio T_nonlinear / T_linear", "", 4
+                => r.cmp.first_swing_ratio();
+            number "max_deviation", "largest |x_nonlinear − x_linear|", "m", 3
+                => (!r.cmp.t.is_empty()).then(|| r.cmp.max_deviation());
+            number "period_nonlinear",
+                "nonlinear period of the first full swing (three zero crossings)", "s", 4
+                => r.cmp.first_swing_nonlinear();
+            number "period_linear", "linear period of the first full swing (= 2π/ω_d)", "s", 4
+                => r.cmp.first_swing_linear();
+            number "max_travel", "largest |x| (nonlinear)", "m", 3 => r.max_travel;
+            number "stick_position", "friction holds the mass at", "m", 3
+                => r.cmp.sticking.map(|st| st.x);
+        },
         plots: rows::plots(&figures::PLOTS),
         presets: text::presets(),
         table: Some(text::table()),
         schematic: true,
         ..Declaration::new("nonlinear", "Beyond the linear model", text::SUMMARY)
-    }
-}
-
-/// The parameter table.
-fn params() -> Vec<Param<P>> {
-    sliders! { P;
-        linear "m", "sprung mass", "m", "kg", (100.0, 600.0, 1.0), 300.0 => m;
-        linear "k", "linear spring rate", "k", "N/m", (5_000.0, 60_000.0, 100.0), 24_000.0 => k;
-        linear "k3", "cubic spring coefficient (+ hardening, − softening)", "k₃", "N/m³",
-            (-4.0e6, 4.0e6, 10_000.0), 1.0e6 => k3;
-        linear "c_comp", "damper rate in compression", "c_c", "N·s/m",
-            (0.0, 6_000.0, 10.0), 1_500.0 => c_comp;
-        linear "c_reb", "damper rate in rebound", "c_r", "N·s/m",
-            (0.0, 6_000.0, 10.0), 1_500.0 => c_reb;
-        linear "friction", "Coulomb friction force while sliding", "F_c", "N",
-            (0.0, 1_500.0, 10.0), 0.0 => friction;
-        linear "stick_ratio", "static-to-sliding friction ratio", "F_static/F_c", "",
-            (1.0, 2.0, 0.05), STICK_RATIO => stick_ratio;
-        linear "gap", "bump-stop clearance", "gap", "m", (0.01, 0.2, 0.001), 0.06 => gap;
-        linear "k_stop", "bump-stop rate (0 = no stops)", "k_stop", "N/m",
-            (0.0, 500_000.0, 1_000.0), 0.0 => k_stop;
-        linear "x0", "initial extension", "x₀", "m", (-0.15, 0.15, 0.001), 0.08 => x0;
-        linear "v0", "initial velocity", "v₀", "m/s", (-2.0, 2.0, 0.01), 0.0 => v0;
-    }
-}
-
-/// The readout table.
-fn readouts() -> Vec<ReadoutDef<Results>> {
-    readouts! { Results, |r|;
-        text "effect", "dominant nonlinearity" => text::effect_name(r.effect);
-        number "period_ratio", "first-swing period ratio T_nonlinear / T_linear", "", 4
-            => r.cmp.first_swing_ratio();
-        number "max_deviation", "largest |x_nonlinear − x_linear|", "m", 3
-            => (!r.cmp.t.is_empty()).then(|| r.cmp.max_deviation());
-        number "period_nonlinear",
-            "nonlinear period of the first full swing (three zero crossings)", "s", 4
-            => r.cmp.first_swing_nonlinear();
-        number "period_linear", "linear period of the first full swing (= 2π/ω_d)", "s", 4
-            => r.cmp.first_swing_linear();
-        number "max_travel", "largest |x| (nonlinear)", "m", 3 => r.max_travel;
-        number "stick_position", "friction holds the mass at", "m", 3
-            => r.cmp.sticking.map(|st| st.x);
     }
 }

@@ -5,6 +5,9 @@
 //! Cost per update is bounded: `STEPS` RK4 steps. Coulomb friction sticks and slips: the
 //! solver switches between a kinetic force `F_c` while sliding and a static force
 //! `F_static = ratio·F_c` that holds the mass once it stops.
+//!
+//! This file holds the model step; `declaration.rs` declares the demo (parameters and
+//! readouts as tables); `figures.rs` (with the plot table) draws; `text.rs` holds the prose.
 
 mod declaration;
 mod figures;
