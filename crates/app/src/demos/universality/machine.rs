@@ -2,7 +2,8 @@
 //! target by the solver's inverse, and what the page needs to say about it: the units of
 //! its coefficients, its coordinate, the slider ranges and which sliders "match" moves.
 
-use super::params::{pick, Kind, Values};
+use super::params::{self, pick, Kind, Values};
+use crate::declare::Param;
 use zeta_solver::machines::{
     DcServo, Machine, MassSpringDamper, MatchError, SeriesRlc, Storey, Target, TwoCapacityThermal,
     UTube,
@@ -100,41 +101,36 @@ pub(super) struct Tuned {
     pub value: f64,
 }
 
-/// The two sliders of slot `slot` that "match" moves for machine `kind`, at values `v`.
-pub(super) fn tuned(kind: Kind, slot: usize, v: &Values) -> [Tuned; 2] {
-    let t = |a, b, symbol, unit, range: (f64, f64, f64), value| Tuned {
-        key: pick(slot, a, b),
-        symbol,
-        unit,
-        range: (range.0, range.1),
-        value,
+/// The two sliders of slot `slot` that "match" moves for machine `kind`, at values `v`;
+/// symbol, unit and range as the slot's parameter table declares them.
+pub(super) fn tuned(kind: Kind, slot: usize, v: &Values) -> Vec<Tuned> {
+    let moved = match kind {
+        Kind::MassSpring => [("A_k", "B_k", v.k), ("A_c", "B_c", v.c)],
+        Kind::Rlc => [("A_C", "B_C", v.cap), ("A_R", "B_R", v.r)],
+        Kind::UTube => [("A_len", "B_len", v.len), ("A_mu", "B_mu", v.mu)],
+        Kind::Servo => [("A_Kp", "B_Kp", v.kp), ("A_Kd", "B_Kd", v.kd)],
+        Kind::Storey => [("A_EI", "B_EI", v.ei), ("A_cf", "B_cf", v.cf)],
+        Kind::Thermal => [("A_R1", "B_R1", v.r1), ("A_R2", "B_R2", v.r2)],
     };
-    match kind {
-        Kind::MassSpring => [
-            t("A_k", "B_k", "k", "N/m", K, v.k),
-            t("A_c", "B_c", "c", "N·s/m", C, v.c),
-        ],
-        Kind::Rlc => [
-            t("A_C", "B_C", "C", "F", CAP, v.cap),
-            t("A_R", "B_R", "R", "Ω", R, v.r),
-        ],
-        Kind::UTube => [
-            t("A_len", "B_len", "L", "m", LEN, v.len),
-            t("A_mu", "B_mu", "μ", "Pa·s", MU, v.mu),
-        ],
-        Kind::Servo => [
-            t("A_Kp", "B_Kp", "K_p", "V/rad", KP, v.kp),
-            t("A_Kd", "B_Kd", "K_d", "V·s/rad", KD, v.kd),
-        ],
-        Kind::Storey => [
-            t("A_EI", "B_EI", "EI", "N·m²", EI, v.ei),
-            t("A_cf", "B_cf", "c", "N·s/m", CF, v.cf),
-        ],
-        Kind::Thermal => [
-            t("A_R1", "B_R1", "R₁", "K/W", RTH, v.r1),
-            t("A_R2", "B_R2", "R₂", "K/W", RTH, v.r2),
-        ],
-    }
+    let declared = if slot == 0 {
+        params::slot::<0>()
+    } else {
+        params::slot::<1>()
+    };
+    moved
+        .into_iter()
+        .filter_map(|(a, b, value)| {
+            let key = pick(slot, a, b);
+            let spec = declared.iter().map(Param::spec).find(|s| s.key == key)?;
+            Some(Tuned {
+                key,
+                symbol: spec.symbol,
+                unit: spec.unit,
+                range: (spec.min, spec.max),
+                value,
+            })
+        })
+        .collect()
 }
 
 /// Units of the coefficients `(a, b, c)` of machine `kind`.
