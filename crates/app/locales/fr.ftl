@@ -1006,10 +1006,14 @@ nonlinear-sticks-at = le frottement retient la masse à { $position } à partir 
 nonlinear-escapes = le calcul non linéaire sort du graphique (|x| > { $limit }) à { $time }
 nonlinear-describe-response = { $effect } : les deux partent ensemble ; { $clauses }.
 nonlinear-describe-phase = Plan de phase : les deux trajectoires partent de x = { $x0 }, v = { $v0 }. La linéaire s'enroule en spirale vers ({ $x_linear }, { $v_linear }) ; la non linéaire finit en x = { $x_end }, v = { $v_end }, avec une vitesse maximale de { $speed } contre { $speed_linear } en linéaire.
-nonlinear-describe-spring = Force de rappel en fonction de l'extension sur ±{ $reach } : le ressort linéaire est la droite k·x ; au plus grand débattement, { $travel }, la force non linéaire vaut { $force } contre { $linear } en linéaire.
-nonlinear-describe-spring-stops = Force de rappel en fonction de l'extension sur ±{ $reach } : le ressort linéaire est la droite k·x ; au plus grand débattement, { $travel }, la force non linéaire vaut { $force } contre { $linear } en linéaire, les butées ajoutant { $rate } au-delà de ±{ $gap }.
-nonlinear-describe-damper = Force d'amortisseur et de frottement en fonction de la vitesse sur ±{ $speed } : à +{ $speed } (détente) elle vaut { $rebound }, à −{ $speed } (compression) { $compression } ; l'amortisseur moyen du modèle linéaire donne ±{ $linear }.
-nonlinear-describe-damper-friction = Force d'amortisseur et de frottement en fonction de la vitesse sur ±{ $speed } : à +{ $speed } (détente) elle vaut { $rebound }, à −{ $speed } (compression) { $compression } ; l'amortisseur moyen du modèle linéaire donne ±{ $linear } ; le frottement de glissement ajoute un saut de ±{ $friction } en v = 0, et au repos le frottement statique retient jusqu'à ±{ $holding }.
+nonlinear-describe-spring = Force de rappel en fonction de l'extension sur ±{ $reach } : le ressort linéaire est la droite k·x ; au plus grand débattement, { $travel }, la force non linéaire vaut { $force } contre { $linear } en linéaire{ $stops ->
+        [yes] , les butées ajoutant { $rate } au-delà de ±{ $gap }.
+       *[no] .
+    }
+nonlinear-describe-damper = Force d'amortisseur et de frottement en fonction de la vitesse sur ±{ $speed } : à +{ $speed } (détente) elle vaut { $rebound }, à −{ $speed } (compression) { $compression } ; l'amortisseur moyen du modèle linéaire donne ±{ $linear }{ $coulomb ->
+        [yes]  ; le frottement de glissement ajoute un saut de ±{ $friction } en v = 0, et au repos le frottement statique retient jusqu'à ±{ $holding }.
+       *[no] .
+    }
 nonlinear-axis-velocity-rebound = vitesse v (+ détente)
 nonlinear-series-stops = butées ±{ $gap }
 nonlinear-series-linear = modèle linéaire

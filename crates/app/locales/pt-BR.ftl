@@ -1006,10 +1006,14 @@ nonlinear-sticks-at = o atrito prende a massa em { $position } a partir de { $ti
 nonlinear-escapes = a simulação não linear sai do gráfico (|x| > { $limit }) em { $time }
 nonlinear-describe-response = { $effect }: ambas começam juntas; { $clauses }.
 nonlinear-describe-phase = Plano de fase: ambas as trajetórias começam em x = { $x0 }, v = { $v0 }. A linear descreve uma espiral em direção a ({ $x_linear }, { $v_linear }); a não linear termina em x = { $x_end }, v = { $v_end }, com velocidade máxima de { $speed } contra { $speed_linear } da linear.
-nonlinear-describe-spring = Força restauradora em função da extensão em ±{ $reach }: a mola linear é a reta k·x; no maior curso, { $travel }, a força não linear é { $force } contra { $linear } da linear.
-nonlinear-describe-spring-stops = Força restauradora em função da extensão em ±{ $reach }: a mola linear é a reta k·x; no maior curso, { $travel }, a força não linear é { $force } contra { $linear } da linear, com os batentes somando { $rate } além de ±{ $gap }.
-nonlinear-describe-damper = Força do amortecedor mais atrito em função da velocidade em ±{ $speed }: a +{ $speed } (distensão) vale { $rebound }, a −{ $speed } (compressão) { $compression }; o amortecedor médio do modelo linear dá ±{ $linear }.
-nonlinear-describe-damper-friction = Força do amortecedor mais atrito em função da velocidade em ±{ $speed }: a +{ $speed } (distensão) vale { $rebound }, a −{ $speed } (compressão) { $compression }; o amortecedor médio do modelo linear dá ±{ $linear }; o atrito de deslizamento acrescenta um salto de ±{ $friction } em v = 0, e em repouso o atrito estático segura até ±{ $holding }.
+nonlinear-describe-spring = Força restauradora em função da extensão em ±{ $reach }: a mola linear é a reta k·x; no maior curso, { $travel }, a força não linear é { $force } contra { $linear } da linear{ $stops ->
+        [yes] , com os batentes somando { $rate } além de ±{ $gap }.
+       *[no] .
+    }
+nonlinear-describe-damper = Força do amortecedor mais atrito em função da velocidade em ±{ $speed }: a +{ $speed } (distensão) vale { $rebound }, a −{ $speed } (compressão) { $compression }; o amortecedor médio do modelo linear dá ±{ $linear }{ $coulomb ->
+        [yes] ; o atrito de deslizamento acrescenta um salto de ±{ $friction } em v = 0, e em repouso o atrito estático segura até ±{ $holding }.
+       *[no] .
+    }
 nonlinear-axis-velocity-rebound = velocidade v (+ distensão)
 nonlinear-series-stops = batentes ±{ $gap }
 nonlinear-series-linear = modelo linear

@@ -1003,10 +1003,14 @@ nonlinear-sticks-at = 从 { $time } 起摩擦力把质量保持在 { $position }
 nonlinear-escapes = 非线性计算在 { $time } 时离开图形范围（|x| > { $limit }）
 nonlinear-describe-response = { $effect }：两者同时出发；{ $clauses }。
 nonlinear-describe-phase = 相平面：两条轨迹都从 x = { $x0 }、v = { $v0 } 出发。线性轨迹螺旋趋向（{ $x_linear }，{ $v_linear }）；非线性轨迹终止于 x = { $x_end }、v = { $v_end }，其最大速度为 { $speed }，线性为 { $speed_linear }。
-nonlinear-describe-spring = 恢复力随伸长量的变化，范围 ±{ $reach }：线性弹簧为直线 k·x；在最大行程 { $travel } 处，非线性力为 { $force }，线性为 { $linear }。
-nonlinear-describe-spring-stops = 恢复力随伸长量的变化，范围 ±{ $reach }：线性弹簧为直线 k·x；在最大行程 { $travel } 处，非线性力为 { $force }，线性为 { $linear }，超出 ±{ $gap } 后限位块再增加 { $rate }。
-nonlinear-describe-damper = 阻尼力加摩擦力随速度的变化，范围 ±{ $speed }：在 +{ $speed }（回弹）时为 { $rebound }，在 −{ $speed }（压缩）时为 { $compression }；线性模型的平均阻尼给出 ±{ $linear }。
-nonlinear-describe-damper-friction = 阻尼力加摩擦力随速度的变化，范围 ±{ $speed }：在 +{ $speed }（回弹）时为 { $rebound }，在 −{ $speed }（压缩）时为 { $compression }；线性模型的平均阻尼给出 ±{ $linear }；滑动摩擦在 v = 0 处造成 ±{ $friction } 的跳变，静止时静摩擦最多能保持 ±{ $holding }。
+nonlinear-describe-spring = 恢复力随伸长量的变化，范围 ±{ $reach }：线性弹簧为直线 k·x；在最大行程 { $travel } 处，非线性力为 { $force }，线性为 { $linear }{ $stops ->
+        [yes] ，超出 ±{ $gap } 后限位块再增加 { $rate }。
+       *[no] 。
+    }
+nonlinear-describe-damper = 阻尼力加摩擦力随速度的变化，范围 ±{ $speed }：在 +{ $speed }（回弹）时为 { $rebound }，在 −{ $speed }（压缩）时为 { $compression }；线性模型的平均阻尼给出 ±{ $linear }{ $coulomb ->
+        [yes] ；滑动摩擦在 v = 0 处造成 ±{ $friction } 的跳变，静止时静摩擦最多能保持 ±{ $holding }。
+       *[no] 。
+    }
 nonlinear-axis-velocity-rebound = 速度 v（+ 为回弹）
 nonlinear-series-stops = 限位块 ±{ $gap }
 nonlinear-series-linear = 线性模型

@@ -85,17 +85,7 @@ pub(super) fn response(r: &Results) -> Figure {
             )
             .with_line("", vec![(0.0, -gap), (r.t_end, -gap)], stop);
     }
-    fig = fig
-        .with_line(
-            t!("nonlinear-series-linear"),
-            lin,
-            LineStyle::dashed(Ink::Vermillion, 2.0),
-        )
-        .with_line(
-            t!("nonlinear-series-nonlinear"),
-            nl,
-            LineStyle::solid(Ink::Blue, 2.5),
-        );
+    fig = both_runs(fig, lin, nl, 2.5);
     if let Some(st) = r.cmp.sticking {
         fig = fig.with_marker(Marker::dot(
             t!("nonlinear-marker-sticks"),
@@ -116,21 +106,12 @@ pub(super) fn phase(r: &Results) -> Figure {
     let x = padded((xs.0, xs.1.max(xs.0 + 1e-6)), 0.08);
     let description = text::describe_phase(&nl, &lin);
     let start = nl.first().copied();
-    let mut fig = Figure::plot(
+    let plot = Figure::plot(
         t!("nonlinear-plot-phase"),
         Axis::linear(t!("axis-extension"), "m", x),
         Axis::linear(t!("axis-velocity"), "m/s", with_legend_room(vs)),
-    )
-    .with_line(
-        t!("nonlinear-series-linear"),
-        lin,
-        LineStyle::dashed(Ink::Vermillion, 2.0),
-    )
-    .with_line(
-        t!("nonlinear-series-nonlinear"),
-        nl,
-        LineStyle::solid(Ink::Blue, 2.0),
     );
+    let mut fig = both_runs(plot, lin, nl, 2.0);
     if let Some(p) = start {
         fig = fig.with_marker(Marker::dot(t!("nonlinear-marker-start"), p, Ink::Black));
     }
@@ -168,18 +149,43 @@ fn force_plot(
     (linear_label, linear): (String, Vec<(f64, f64)>),
     (label, nonlinear): (String, Vec<(f64, f64)>),
 ) -> Figure {
-    Figure::plot(
+    let plot = Figure::plot(
         title,
         x,
         Axis::linear(t!("axis-force"), "N", with_legend_room(extent)),
-    )
-    .with_line(
+    );
+    against_linear(plot, (linear_label, linear), (label, nonlinear), 2.5).with_origin_lines()
+}
+
+/// `fig` with the linear model's curve (dashed) under the nonlinear one (solid, `width`
+/// wide), each with its legend label.
+fn against_linear(
+    fig: Figure,
+    (linear_label, linear): (String, Vec<(f64, f64)>),
+    (label, nonlinear): (String, Vec<(f64, f64)>),
+    width: f64,
+) -> Figure {
+    fig.with_line(
         linear_label,
         linear,
         LineStyle::dashed(Ink::Vermillion, 2.0),
     )
-    .with_line(label, nonlinear, LineStyle::solid(Ink::Blue, 2.5))
-    .with_origin_lines()
+    .with_line(label, nonlinear, LineStyle::solid(Ink::Blue, width))
+}
+
+/// `fig` with the linear and the nonlinear run (see [`against_linear`]).
+fn both_runs(
+    fig: Figure,
+    linear: Vec<(f64, f64)>,
+    nonlinear: Vec<(f64, f64)>,
+    width: f64,
+) -> Figure {
+    against_linear(
+        fig,
+        (t!("nonlinear-series-linear"), linear),
+        (t!("nonlinear-series-nonlinear"), nonlinear),
+        width,
+    )
 }
 
 /// Damper plus friction force against velocity, beside the linear model's mean damper.

@@ -252,25 +252,21 @@ pub(super) fn describe_spring(model: &NonlinearModel, reach: f64, max_travel: f6
     let at = max_travel.max(1e-6);
     let (reach, travel) = (si(reach, "m", 3), si(at, "m", 3));
     let (force, linear) = (si(model.elastic_force(at), "N", 3), si(cfg.k * at, "N", 3));
-    if cfg.stop_stiffness > 0.0 {
-        t!(
-            "nonlinear-describe-spring-stops",
-            reach = reach,
-            travel = travel,
-            force = force,
-            linear = linear,
-            rate = si(cfg.stop_stiffness, "N/m", 3),
-            gap = si(cfg.stop_gap, "m", 3)
-        )
+    let stops = if cfg.stop_stiffness > 0.0 {
+        "yes"
     } else {
-        t!(
-            "nonlinear-describe-spring",
-            reach = reach,
-            travel = travel,
-            force = force,
-            linear = linear
-        )
-    }
+        "no"
+    };
+    t!(
+        "nonlinear-describe-spring",
+        reach = reach,
+        travel = travel,
+        force = force,
+        linear = linear,
+        stops = stops,
+        rate = si(cfg.stop_stiffness, "N/m", 3),
+        gap = si(cfg.stop_gap, "m", 3)
+    )
 }
 
 /// The damper curve in words, over ±`vmax` (m/s); `c_mean` the linear model's rate.
@@ -280,23 +276,14 @@ pub(super) fn describe_damper(model: &NonlinearModel, vmax: f64, c_mean: f64) ->
     let rebound = si(model.dissipative_force(vmax), "N", 3);
     let compression = si(model.dissipative_force(-vmax), "N", 3);
     let linear = si(c_mean * vmax, "N", 3);
-    if cfg.friction > 0.0 {
-        t!(
-            "nonlinear-describe-damper-friction",
-            speed = speed,
-            rebound = rebound,
-            compression = compression,
-            linear = linear,
-            friction = si(cfg.friction, "N", 3),
-            holding = si(model.static_limit(), "N", 3)
-        )
-    } else {
-        t!(
-            "nonlinear-describe-damper",
-            speed = speed,
-            rebound = rebound,
-            compression = compression,
-            linear = linear
-        )
-    }
+    t!(
+        "nonlinear-describe-damper",
+        speed = speed,
+        rebound = rebound,
+        compression = compression,
+        linear = linear,
+        coulomb = if cfg.friction > 0.0 { "yes" } else { "no" },
+        friction = si(cfg.friction, "N", 3),
+        holding = si(model.static_limit(), "N", 3)
+    )
 }
