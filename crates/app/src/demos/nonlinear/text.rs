@@ -31,31 +31,18 @@ pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mo>+</mo><msub><mi>F</mi><mtext>stop</mtext></msub><mo>(</mo><mi>x</mi><mo>)</mo><mo>=</mo><mn>0</mn>\
 </mrow></math>";
 
-/// A preset: the base car with `changes` applied.
-fn preset(label: &'static str, changes: &[(&'static str, f64)]) -> Preset {
-    let mut values = vec![
-        ("m", 300.0),
-        ("k", 24_000.0),
-        ("k3", 0.0),
-        ("c_comp", 1_500.0),
-        ("c_reb", 1_500.0),
-        ("friction", 0.0),
-        ("stick_ratio", super::STICK_RATIO),
-        ("gap", 0.06),
-        ("k_stop", 0.0),
-        ("x0", 0.08),
-        ("v0", 0.0),
-    ];
-    for &(key, v) in changes {
-        if let Some(slot) = values.iter_mut().find(|(k, _)| *k == key) {
-            slot.1 = v;
+/// One preset per nonlinearity, and one with all of them off. Each sets every parameter:
+/// its `defaults` (the declared sliders') with a linear spring, then its changes.
+pub(super) fn presets(defaults: &[(&'static str, f64)]) -> Vec<Preset> {
+    let preset = |label, changes: &[(&'static str, f64)]| {
+        let mut values = defaults.to_vec();
+        for &(key, v) in [("k3", 0.0)].iter().chain(changes) {
+            if let Some(slot) = values.iter_mut().find(|(k, _)| *k == key) {
+                slot.1 = v;
+            }
         }
-    }
-    Preset { label, values }
-}
-
-/// One preset per nonlinearity, and one with all of them off.
-pub(super) fn presets() -> Vec<Preset> {
+        Preset { label, values }
+    };
     vec![
         preset("Linear (all off)", &[]),
         preset(
