@@ -8,7 +8,7 @@ use zeta_solver::machines::{
     DcServo, Machine, MassSpringDamper, MatchError, SeriesRlc, Storey, Target, TwoCapacityThermal,
     UTube,
 };
-use zeta_solver::{ModelError, SecondOrder};
+use zeta_solver::SecondOrder;
 
 // Slider ranges `(min, max, step)`, one per quantity, shared by both slots. The ranges of
 // the parameters that "match" tunes are also where the tuned values must land.
@@ -38,58 +38,65 @@ pub(super) const RTH: (f64, f64, f64) = (1e-3, 1e3, 1e-4);
 pub(super) const COLUMNS: f64 = 4.0;
 
 /// The coefficients of machine `kind` with slider values `v`.
-pub(super) fn system(kind: Kind, v: &Values) -> Result<SecondOrder, ModelError> {
-    Ok(match kind {
-        Kind::MassSpring => MassSpringDamper::new(v.m, v.c, v.k)?.system(),
-        Kind::Rlc => SeriesRlc::new(v.l, v.r, v.cap)?.system(),
-        Kind::UTube => UTube::new(v.len, v.bore, v.rho, v.mu)?.system(),
-        Kind::Servo => DcServo::new(v.j, v.kt, v.ra, v.kp, v.kd)?.system(),
-        Kind::Storey => Storey::new(v.mf, v.h, v.ei, COLUMNS, v.cf)?.system(),
-        Kind::Thermal => TwoCapacityThermal::new(v.c1, v.r1, v.c2, v.r2)?.system(),
-    })
+pub(super) fn system(kind: Kind, v: &Values) -> Result<SecondOrder, MatchError> {
+    solve(kind, v, None).map(|(sys, _)| sys)
 }
 
 /// The slider values of machine `kind` tuned by the solver to `target`: the two tuning
 /// parameters solved for, everything else kept.
 pub(super) fn tune(kind: Kind, v: &Values, target: Target) -> Result<Values, MatchError> {
+    solve(kind, v, Some(target)).map(|(_, tuned)| tuned)
+}
+
+/// Machine `kind` built by the solver from slider values `v` and, given a `target`, tuned
+/// to it: its coefficients, and `v` with the two tuning parameters as the machine has them.
+fn solve(
+    kind: Kind,
+    v: &Values,
+    target: Option<Target>,
+) -> Result<(SecondOrder, Values), MatchError> {
     let mut out = *v;
-    match kind {
+    let sys = match kind {
         Kind::MassSpring => {
-            let (_, c, k) = MassSpringDamper::new(v.m, v.c, v.k)?
-                .matched(target)?
-                .params();
-            (out.c, out.k) = (c, k);
+            let m = tuned_to(MassSpringDamper::new(v.m, v.c, v.k)?, target)?;
+            (_, out.c, out.k) = m.params();
+            m.system()
         }
         Kind::Rlc => {
-            let (_, r, cap) = SeriesRlc::new(v.l, v.r, v.cap)?.matched(target)?.params();
-            (out.r, out.cap) = (r, cap);
+            let m = tuned_to(SeriesRlc::new(v.l, v.r, v.cap)?, target)?;
+            (_, out.r, out.cap) = m.params();
+            m.system()
         }
         Kind::UTube => {
-            let (len, _, _, mu) = UTube::new(v.len, v.bore, v.rho, v.mu)?
-                .matched(target)?
-                .params();
-            (out.len, out.mu) = (len, mu);
+            let m = tuned_to(UTube::new(v.len, v.bore, v.rho, v.mu)?, target)?;
+            (out.len, _, _, out.mu) = m.params();
+            m.system()
         }
         Kind::Servo => {
-            let (_, _, _, kp, kd) = DcServo::new(v.j, v.kt, v.ra, v.kp, v.kd)?
-                .matched(target)?
-                .params();
-            (out.kp, out.kd) = (kp, kd);
+            let m = tuned_to(DcServo::new(v.j, v.kt, v.ra, v.kp, v.kd)?, target)?;
+            (_, _, _, out.kp, out.kd) = m.params();
+            m.system()
         }
         Kind::Storey => {
-            let (_, _, ei, _, cf) = Storey::new(v.mf, v.h, v.ei, COLUMNS, v.cf)?
-                .matched(target)?
-                .params();
-            (out.ei, out.cf) = (ei, cf);
+            let m = tuned_to(Storey::new(v.mf, v.h, v.ei, COLUMNS, v.cf)?, target)?;
+            (_, _, out.ei, _, out.cf) = m.params();
+            m.system()
         }
         Kind::Thermal => {
-            let (_, r1, _, r2) = TwoCapacityThermal::new(v.c1, v.r1, v.c2, v.r2)?
-                .matched(target)?
-                .params();
-            (out.r1, out.r2) = (r1, r2);
+            let m = tuned_to(TwoCapacityThermal::new(v.c1, v.r1, v.c2, v.r2)?, target)?;
+            (_, out.r1, _, out.r2) = m.params();
+            m.system()
         }
+    };
+    Ok((sys, out))
+}
+
+/// `m` tuned to `target`, or as it is without one.
+fn tuned_to<M: Machine>(m: M, target: Option<Target>) -> Result<M, MatchError> {
+    match target {
+        Some(t) => m.matched(t),
+        None => Ok(m),
     }
-    Ok(out)
 }
 
 /// One slider that "match" moves: URL key, symbol, unit, allowed range and tuned value.
