@@ -1,6 +1,7 @@
 //! Declaration tables as rows of data: a demo with many sliders, readouts or plots writes
 //! one row each (used by `flutter`, `nonlinear`, `quarter-car-2dof` and `universality`).
 
+use crate::figure::Figure;
 use crate::spec::PlotSpec;
 
 /// The sliders of the typed parameters `P`, one row each, in order:
@@ -56,9 +57,22 @@ pub(crate) use readouts;
 /// One plot: key, title (also the canvas's accessible name) and width / height.
 pub(crate) type Plot = (&'static str, &'static str, f64);
 
+/// One plot and the figure it shows, drawn from the results `R`.
+pub(crate) type Drawn<R> = (Plot, fn(&R) -> Figure);
+
 /// The plots of these rows, in order.
 pub(crate) fn plots(rows: &[Plot]) -> Vec<PlotSpec> {
     rows.iter()
         .map(|&(key, title, aspect)| PlotSpec { key, title, aspect })
         .collect()
+}
+
+/// The plots of these rows, in order.
+pub(crate) fn drawn_plots<R>(rows: &[Drawn<R>]) -> Vec<PlotSpec> {
+    plots(&rows.iter().map(|row| row.0).collect::<Vec<_>>())
+}
+
+/// The figures of these rows drawn from `r`, in the order of their plots.
+pub(crate) fn figures<R>(rows: &[Drawn<R>], r: &R) -> Vec<Figure> {
+    rows.iter().map(|(_, draw)| draw(r)).collect()
 }

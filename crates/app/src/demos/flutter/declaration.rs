@@ -2,7 +2,7 @@
 
 use super::{figures, text, Aero, Results, Section, P, SIMPLEST_SLOPE, U_MAX};
 use crate::declare::{Choice, Declaration, Param, ReadoutDef};
-use crate::demos::rows::{self, readouts, sliders};
+use crate::demos::rows::{self, readouts, sliders, Drawn};
 use crate::spec::Preset;
 use zeta_solver::flutter::scanlan::{SATURATION_DEG, TACOMA_INERTIA, TACOMA_WIDTH};
 use zeta_solver::flutter::{degrees, TACOMA_STRUCTURAL_DAMPING, TACOMA_TORSION_HZ};
@@ -13,7 +13,7 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         equation_mathml: text::EQUATION,
         params: params(),
         readouts: readouts(),
-        plots: rows::plots(&figures::PLOTS),
+        plots: rows::drawn_plots(&PLOTS),
         primary_plot: "response",
         presets: vec![
             preset(
@@ -144,3 +144,27 @@ fn readouts() -> Vec<ReadoutDef<Results>> {
             => r.amplitude_end();
     }
 }
+
+/// The plots, in order: key, title and width / height, and the figure each shows.
+pub(super) const PLOTS: [Drawn<Results>; 4] = [
+    (
+        (
+            "derivative",
+            "Flutter derivative A₂* and the flutter threshold",
+            1.6,
+        ),
+        figures::derivative,
+    ),
+    (
+        ("damping", "Effective damping against wind speed", 1.6),
+        figures::damping,
+    ),
+    (
+        ("locus", "Root locus as the wind rises", 1.25),
+        figures::locus,
+    ),
+    (
+        ("response", "Deck twist θ(t) over minutes", 2.2),
+        figures::response,
+    ),
+];

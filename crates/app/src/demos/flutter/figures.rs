@@ -2,24 +2,11 @@
 //! the twist over minutes.
 
 use super::{text, Aero, Results, Section, U_MAX};
-use crate::demos::rows::Plot;
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
 use crate::format::si;
 use crate::plot::{fit_range, thin, zip, Ink};
 use crate::t;
 use zeta_solver::flutter::{degrees, DeckSection};
-
-/// The plots, in order: key, title and width / height.
-pub(super) const PLOTS: [Plot; 4] = [
-    (
-        "derivative",
-        "Flutter derivative A₂* and the flutter threshold",
-        1.6,
-    ),
-    ("damping", "Effective damping against wind speed", 1.6),
-    ("locus", "Root locus as the wind rises", 1.25),
-    ("response", "Deck twist θ(t) over minutes", 2.2),
-];
 
 /// Most points drawn of the twist history.
 const TWIST_POINTS: usize = 4000;

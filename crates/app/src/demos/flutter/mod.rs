@@ -9,14 +9,15 @@
 //! cross-section twisting in the wind. Angles are in degrees throughout.
 //!
 //! This file holds the model step; `declaration.rs` declares the demo (parameters,
-//! readouts and presets as tables); `figures.rs` (with the plot table) and `schematic.rs`
-//! draw; `text.rs` holds the prose.
+//! readouts, plots and presets as tables); `figures.rs` and `schematic.rs` draw; `text.rs`
+//! holds the prose.
 
 mod declaration;
 mod figures;
 mod schematic;
 mod text;
 
+use super::rows;
 use super::Model;
 use crate::declare::{choice_enum, Declaration};
 use crate::figure::Figure;
@@ -171,12 +172,7 @@ impl Model for Flutter {
     }
 
     fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![
-            figures::derivative(r),
-            figures::damping(r),
-            figures::locus(r),
-            figures::response(r),
-        ]
+        rows::figures(&declaration::PLOTS, r)
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

@@ -1,9 +1,9 @@
-//! The nonlinear demo's declaration: parameters and readouts as tables, the plots of
-//! `figures.rs`, presets and the effects table of `text.rs`.
+//! The nonlinear demo's declaration: parameters, readouts and plots as tables; the presets
+//! and the effects table of `text.rs`.
 
 use super::{figures, text, Results, P, STICK_RATIO};
 use crate::declare::Declaration;
-use crate::demos::rows::{self, readouts, sliders};
+use crate::demos::rows::{self, readouts, sliders, Drawn};
 
 /// The demo's declaration.
 pub(super) fn declaration() -> Declaration<P, Results> {
@@ -49,10 +49,27 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             number "stick_position", "friction holds the mass at", "m", 3
                 => r.cmp.sticking.map(|st| st.x);
         },
-        plots: rows::plots(&figures::PLOTS),
+        plots: rows::drawn_plots(&PLOTS),
         presets: text::presets(&defaults),
         table: Some(text::table()),
         schematic: true,
         ..Declaration::new("nonlinear", "Beyond the linear model", text::SUMMARY)
     }
 }
+
+/// The plots, in order: key, title and width / height, and the figure each shows.
+pub(super) const PLOTS: [Drawn<Results>; 4] = [
+    (
+        ("response", "Nonlinear and linear response x(t)", 2.0),
+        figures::response,
+    ),
+    (("phase", "Phase plane (x, v)", 1.25), figures::phase),
+    (
+        ("spring", "Spring and bump-stop force", 2.0),
+        figures::spring,
+    ),
+    (
+        ("damper", "Damper and friction force", 1.25),
+        figures::damper,
+    ),
+];

@@ -2,7 +2,6 @@
 //! damper force laws, and the animated quarter car.
 
 use super::{text, Results, ESCAPE};
-use crate::demos::rows::Plot;
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
 use crate::format::si;
 use crate::plot::Ink;
@@ -14,14 +13,6 @@ use zeta_solver::nonlinear::NonlinearConfig;
 const STRIDE: usize = 4;
 /// Points of the force curves.
 const CURVE: usize = 241;
-
-/// The plots, in order: key, title and width / height.
-pub(super) const PLOTS: [Plot; 4] = [
-    ("response", "Nonlinear and linear response x(t)", 2.0),
-    ("phase", "Phase plane (x, v)", 1.25),
-    ("spring", "Spring and bump-stop force", 2.0),
-    ("damper", "Damper and friction force", 1.25),
-];
 
 /// Every [`STRIDE`]-th point of `pick(i)` for `i < n`, always including the last.
 fn strided(n: usize, pick: impl Fn(usize) -> (f64, f64)) -> Vec<(f64, f64)> {

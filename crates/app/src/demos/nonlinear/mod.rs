@@ -6,13 +6,14 @@
 //! solver switches between a kinetic force `F_c` while sliding and a static force
 //! `F_static = ratio·F_c` that holds the mass once it stops.
 //!
-//! This file holds the model step; `declaration.rs` declares the demo (parameters and
-//! readouts as tables); `figures.rs` (with the plot table) draws; `text.rs` holds the prose.
+//! This file holds the model step; `declaration.rs` declares the demo (parameters,
+//! readouts and plots as tables); `figures.rs` draws; `text.rs` holds the prose.
 
 mod declaration;
 mod figures;
 mod text;
 
+use super::rows;
 use super::Model;
 use crate::declare::Declaration;
 use crate::figure::{finite_extent, Figure};
@@ -134,12 +135,7 @@ impl Model for Nonlinear {
     }
 
     fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![
-            figures::response(r),
-            figures::phase(r),
-            figures::spring(r),
-            figures::damper(r),
-        ]
+        rows::figures(&declaration::PLOTS, r)
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

@@ -1,8 +1,9 @@
-//! The two-DOF quarter car's declaration: parameters and plots as tables.
+//! The two-DOF quarter car's declaration: parameters and plots as tables (the readouts are
+//! the table of `readouts.rs`).
 
-use super::{figures, readouts, text, Results, P};
+use super::{readouts, text, Results, P};
 use crate::declare::{Declaration, Param};
-use crate::demos::rows::{self, sliders};
+use crate::demos::rows::{self, sliders, Plot};
 
 /// The demo's declaration.
 pub(super) fn declaration() -> Declaration<P, Results> {
@@ -10,7 +11,7 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         equation_mathml: text::EQUATION,
         params: params(),
         readouts: readouts::table(),
-        plots: rows::plots(&figures::PLOTS),
+        plots: rows::plots(&PLOTS),
         presets: text::presets(),
         schematic: true,
         ..Declaration::new(
@@ -51,3 +52,11 @@ fn params() -> Vec<Param<P>> {
     });
     params
 }
+
+/// The plots, in order: key, title and width / height.
+pub(super) const PLOTS: [Plot; 4] = [
+    ("motion", "Body, wheel and road", 2.0),
+    ("accel", "Body acceleration", 1.25),
+    ("frf", "Frequency response per unit road height", 2.0),
+    ("tyre", "Tyre deflection", 1.25),
+];

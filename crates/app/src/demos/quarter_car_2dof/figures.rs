@@ -3,21 +3,12 @@
 
 use super::run::{Run, FRF_RANGE};
 use super::{text, RoadKind};
-use crate::demos::rows::Plot;
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
 use crate::plot::Ink;
 use crate::t;
 use std::f64::consts::TAU;
 use zeta_solver::two_dof::{TwoDof, G};
 use zeta_solver::two_dof_exact::ExactMetrics;
-
-/// The plots, in order: key, title and width / height.
-pub(super) const PLOTS: [Plot; 4] = [
-    ("motion", "Body, wheel and road", 2.0),
-    ("accel", "Body acceleration", 1.25),
-    ("frf", "Frequency response per unit road height", 2.0),
-    ("tyre", "Tyre deflection", 1.25),
-];
 
 /// Every `stride`-th state is plotted once a run exceeds this many points.
 const PLOT_POINTS: usize = 1000;

@@ -5,10 +5,10 @@
 //! body acceleration; tyre deflection with the time off the road; and the frequency
 //! responses with the two modes, body bounce and wheel hop.
 //!
-//! This file holds the model step; `declaration.rs` declares the demo (parameters as a
-//! table) and `readouts.rs` is its readout table; `run.rs` keeps the road and the exact
-//! run between updates; `figures.rs` (with the plot table) and `schematic.rs` draw;
-//! `text.rs` holds the prose.
+//! This file holds the model step; `declaration.rs` declares the demo (parameters and
+//! plots as tables) and `readouts.rs` is its readout table; `run.rs` keeps the road and
+//! the exact run between updates; `figures.rs` and `schematic.rs` draw; `text.rs` holds
+//! the prose.
 
 mod declaration;
 mod figures;

@@ -4,7 +4,7 @@
 use super::params::{self, pick, Kind, P};
 use super::{figures, machine, text, Results};
 use crate::declare::{Choice, Declaration, Param, ReadoutDef};
-use crate::demos::rows::{self, readouts};
+use crate::demos::rows::{self, readouts, Drawn};
 use crate::spec::Preset;
 
 /// The demo's declaration.
@@ -28,7 +28,7 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         equation_mathml: text::EQUATION,
         params,
         readouts,
-        plots: rows::plots(&figures::PLOTS),
+        plots: rows::drawn_plots(&PLOTS),
         primary_plot: "normalised",
         presets: presets(),
         table: Some(text::table()),
@@ -102,3 +102,15 @@ fn presets() -> Vec<Preset> {
         },
     ]
 }
+
+/// The plots, in order: key, title and width / height, and the figure each shows.
+pub(super) const PLOTS: [Drawn<Results>; 2] = [
+    (
+        ("normalised", "Normalised responses y/y₀ against ωₙt", 1.9),
+        figures::normalised,
+    ),
+    (
+        ("realtime", "Responses in real time", 1.9),
+        figures::realtime,
+    ),
+];

@@ -3,7 +3,6 @@
 
 use super::params::Kind;
 use super::{drawings, machine, text, One, Results};
-use crate::demos::rows::Plot;
 use crate::figure::{Axis, Figure, LineStyle};
 use crate::plot::{curve, fit_range, Ink};
 use crate::schematic::{mass_spring_damper, rlc_loop, MassLabels};
@@ -14,12 +13,6 @@ use zeta_solver::{FreeResponse, SecondOrder};
 const SAMPLES: usize = 600;
 /// At most this many samples of a fast machine on A's time axis.
 const MAX_SAMPLES: usize = 4000;
-
-/// The plots, in order: key, title and width / height.
-pub(super) const PLOTS: [Plot; 2] = [
-    ("normalised", "Normalised responses y/y₀ against ωₙt", 1.9),
-    ("realtime", "Responses in real time", 1.9),
-];
 
 /// The free response of `one` released from rest at `y₀ = 1`.
 fn released(one: &One) -> FreeResponse {

@@ -7,10 +7,10 @@
 //! "Match" tunes B by the solver's inverse so that its ωₙ and ζ equal A's; the tuned
 //! sliders are published as derived parameters, so the page moves them.
 //!
-//! Files: this one holds the model step; `declaration.rs` declares the demo (readouts and
-//! presets), `params.rs` is the parameter table, `machine.rs` the solver glue; `figures.rs`
-//! (with the plot table) and `drawings.rs` (schematics of the new machines) draw; `text.rs`
-//! holds the prose.
+//! Files: this one holds the model step; `declaration.rs` declares the demo (readouts,
+//! plots and presets), `params.rs` is the parameter table, `machine.rs` the solver glue;
+//! `figures.rs` and `drawings.rs` (schematics of the new machines) draw; `text.rs` holds
+//! the prose.
 
 mod declaration;
 mod drawings;
@@ -19,6 +19,7 @@ mod machine;
 mod params;
 mod text;
 
+use super::rows;
 use super::Model;
 use crate::declare::Declaration;
 use crate::figure::Figure;
@@ -127,7 +128,7 @@ impl Model for Universality {
     }
 
     fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![figures::normalised(r), figures::realtime(r)]
+        rows::figures(&declaration::PLOTS, r)
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {
