@@ -1,8 +1,9 @@
 //! Declaration tables as rows of data: a demo with many sliders, readouts or plots writes
 //! one row each (used by `flutter`, `nonlinear`, `quarter-car-2dof` and `universality`).
 
+use crate::declare::Param;
 use crate::figure::Figure;
-use crate::spec::PlotSpec;
+use crate::spec::{PlotSpec, Preset};
 
 /// The sliders of the typed parameters `P`, one row each, in order:
 ///
@@ -75,4 +76,28 @@ pub(crate) fn drawn_plots<R>(rows: &[Drawn<R>]) -> Vec<PlotSpec> {
 /// The figures of these rows drawn from `r`, in the order of their plots.
 pub(crate) fn figures<R>(rows: &[Drawn<R>], r: &R) -> Vec<Figure> {
     rows.iter().map(|(_, draw)| draw(r)).collect()
+}
+
+/// Every parameter's key and default value, in order: what a preset starts from.
+pub(crate) fn defaults<P>(params: &[Param<P>]) -> Vec<(&'static str, f64)> {
+    params
+        .iter()
+        .map(|p| (p.spec().key, p.spec().default))
+        .collect()
+}
+
+/// A preset that sets every parameter of `base`, each to its value in `changes` if it has
+/// one there (keys `base` lacks are ignored), else to its value in `base`.
+pub(crate) fn preset(
+    label: &'static str,
+    base: &[(&'static str, f64)],
+    changes: &[(&'static str, f64)],
+) -> Preset {
+    let mut values = base.to_vec();
+    for &(key, v) in changes {
+        if let Some(slot) = values.iter_mut().find(|(k, _)| *k == key) {
+            slot.1 = v;
+        }
+    }
+    Preset { label, values }
 }

@@ -3,15 +3,25 @@
 use super::{figures, text, Aero, Results, Section, P, SIMPLEST_SLOPE, U_MAX};
 use crate::declare::{Choice, Declaration, Param, ReadoutDef};
 use crate::demos::rows::{self, readouts, sliders, Drawn};
-use crate::spec::Preset;
 use zeta_solver::flutter::scanlan::{SATURATION_DEG, TACOMA_INERTIA, TACOMA_WIDTH};
 use zeta_solver::flutter::{degrees, TACOMA_STRUCTURAL_DAMPING, TACOMA_TORSION_HZ};
 
 /// The demo's declaration.
 pub(super) fn declaration() -> Declaration<P, Results> {
+    let params = params();
+    let defaults = rows::defaults(&params);
+    // The Tacoma deck as declared, at wind speed `u` with this model and section.
+    let preset = |label, u, aero: Aero, section: Section| {
+        let changes = [
+            ("U", u),
+            ("model", aero.index() as f64),
+            ("section", section.index() as f64),
+        ];
+        rows::preset(label, &defaults, &changes)
+    };
     Declaration {
         equation_mathml: text::EQUATION,
-        params: params(),
+        params,
         readouts: readouts(),
         plots: rows::drawn_plots(&PLOTS),
         primary_plot: "response",
@@ -60,25 +70,6 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             "Flutter: the Tacoma Narrows bridge",
             text::SUMMARY,
         )
-    }
-}
-
-/// A preset: the Tacoma deck at wind speed `u` with this model and section.
-fn preset(label: &'static str, u: f64, aero: Aero, section: Section) -> Preset {
-    Preset {
-        label,
-        values: vec![
-            ("U", u),
-            ("model", aero.index() as f64),
-            ("section", section.index() as f64),
-            ("B", TACOMA_WIDTH),
-            ("I", TACOMA_INERTIA),
-            ("f0", TACOMA_TORSION_HZ),
-            ("zeta_s", TACOMA_STRUCTURAL_DAMPING),
-            ("theta0", 2.0),
-            ("theta_s", SATURATION_DEG),
-            ("slope", SIMPLEST_SLOPE),
-        ],
     }
 }
 

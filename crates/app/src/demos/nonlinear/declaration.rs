@@ -27,10 +27,7 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         linear "x0", "initial extension", "x₀", "m", (-0.15, 0.15, 0.001), 0.08 => x0;
         linear "v0", "initial velocity", "v₀", "m/s", (-2.0, 2.0, 0.01), 0.0 => v0;
     };
-    let defaults: Vec<_> = params
-        .iter()
-        .map(|p| (p.spec().key, p.spec().default))
-        .collect();
+    let defaults = rows::defaults(&params);
     Declaration {
         equation_mathml: text::EQUATION,
         params,

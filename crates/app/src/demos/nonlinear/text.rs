@@ -2,6 +2,7 @@
 //! the figures' text alternatives.
 
 use super::{Results, ESCAPE};
+use crate::demos::rows;
 use crate::format::si;
 use crate::spec::{Preset, Table};
 use crate::t;
@@ -34,15 +35,8 @@ pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 /// One preset per nonlinearity, and one with all of them off. Each sets every parameter:
 /// its `defaults` (the declared sliders') with a linear spring, then its changes.
 pub(super) fn presets(defaults: &[(&'static str, f64)]) -> Vec<Preset> {
-    let preset = |label, changes: &[(&'static str, f64)]| {
-        let mut values = defaults.to_vec();
-        for &(key, v) in [("k3", 0.0)].iter().chain(changes) {
-            if let Some(slot) = values.iter_mut().find(|(k, _)| *k == key) {
-                slot.1 = v;
-            }
-        }
-        Preset { label, values }
-    };
+    let linear = rows::preset("", defaults, &[("k3", 0.0)]).values;
+    let preset = |label, changes: &[(&'static str, f64)]| rows::preset(label, &linear, changes);
     vec![
         preset("Linear (all off)", &[]),
         preset(

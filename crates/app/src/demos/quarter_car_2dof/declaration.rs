@@ -7,12 +7,21 @@ use crate::demos::rows::{self, sliders, Plot};
 
 /// The demo's declaration.
 pub(super) fn declaration() -> Declaration<P, Results> {
+    let d = P::default();
+    let car = sliders! { P;
+        linear "ms", "body (sprung) mass", "m_s", "kg", (100.0, 800.0, 1.0), d.ms => ms;
+        linear "mu", "wheel (unsprung) mass", "m_u", "kg", (10.0, 150.0, 1.0), d.mu => mu;
+        linear "ks", "suspension stiffness", "k_s", "N/m", (5_000.0, 80_000.0, 100.0), d.ks => ks;
+        linear "kt", "tyre stiffness", "k_t", "N/m", (50_000.0, 500_000.0, 1_000.0), d.kt => kt;
+        linear "cs", "suspension damping", "c_s", "N·s/m", (0.0, 8_000.0, 10.0), d.cs => cs;
+    };
+    let presets = text::presets(&rows::defaults(&car));
     Declaration {
         equation_mathml: text::EQUATION,
-        params: params(),
+        params: with_road(car),
         readouts: readouts::table(),
         plots: rows::plots(&PLOTS),
-        presets: text::presets(),
+        presets,
         schematic: true,
         ..Declaration::new(
             "quarter-car-2dof",
@@ -22,16 +31,10 @@ pub(super) fn declaration() -> Declaration<P, Results> {
     }
 }
 
-/// The parameter table: the car, then the road.
-fn params() -> Vec<Param<P>> {
+/// The parameter table: the `car`'s sliders, then the road's.
+fn with_road(car: Vec<Param<P>>) -> Vec<Param<P>> {
     let d = P::default();
-    let mut params = sliders! { P;
-        linear "ms", "body (sprung) mass", "m_s", "kg", (100.0, 800.0, 1.0), d.ms => ms;
-        linear "mu", "wheel (unsprung) mass", "m_u", "kg", (10.0, 150.0, 1.0), d.mu => mu;
-        linear "ks", "suspension stiffness", "k_s", "N/m", (5_000.0, 80_000.0, 100.0), d.ks => ks;
-        linear "kt", "tyre stiffness", "k_t", "N/m", (50_000.0, 500_000.0, 1_000.0), d.kt => kt;
-        linear "cs", "suspension damping", "c_s", "N·s/m", (0.0, 8_000.0, 10.0), d.cs => cs;
-    };
+    let mut params = car;
     params.push(Param::choice("road", "road input", d.road, |p, v| {
         p.road = v
     }));
@@ -54,7 +57,7 @@ fn params() -> Vec<Param<P>> {
 }
 
 /// The plots, in order: key, title and width / height.
-pub(super) const PLOTS: [Plot; 4] = [
+const PLOTS: [Plot; 4] = [
     ("motion", "Body, wheel and road", 2.0),
     ("accel", "Body acceleration", 1.25),
     ("frf", "Frequency response per unit road height", 2.0),
