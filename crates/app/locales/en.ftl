@@ -628,9 +628,11 @@ nonlinear-series-linear-spring = linear k·x
 nonlinear-series-spring = k·x + k₃·x³ + stops
 nonlinear-series-linear-damper = linear c̄·v
 nonlinear-series-damper = damper + friction
-nonlinear-schematic = Quarter car at t = { $time }: suspension extended { $extension }.
-nonlinear-schematic-pressing = Quarter car at t = { $time }: suspension extended { $extension }, pressing on a bump stop.
-nonlinear-schematic-clear = Quarter car at t = { $time }: suspension extended { $extension }, clear of the bump stops.
+nonlinear-schematic = Quarter car at t = { $time }: suspension extended { $extension }{ $stops ->
+        [pressing] , pressing on a bump stop.
+        [clear] , clear of the bump stops.
+       *[none] .
+    }
 
 ### uncertainty
 

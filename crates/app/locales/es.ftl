@@ -623,9 +623,11 @@ nonlinear-series-linear-spring = k·x lineal
 nonlinear-series-spring = k·x + k₃·x³ + topes
 nonlinear-series-linear-damper = c̄·v lineal
 nonlinear-series-damper = amortiguador + fricción
-nonlinear-schematic = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }.
-nonlinear-schematic-pressing = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }, apoyada en un tope.
-nonlinear-schematic-clear = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }, sin tocar los topes.
+nonlinear-schematic = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }{ $stops ->
+        [pressing] , apoyada en un tope.
+        [clear] , sin tocar los topes.
+       *[none] .
+    }
 
 ### uncertainty
 

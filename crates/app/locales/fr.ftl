@@ -1024,9 +1024,11 @@ nonlinear-series-linear-spring = k·x linéaire
 nonlinear-series-spring = k·x + k₃·x³ + butées
 nonlinear-series-linear-damper = c̄·v linéaire
 nonlinear-series-damper = amortisseur + frottement
-nonlinear-schematic = Quart de véhicule à t = { $time } : suspension détendue de { $extension }.
-nonlinear-schematic-pressing = Quart de véhicule à t = { $time } : suspension détendue de { $extension }, en appui sur une butée.
-nonlinear-schematic-clear = Quart de véhicule à t = { $time } : suspension détendue de { $extension }, hors contact avec les butées.
+nonlinear-schematic = Quart de véhicule à t = { $time } : suspension détendue de { $extension }{ $stops ->
+        [pressing] , en appui sur une butée.
+        [clear] , hors contact avec les butées.
+       *[none] .
+    }
 nonlinear-title = Au-delà du modèle linéaire
 nonlinear-summary = Une suspension réelle n'est linéaire que pour de petits mouvements. Ici, le quart de véhicule reçoit un ressort cubique (k₃ > 0 raidissant, k₃ < 0 assouplissant), un amortisseur plus ferme en détente (x′ > 0) qu'en compression, un frottement de Coulomb dans les articulations et des butées en caoutchouc au-delà de ±gap. Le frottement alterne adhérence et glissement : tant que la masse glisse, il freine avec la force F_c ; une fois qu'elle s'arrête, le frottement statique la retient jusqu'à F_static, un multiple fixé de F_c, et elle ne repart que si le ressort tire plus fort. Le mouvement est intégré par RK4, chaque arrêt localisé à l'intérieur de son pas, et tracé face au modèle linéaire m·x″ + c̄·x′ + k·x = 0 (c̄ le coefficient moyen de l'amortisseur) depuis le même départ. Observez où la prédiction échoue : la période dépend de l'amplitude (un ressort raidissant la raccourcit, un ressort assouplissant l'allonge), le frottement fait décroître l'amplitude en ligne droite puis retient définitivement la masse hors du centre (adhérence-glissement), une butée transforme une oscillation douce en choc, et un amortisseur asymétrique décale la position moyenne. Les valeurs par défaut sont un coin de voiture plausible : 300 kg, 24 kN/m (1,4 Hz), un amortisseur de 1 500 N·s/m (ζ ≈ 0,28) et un ressort légèrement progressif. x est l'extension de la suspension depuis l'équilibre statique (positive = caisse vers le haut).
 nonlinear-param-m = masse suspendue

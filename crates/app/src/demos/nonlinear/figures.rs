@@ -211,21 +211,18 @@ pub(super) fn schematic(cfg: &NonlinearConfig, x: f64, reach: f64, t: f64) -> Fi
         damper: "c_c/c_r",
         base: "",
     };
-    let (time, extension) = (si(t, "s", 3), si(x, "m", 3));
-    let description = if cfg.stop_stiffness <= 0.0 {
-        t!("nonlinear-schematic", time = time, extension = extension)
+    let stops = if cfg.stop_stiffness <= 0.0 {
+        "none"
     } else if x.abs() > cfg.stop_gap {
-        t!(
-            "nonlinear-schematic-pressing",
-            time = time,
-            extension = extension
-        )
+        "pressing"
     } else {
-        t!(
-            "nonlinear-schematic-clear",
-            time = time,
-            extension = extension
-        )
+        "clear"
     };
+    let description = t!(
+        "nonlinear-schematic",
+        time = si(t, "s", 3),
+        extension = si(x, "m", 3),
+        stops = stops
+    );
     mass_spring_damper(x / reach, 0.0, &labels, description)
 }
