@@ -119,33 +119,33 @@ pub(super) fn spring(r: &Results) -> Figure {
         reach = reach.max(1.3 * cfg.stop_gap);
     }
     let reach = reach.min(ESCAPE) * 1.15;
-    let nl = symmetric(reach, |x| model.elastic_force(x));
-    let lin = symmetric(reach, |x| cfg.k * x);
-    let extent = finite_extent(nl.iter().chain(&lin).map(|p| p.1)).unwrap_or((-1.0, 1.0));
     force_plot(
         t!("nonlinear-plot-spring"),
-        Axis::linear(t!("axis-extension"), "m", (-reach, reach)),
-        extent,
-        (t!("nonlinear-series-linear-spring"), lin),
-        (t!("nonlinear-series-spring"), nl),
+        (t!("axis-extension"), "m", reach),
+        (t!("nonlinear-series-linear-spring"), &|x| cfg.k * x),
+        (t!("nonlinear-series-spring"), &|x| model.elastic_force(x)),
     )
     .described(text::describe_spring(model, reach, max_travel))
 }
 
-/// A force against `x`: the linear model's line (dashed) under the nonlinear one.
+/// One force against `x` over `±reach` (the x axis's label and unit given): the linear
+/// model's force (dashed) under the nonlinear one, each with its legend label.
 fn force_plot(
     title: String,
-    x: Axis,
-    extent: (f64, f64),
-    (linear_label, linear): (String, Vec<(f64, f64)>),
-    (label, nonlinear): (String, Vec<(f64, f64)>),
+    (x_label, x_unit, reach): (String, &'static str, f64),
+    (linear_label, linear): (String, &dyn Fn(f64) -> f64),
+    (label, nonlinear): (String, &dyn Fn(f64) -> f64),
 ) -> Figure {
+    let nl = symmetric(reach, nonlinear);
+    let lin = symmetric(reach, linear);
+    let extent =
+        finite_extent(nl.iter().chain(&lin).map(|p| p.1).chain([0.0])).unwrap_or((-1.0, 1.0));
     let plot = Figure::plot(
         title,
-        x,
+        Axis::linear(x_label, x_unit, (-reach, reach)),
         Axis::linear(t!("axis-force"), "N", with_legend_room(extent)),
     );
-    against_linear(plot, (linear_label, linear), (label, nonlinear), 2.5).with_origin_lines()
+    against_linear(plot, (linear_label, lin), (label, nl), 2.5).with_origin_lines()
 }
 
 /// `fig` with the linear model's curve (dashed) under the nonlinear one (solid, `width`
@@ -189,16 +189,13 @@ pub(super) fn damper(r: &Results) -> Figure {
         .clamp(0.05, 10.0)
         * 1.15;
     let c_mean = 0.5 * (cfg.c_compression + cfg.c_rebound);
-    let nl = symmetric(vmax, |v| model.dissipative_force(v));
-    let lin = symmetric(vmax, |v| c_mean * v);
-    let extent =
-        finite_extent(nl.iter().chain(&lin).map(|p| p.1).chain([0.0])).unwrap_or((-1.0, 1.0));
     force_plot(
         t!("nonlinear-plot-damper"),
-        Axis::linear(t!("nonlinear-axis-velocity-rebound"), "m/s", (-vmax, vmax)),
-        extent,
-        (t!("nonlinear-series-linear-damper"), lin),
-        (t!("nonlinear-series-damper"), nl),
+        (t!("nonlinear-axis-velocity-rebound"), "m/s", vmax),
+        (t!("nonlinear-series-linear-damper"), &|v| c_mean * v),
+        (t!("nonlinear-series-damper"), &|v| {
+            model.dissipative_force(v)
+        }),
     )
     .described(text::describe_damper(model, vmax, c_mean))
 }
