@@ -49,7 +49,7 @@ impl Results {
 
 /// The thumbnail of exhibit `id`: its demo's plot, or the demo's primary plot.
 fn thumbnail(e: &tour::Exhibit, runs: &mut verdict::Runs) -> Figure {
-    let drawn = crate::demos::create(e.demo).and_then(|d| {
+    let drawn = crate::demos::create(e.at.demo).and_then(|d| {
         let spec = d.spec();
         let key = if e.plot.is_empty() {
             spec.primary()
@@ -57,7 +57,7 @@ fn thumbnail(e: &tour::Exhibit, runs: &mut verdict::Runs) -> Figure {
             e.plot
         };
         let i = spec.plots.iter().position(|p| p.key == key)?;
-        runs.get(e.demo, e.query)?.figures.get(i).cloned()
+        runs.get(e.at.demo, e.at.query)?.figures.get(i).cloned()
     });
     match drawn {
         Some(fig) => fig,
