@@ -1,5 +1,6 @@
 //! Declaration tables as rows of data: a demo with many sliders, readouts or plots writes
-//! one row each (used by `flutter`, `nonlinear`, `quarter-car-2dof` and `universality`).
+//! one row each (used by `flutter`, `nonlinear`, `paper`, `quarter-car-2dof` and
+//! `universality`).
 
 use crate::declare::Param;
 use crate::figure::Figure;
@@ -100,4 +101,65 @@ pub(crate) fn preset(
         }
     }
     Preset { label, values }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[derive(Debug, Default, PartialEq)]
+    struct Inner {
+        b: f64,
+    }
+
+    #[derive(Debug, Default, PartialEq)]
+    struct P {
+        a: f64,
+        inner: Inner,
+    }
+
+    struct R {
+        a: f64,
+    }
+
+    #[test]
+    fn a_slider_row_declares_its_slider_and_fills_its_field() {
+        let params = sliders! { P;
+            linear "a", "first", "a", "m", (0.0, 2.0, 0.1), 1.0 => a;
+        };
+        let inner = sliders! { P, |p| p.inner;
+            log "b", "second", "b", "s", (0.1, 10.0, 0.1), 2.0 => b;
+        };
+        let mut p = P::default();
+        params[0].apply(&mut p, 1.5);
+        inner[0].apply(&mut p, 3.0);
+        assert_eq!(p.a, 1.5);
+        assert_eq!(p.inner.b, 3.0);
+        let spec = inner[0].spec();
+        assert_eq!(
+            (spec.key, spec.label, spec.symbol, spec.unit),
+            ("b", "second", "b", "s")
+        );
+        assert_eq!((spec.min, spec.max, spec.default), (0.1, 10.0, 2.0));
+        assert_eq!(spec.scale, crate::spec::Scale::Log);
+        assert_eq!(defaults(&params), vec![("a", 1.0)]);
+    }
+
+    #[test]
+    fn a_readout_row_reads_its_getter() {
+        let rows = readouts! { R, |r|;
+            number "a", "first", "m", 3 => Some(r.a);
+            text "t", "words" => format!("{}", r.a);
+        };
+        let read: Vec<_> = rows.iter().map(|row| row.read(&R { a: 2.0 })).collect();
+        assert_eq!(read[0].key, "a");
+        assert_eq!(read[1].text, "2");
+    }
+
+    #[test]
+    fn a_preset_changes_only_the_keys_of_its_base() {
+        let base = [("a", 1.0), ("b", 2.0)];
+        let p = preset("p", &base, &[("b", 5.0), ("c", 9.0)]);
+        assert_eq!(p.values, vec![("a", 1.0), ("b", 5.0)]);
+    }
 }
