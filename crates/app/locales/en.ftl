@@ -616,10 +616,14 @@ nonlinear-sticks-at = friction holds the mass at { $position } from { $time }
 nonlinear-escapes = the nonlinear run leaves the plot (|x| > { $limit }) at { $time }
 nonlinear-describe-response = { $effect }: both start together; { $clauses }.
 nonlinear-describe-phase = Phase plane: both trajectories start at x = { $x0 }, v = { $v0 }. The linear one spirals in towards ({ $x_linear }, { $v_linear }); the nonlinear one ends at x = { $x_end }, v = { $v_end }, its largest speed { $speed } against the linear { $speed_linear }.
-nonlinear-describe-spring = Restoring force against extension over ±{ $reach }: the linear spring is the straight line k·x; at the largest travel { $travel } the nonlinear force is { $force } against the linear { $linear }.
-nonlinear-describe-spring-stops = Restoring force against extension over ±{ $reach }: the linear spring is the straight line k·x; at the largest travel { $travel } the nonlinear force is { $force } against the linear { $linear }, the bump stops adding { $rate } beyond ±{ $gap }.
-nonlinear-describe-damper = Damper plus friction force against velocity over ±{ $speed }: at +{ $speed } (rebound) it is { $rebound }, at −{ $speed } (compression) { $compression }; the linear model's mean damper gives ±{ $linear }.
-nonlinear-describe-damper-friction = Damper plus friction force against velocity over ±{ $speed }: at +{ $speed } (rebound) it is { $rebound }, at −{ $speed } (compression) { $compression }; the linear model's mean damper gives ±{ $linear }; sliding friction adds a jump of ±{ $friction } at v = 0, and at rest static friction holds up to ±{ $holding }.
+nonlinear-describe-spring = Restoring force against extension over ±{ $reach }: the linear spring is the straight line k·x; at the largest travel { $travel } the nonlinear force is { $force } against the linear { $linear }{ $stops ->
+        [yes] , the bump stops adding { $rate } beyond ±{ $gap }.
+       *[no] .
+    }
+nonlinear-describe-damper = Damper plus friction force against velocity over ±{ $speed }: at +{ $speed } (rebound) it is { $rebound }, at −{ $speed } (compression) { $compression }; the linear model's mean damper gives ±{ $linear }{ $coulomb ->
+        [yes] ; sliding friction adds a jump of ±{ $friction } at v = 0, and at rest static friction holds up to ±{ $holding }.
+       *[no] .
+    }
 nonlinear-axis-velocity-rebound = velocity v (+ rebound)
 nonlinear-series-stops = bump stops ±{ $gap }
 nonlinear-series-linear = linear model
@@ -630,9 +634,11 @@ nonlinear-series-linear-spring = linear k·x
 nonlinear-series-spring = k·x + k₃·x³ + stops
 nonlinear-series-linear-damper = linear c̄·v
 nonlinear-series-damper = damper + friction
-nonlinear-schematic = Quarter car at t = { $time }: suspension extended { $extension }.
-nonlinear-schematic-pressing = Quarter car at t = { $time }: suspension extended { $extension }, pressing on a bump stop.
-nonlinear-schematic-clear = Quarter car at t = { $time }: suspension extended { $extension }, clear of the bump stops.
+nonlinear-schematic = Quarter car at t = { $time }: suspension extended { $extension }{ $stops ->
+        [pressing] , pressing on a bump stop.
+        [clear] , clear of the bump stops.
+       *[none] .
+    }
 
 ### uncertainty
 

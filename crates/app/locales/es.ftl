@@ -611,10 +611,14 @@ nonlinear-sticks-at = la fricción retiene la masa en { $position } desde { $tim
 nonlinear-escapes = la simulación no lineal sale de la gráfica (|x| > { $limit }) en { $time }
 nonlinear-describe-response = { $effect }: ambas empiezan juntas; { $clauses }.
 nonlinear-describe-phase = Plano de fase: ambas trayectorias empiezan en x = { $x0 }, v = { $v0 }. La lineal describe una espiral hacia ({ $x_linear }, { $v_linear }); la no lineal termina en x = { $x_end }, v = { $v_end }, con velocidad máxima { $speed } frente a { $speed_linear } la lineal.
-nonlinear-describe-spring = Fuerza restauradora frente a la extensión en ±{ $reach }: el resorte lineal es la recta k·x; en el recorrido máximo, { $travel }, la fuerza no lineal es { $force } frente a { $linear } la lineal.
-nonlinear-describe-spring-stops = Fuerza restauradora frente a la extensión en ±{ $reach }: el resorte lineal es la recta k·x; en el recorrido máximo, { $travel }, la fuerza no lineal es { $force } frente a { $linear } la lineal, con los topes añadiendo { $rate } más allá de ±{ $gap }.
-nonlinear-describe-damper = Fuerza de amortiguador más fricción frente a la velocidad en ±{ $speed }: a +{ $speed } (rebote) vale { $rebound }, a −{ $speed } (compresión) { $compression }; el amortiguador medio del modelo lineal da ±{ $linear }.
-nonlinear-describe-damper-friction = Fuerza de amortiguador más fricción frente a la velocidad en ±{ $speed }: a +{ $speed } (rebote) vale { $rebound }, a −{ $speed } (compresión) { $compression }; el amortiguador medio del modelo lineal da ±{ $linear }; la fricción de deslizamiento añade un salto de ±{ $friction } en v = 0, y en reposo la fricción estática sostiene hasta ±{ $holding }.
+nonlinear-describe-spring = Fuerza restauradora frente a la extensión en ±{ $reach }: el resorte lineal es la recta k·x; en el recorrido máximo, { $travel }, la fuerza no lineal es { $force } frente a { $linear } la lineal{ $stops ->
+        [yes] , con los topes añadiendo { $rate } más allá de ±{ $gap }.
+       *[no] .
+    }
+nonlinear-describe-damper = Fuerza de amortiguador más fricción frente a la velocidad en ±{ $speed }: a +{ $speed } (rebote) vale { $rebound }, a −{ $speed } (compresión) { $compression }; el amortiguador medio del modelo lineal da ±{ $linear }{ $coulomb ->
+        [yes] ; la fricción de deslizamiento añade un salto de ±{ $friction } en v = 0, y en reposo la fricción estática sostiene hasta ±{ $holding }.
+       *[no] .
+    }
 nonlinear-axis-velocity-rebound = velocidad v (+ rebote)
 nonlinear-series-stops = topes ±{ $gap }
 nonlinear-series-linear = modelo lineal
@@ -625,9 +629,11 @@ nonlinear-series-linear-spring = k·x lineal
 nonlinear-series-spring = k·x + k₃·x³ + topes
 nonlinear-series-linear-damper = c̄·v lineal
 nonlinear-series-damper = amortiguador + fricción
-nonlinear-schematic = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }.
-nonlinear-schematic-pressing = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }, apoyada en un tope.
-nonlinear-schematic-clear = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }, sin tocar los topes.
+nonlinear-schematic = Cuarto de vehículo en t = { $time }: suspensión extendida { $extension }{ $stops ->
+        [pressing] , apoyada en un tope.
+        [clear] , sin tocar los topes.
+       *[none] .
+    }
 
 ### uncertainty
 

@@ -1010,10 +1010,14 @@ nonlinear-sticks-at = le frottement retient la masse à { $position } à partir 
 nonlinear-escapes = le calcul non linéaire sort du graphique (|x| > { $limit }) à { $time }
 nonlinear-describe-response = { $effect } : les deux partent ensemble ; { $clauses }.
 nonlinear-describe-phase = Plan de phase : les deux trajectoires partent de x = { $x0 }, v = { $v0 }. La linéaire s'enroule en spirale vers ({ $x_linear }, { $v_linear }) ; la non linéaire finit en x = { $x_end }, v = { $v_end }, avec une vitesse maximale de { $speed } contre { $speed_linear } en linéaire.
-nonlinear-describe-spring = Force de rappel en fonction de l'extension sur ±{ $reach } : le ressort linéaire est la droite k·x ; au plus grand débattement, { $travel }, la force non linéaire vaut { $force } contre { $linear } en linéaire.
-nonlinear-describe-spring-stops = Force de rappel en fonction de l'extension sur ±{ $reach } : le ressort linéaire est la droite k·x ; au plus grand débattement, { $travel }, la force non linéaire vaut { $force } contre { $linear } en linéaire, les butées ajoutant { $rate } au-delà de ±{ $gap }.
-nonlinear-describe-damper = Force d'amortisseur et de frottement en fonction de la vitesse sur ±{ $speed } : à +{ $speed } (détente) elle vaut { $rebound }, à −{ $speed } (compression) { $compression } ; l'amortisseur moyen du modèle linéaire donne ±{ $linear }.
-nonlinear-describe-damper-friction = Force d'amortisseur et de frottement en fonction de la vitesse sur ±{ $speed } : à +{ $speed } (détente) elle vaut { $rebound }, à −{ $speed } (compression) { $compression } ; l'amortisseur moyen du modèle linéaire donne ±{ $linear } ; le frottement de glissement ajoute un saut de ±{ $friction } en v = 0, et au repos le frottement statique retient jusqu'à ±{ $holding }.
+nonlinear-describe-spring = Force de rappel en fonction de l'extension sur ±{ $reach } : le ressort linéaire est la droite k·x ; au plus grand débattement, { $travel }, la force non linéaire vaut { $force } contre { $linear } en linéaire{ $stops ->
+        [yes] , les butées ajoutant { $rate } au-delà de ±{ $gap }.
+       *[no] .
+    }
+nonlinear-describe-damper = Force d'amortisseur et de frottement en fonction de la vitesse sur ±{ $speed } : à +{ $speed } (détente) elle vaut { $rebound }, à −{ $speed } (compression) { $compression } ; l'amortisseur moyen du modèle linéaire donne ±{ $linear }{ $coulomb ->
+        [yes]  ; le frottement de glissement ajoute un saut de ±{ $friction } en v = 0, et au repos le frottement statique retient jusqu'à ±{ $holding }.
+       *[no] .
+    }
 nonlinear-axis-velocity-rebound = vitesse v (+ détente)
 nonlinear-series-stops = butées ±{ $gap }
 nonlinear-series-linear = modèle linéaire
@@ -1024,9 +1028,11 @@ nonlinear-series-linear-spring = k·x linéaire
 nonlinear-series-spring = k·x + k₃·x³ + butées
 nonlinear-series-linear-damper = c̄·v linéaire
 nonlinear-series-damper = amortisseur + frottement
-nonlinear-schematic = Quart de véhicule à t = { $time } : suspension détendue de { $extension }.
-nonlinear-schematic-pressing = Quart de véhicule à t = { $time } : suspension détendue de { $extension }, en appui sur une butée.
-nonlinear-schematic-clear = Quart de véhicule à t = { $time } : suspension détendue de { $extension }, hors contact avec les butées.
+nonlinear-schematic = Quart de véhicule à t = { $time } : suspension détendue de { $extension }{ $stops ->
+        [pressing] , en appui sur une butée.
+        [clear] , hors contact avec les butées.
+       *[none] .
+    }
 nonlinear-title = Au-delà du modèle linéaire
 nonlinear-summary = Une suspension réelle n'est linéaire que pour de petits mouvements. Ici, le quart de véhicule reçoit un ressort cubique (k₃ > 0 raidissant, k₃ < 0 assouplissant), un amortisseur plus ferme en détente (x′ > 0) qu'en compression, un frottement de Coulomb dans les articulations et des butées en caoutchouc au-delà de ±gap. Le frottement alterne adhérence et glissement : tant que la masse glisse, il freine avec la force F_c ; une fois qu'elle s'arrête, le frottement statique la retient jusqu'à F_static, un multiple fixé de F_c, et elle ne repart que si le ressort tire plus fort. Le mouvement est intégré par RK4, chaque arrêt localisé à l'intérieur de son pas, et tracé face au modèle linéaire m·x″ + c̄·x′ + k·x = 0 (c̄ le coefficient moyen de l'amortisseur) depuis le même départ. Observez où la prédiction échoue : la période dépend de l'amplitude (un ressort raidissant la raccourcit, un ressort assouplissant l'allonge), le frottement fait décroître l'amplitude en ligne droite puis retient définitivement la masse hors du centre (adhérence-glissement), une butée transforme une oscillation douce en choc, et un amortisseur asymétrique décale la position moyenne. Les valeurs par défaut sont un coin de voiture plausible : 300 kg, 24 kN/m (1,4 Hz), un amortisseur de 1 500 N·s/m (ζ ≈ 0,28) et un ressort légèrement progressif. x est l'extension de la suspension depuis l'équilibre statique (positive = caisse vers le haut).
 nonlinear-param-m = masse suspendue

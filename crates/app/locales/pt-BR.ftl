@@ -1010,10 +1010,14 @@ nonlinear-sticks-at = o atrito prende a massa em { $position } a partir de { $ti
 nonlinear-escapes = a simulação não linear sai do gráfico (|x| > { $limit }) em { $time }
 nonlinear-describe-response = { $effect }: ambas começam juntas; { $clauses }.
 nonlinear-describe-phase = Plano de fase: ambas as trajetórias começam em x = { $x0 }, v = { $v0 }. A linear descreve uma espiral em direção a ({ $x_linear }, { $v_linear }); a não linear termina em x = { $x_end }, v = { $v_end }, com velocidade máxima de { $speed } contra { $speed_linear } da linear.
-nonlinear-describe-spring = Força restauradora em função da extensão em ±{ $reach }: a mola linear é a reta k·x; no maior curso, { $travel }, a força não linear é { $force } contra { $linear } da linear.
-nonlinear-describe-spring-stops = Força restauradora em função da extensão em ±{ $reach }: a mola linear é a reta k·x; no maior curso, { $travel }, a força não linear é { $force } contra { $linear } da linear, com os batentes somando { $rate } além de ±{ $gap }.
-nonlinear-describe-damper = Força do amortecedor mais atrito em função da velocidade em ±{ $speed }: a +{ $speed } (distensão) vale { $rebound }, a −{ $speed } (compressão) { $compression }; o amortecedor médio do modelo linear dá ±{ $linear }.
-nonlinear-describe-damper-friction = Força do amortecedor mais atrito em função da velocidade em ±{ $speed }: a +{ $speed } (distensão) vale { $rebound }, a −{ $speed } (compressão) { $compression }; o amortecedor médio do modelo linear dá ±{ $linear }; o atrito de deslizamento acrescenta um salto de ±{ $friction } em v = 0, e em repouso o atrito estático segura até ±{ $holding }.
+nonlinear-describe-spring = Força restauradora em função da extensão em ±{ $reach }: a mola linear é a reta k·x; no maior curso, { $travel }, a força não linear é { $force } contra { $linear } da linear{ $stops ->
+        [yes] , com os batentes somando { $rate } além de ±{ $gap }.
+       *[no] .
+    }
+nonlinear-describe-damper = Força do amortecedor mais atrito em função da velocidade em ±{ $speed }: a +{ $speed } (distensão) vale { $rebound }, a −{ $speed } (compressão) { $compression }; o amortecedor médio do modelo linear dá ±{ $linear }{ $coulomb ->
+        [yes] ; o atrito de deslizamento acrescenta um salto de ±{ $friction } em v = 0, e em repouso o atrito estático segura até ±{ $holding }.
+       *[no] .
+    }
 nonlinear-axis-velocity-rebound = velocidade v (+ distensão)
 nonlinear-series-stops = batentes ±{ $gap }
 nonlinear-series-linear = modelo linear
@@ -1024,9 +1028,11 @@ nonlinear-series-linear-spring = k·x linear
 nonlinear-series-spring = k·x + k₃·x³ + batentes
 nonlinear-series-linear-damper = c̄·v linear
 nonlinear-series-damper = amortecedor + atrito
-nonlinear-schematic = Quarto de veículo em t = { $time }: suspensão estendida { $extension }.
-nonlinear-schematic-pressing = Quarto de veículo em t = { $time }: suspensão estendida { $extension }, apoiada num batente.
-nonlinear-schematic-clear = Quarto de veículo em t = { $time }: suspensão estendida { $extension }, sem tocar os batentes.
+nonlinear-schematic = Quarto de veículo em t = { $time }: suspensão estendida { $extension }{ $stops ->
+        [pressing] , apoiada num batente.
+        [clear] , sem tocar os batentes.
+       *[none] .
+    }
 nonlinear-title = Além do modelo linear
 nonlinear-summary = Uma suspensão real só é linear para movimentos pequenos. Aqui o quarto de veículo ganha uma mola cúbica (k₃ > 0 enrijecedora, k₃ < 0 amolecedora), um amortecedor mais duro na distensão (x′ > 0) do que na compressão, atrito de Coulomb nas articulações e batentes de borracha além de ±gap. O atrito alterna aderência e deslizamento: enquanto a massa desliza, ele freia com a força F_c; quando ela para, o atrito estático a segura até F_static, um múltiplo fixo de F_c, e ela só volta a se mover se a mola puxar com mais força. O movimento é integrado com RK4, cada parada localizada dentro do seu passo, e desenhado contra o modelo linear m·x″ + c̄·x′ + k·x = 0 (c̄ a constante média do amortecedor) a partir do mesmo início. Observe onde a previsão falha: o período depende da amplitude (a mola enrijecedora o encurta, a amolecedora o alonga), o atrito faz a amplitude cair em linha reta e depois prende a massa fora do centro de vez (adere-desliza), um batente transforma uma oscilação suave num impacto, e um amortecedor assimétrico desloca a posição média. Os valores padrão são um canto de carro plausível: 300 kg, 24 kN/m (1,4 Hz), um amortecedor de 1 500 N·s/m (ζ ≈ 0,28) e uma mola levemente progressiva. x é a extensão da suspensão a partir do equilíbrio estático (positiva = carroceria para cima).
 nonlinear-param-m = massa suspensa

@@ -1007,10 +1007,14 @@ nonlinear-sticks-at = 从 { $time } 起摩擦力把质量保持在 { $position }
 nonlinear-escapes = 非线性计算在 { $time } 时离开图形范围（|x| > { $limit }）
 nonlinear-describe-response = { $effect }：两者同时出发；{ $clauses }。
 nonlinear-describe-phase = 相平面：两条轨迹都从 x = { $x0 }、v = { $v0 } 出发。线性轨迹螺旋趋向（{ $x_linear }，{ $v_linear }）；非线性轨迹终止于 x = { $x_end }、v = { $v_end }，其最大速度为 { $speed }，线性为 { $speed_linear }。
-nonlinear-describe-spring = 恢复力随伸长量的变化，范围 ±{ $reach }：线性弹簧为直线 k·x；在最大行程 { $travel } 处，非线性力为 { $force }，线性为 { $linear }。
-nonlinear-describe-spring-stops = 恢复力随伸长量的变化，范围 ±{ $reach }：线性弹簧为直线 k·x；在最大行程 { $travel } 处，非线性力为 { $force }，线性为 { $linear }，超出 ±{ $gap } 后限位块再增加 { $rate }。
-nonlinear-describe-damper = 阻尼力加摩擦力随速度的变化，范围 ±{ $speed }：在 +{ $speed }（回弹）时为 { $rebound }，在 −{ $speed }（压缩）时为 { $compression }；线性模型的平均阻尼给出 ±{ $linear }。
-nonlinear-describe-damper-friction = 阻尼力加摩擦力随速度的变化，范围 ±{ $speed }：在 +{ $speed }（回弹）时为 { $rebound }，在 −{ $speed }（压缩）时为 { $compression }；线性模型的平均阻尼给出 ±{ $linear }；滑动摩擦在 v = 0 处造成 ±{ $friction } 的跳变，静止时静摩擦最多能保持 ±{ $holding }。
+nonlinear-describe-spring = 恢复力随伸长量的变化，范围 ±{ $reach }：线性弹簧为直线 k·x；在最大行程 { $travel } 处，非线性力为 { $force }，线性为 { $linear }{ $stops ->
+        [yes] ，超出 ±{ $gap } 后限位块再增加 { $rate }。
+       *[no] 。
+    }
+nonlinear-describe-damper = 阻尼力加摩擦力随速度的变化，范围 ±{ $speed }：在 +{ $speed }（回弹）时为 { $rebound }，在 −{ $speed }（压缩）时为 { $compression }；线性模型的平均阻尼给出 ±{ $linear }{ $coulomb ->
+        [yes] ；滑动摩擦在 v = 0 处造成 ±{ $friction } 的跳变，静止时静摩擦最多能保持 ±{ $holding }。
+       *[no] 。
+    }
 nonlinear-axis-velocity-rebound = 速度 v（+ 为回弹）
 nonlinear-series-stops = 限位块 ±{ $gap }
 nonlinear-series-linear = 线性模型
@@ -1021,9 +1025,11 @@ nonlinear-series-linear-spring = 线性 k·x
 nonlinear-series-spring = k·x + k₃·x³ + 限位块
 nonlinear-series-linear-damper = 线性 c̄·v
 nonlinear-series-damper = 阻尼器 + 摩擦
-nonlinear-schematic = t = { $time } 时的四分之一车辆：悬架伸长 { $extension }。
-nonlinear-schematic-pressing = t = { $time } 时的四分之一车辆：悬架伸长 { $extension }，正压在限位块上。
-nonlinear-schematic-clear = t = { $time } 时的四分之一车辆：悬架伸长 { $extension }，未接触限位块。
+nonlinear-schematic = t = { $time } 时的四分之一车辆：悬架伸长 { $extension }{ $stops ->
+        [pressing] ，正压在限位块上。
+        [clear] ，未接触限位块。
+       *[none] 。
+    }
 nonlinear-title = 超越线性模型
 nonlinear-summary = 真实的悬架只在小幅运动时才是线性的。这里的四分之一车辆模型带有三次弹簧（k₃ > 0 为渐硬，k₃ < 0 为渐软）、回弹（x′ > 0）比压缩更硬的阻尼器、关节中的库仑摩擦以及超出 ±gap 后起作用的橡胶限位块。摩擦会交替粘住和滑动：质量滑动时，摩擦以力 F_c 拖拽它；一旦停下，静摩擦最多能以 F_static（F_c 的固定倍数）将其保持住，只有弹簧拉力更大时它才会再次运动。运动用 RK4 积分，每次停止都在其步长内精确定位，并与从同一初始状态出发的线性模型 m·x″ + c̄·x′ + k·x = 0（c̄ 为平均阻尼系数）对比绘制。请观察预测在哪里失效：周期取决于振幅（渐硬弹簧使其缩短，渐软弹簧使其变长），摩擦使振幅按直线下降，然后把质量永久地保持在偏离中心的位置（粘滑），限位块把平滑的摆动变成撞击，非对称阻尼器会使平均位置偏移。默认值是一个合理的车辆角：300 kg、24 kN/m（1.4 Hz）、1 500 N·s/m 的阻尼器（ζ ≈ 0.28）和略带渐进特性的弹簧。x 是悬架相对静平衡位置的伸长量（正值 = 车身向上）。
 nonlinear-param-m = 簧上质量

@@ -19,6 +19,7 @@ pub mod quarter_car_2dof;
 pub mod regimes;
 pub mod resonance;
 pub mod rlc;
+mod rows;
 pub mod uncertainty;
 pub mod universality;
 

@@ -8,11 +8,6 @@ use crate::plot::{fit_range, thin, zip, Ink};
 use crate::t;
 use zeta_solver::flutter::{degrees, DeckSection};
 
-pub(super) const DERIVATIVE_TITLE: &str = "Flutter derivative A₂* and the flutter threshold";
-pub(super) const DAMPING_TITLE: &str = "Effective damping against wind speed";
-pub(super) const LOCUS_TITLE: &str = "Root locus as the wind rises";
-pub(super) const RESPONSE_TITLE: &str = "Deck twist θ(t) over minutes";
-
 /// Most points drawn of the twist history.
 const TWIST_POINTS: usize = 4000;
 

@@ -7,20 +7,24 @@
 //! as the "simplest picture". Plots: `A₂*` against reduced velocity with the current point,
 //! `ζ_eff(U)`, the root locus, and the twist over minutes; the schematic is the deck
 //! cross-section twisting in the wind. Angles are in degrees throughout.
+//!
+//! This file holds the model step; `declaration.rs` declares the demo (parameters,
+//! readouts, plots and presets as tables); `figures.rs` and `schematic.rs` draw; `text.rs`
+//! holds the prose.
 
+mod declaration;
 mod figures;
 mod schematic;
-mod tables;
 mod text;
 
+use super::rows;
 use super::Model;
-use crate::declare::{Choice, Declaration};
+use crate::declare::{choice_enum, Declaration};
 use crate::figure::Figure;
-use crate::spec::{PlotSpec, Preset};
-use zeta_solver::flutter::scanlan::{Aerodynamics, SATURATION_DEG, TACOMA_INERTIA, TACOMA_WIDTH};
+use zeta_solver::flutter::scanlan::Aerodynamics;
 use zeta_solver::flutter::{
     degrees, radians, DeckSection, FlutterState, ScanlanConfig, ScanlanModel, TwistHistory,
-    TACOMA_FAILURE_WIND, TACOMA_STRUCTURAL_DAMPING, TACOMA_TORSION_HZ,
+    TACOMA_FAILURE_WIND, TACOMA_STRUCTURAL_DAMPING,
 };
 use zeta_solver::{Regime, SecondOrder};
 
@@ -33,46 +37,26 @@ const STEPS_PER_PERIOD: usize = 20;
 /// Damping ratio lost per m/s in the simplest picture's preset: `U_crit` at the failure wind.
 const SIMPLEST_SLOPE: f64 = TACOMA_STRUCTURAL_DAMPING / TACOMA_FAILURE_WIND;
 
-/// Which model of the wind's moment.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub enum Aero {
-    /// Scanlan's flutter derivatives of the chosen section.
-    #[default]
-    Derivatives,
-    /// The simplest picture `ζ_eff = ζ_s − g·U`.
-    Simplest,
+choice_enum! {
+    /// Which model of the wind's moment.
+    pub enum Aero {
+        /// Scanlan's flutter derivatives of the chosen section.
+        #[default]
+        Derivatives => ("scanlan", "flutter derivatives (Scanlan)"),
+        /// The simplest picture `ζ_eff = ζ_s − g·U`.
+        Simplest => ("linear", "simplest picture: ζ_eff = ζ_s − g·U"),
+    }
 }
 
-impl Choice for Aero {
-    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
-        (
-            Aero::Derivatives,
-            "scanlan",
-            "flutter derivatives (Scanlan)",
-        ),
-        (
-            Aero::Simplest,
-            "linear",
-            "simplest picture: ζ_eff = ζ_s − g·U",
-        ),
-    ];
-}
-
-/// The deck section, which decides its flutter derivatives.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub enum Section {
-    /// The 1940 H-section.
-    #[default]
-    H,
-    /// A streamlined box girder.
-    Box,
-}
-
-impl Choice for Section {
-    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
-        (Section::H, "h", "1940 H-section (plate girders)"),
-        (Section::Box, "box", "streamlined box girder"),
-    ];
+choice_enum! {
+    /// The deck section, which decides its flutter derivatives.
+    pub enum Section {
+        /// The 1940 H-section.
+        #[default]
+        H => ("h", "1940 H-section (plate girders)"),
+        /// A streamlined box girder.
+        Box => ("box", "streamlined box girder"),
+    }
 }
 
 impl Section {
@@ -156,103 +140,9 @@ impl Results {
     }
 }
 
-fn preset(label: &'static str, u: f64, aero: Aero, section: Section) -> Preset {
-    Preset {
-        label,
-        values: vec![
-            ("U", u),
-            ("model", aero.index() as f64),
-            ("section", section.index() as f64),
-            ("B", TACOMA_WIDTH),
-            ("I", TACOMA_INERTIA),
-            ("f0", TACOMA_TORSION_HZ),
-            ("zeta_s", TACOMA_STRUCTURAL_DAMPING),
-            ("theta0", 2.0),
-            ("theta_s", SATURATION_DEG),
-            ("slope", SIMPLEST_SLOPE),
-        ],
-    }
-}
-
 impl Model for Flutter {
     type Params = P;
     type Results = Results;
-
-    fn declare() -> Declaration<P, Results> {
-        Declaration {
-            equation_mathml: text::EQUATION,
-            params: tables::params(),
-            readouts: tables::readouts(),
-            plots: vec![
-                PlotSpec {
-                    key: "derivative",
-                    title: figures::DERIVATIVE_TITLE,
-                    aspect: 1.6,
-                },
-                PlotSpec {
-                    key: "damping",
-                    title: figures::DAMPING_TITLE,
-                    aspect: 1.6,
-                },
-                PlotSpec {
-                    key: "locus",
-                    title: figures::LOCUS_TITLE,
-                    aspect: 1.25,
-                },
-                PlotSpec {
-                    key: "response",
-                    title: figures::RESPONSE_TITLE,
-                    aspect: 2.2,
-                },
-            ],
-            primary_plot: "response",
-            presets: vec![
-                preset(
-                    "Tacoma 1940, 10 m/s (stable)",
-                    10.0,
-                    Aero::Derivatives,
-                    Section::H,
-                ),
-                preset(
-                    "Tacoma 1940, 19 m/s (failure day, ≈ 42 mph)",
-                    19.0,
-                    Aero::Derivatives,
-                    Section::H,
-                ),
-                preset(
-                    "Tacoma 1940, 30 m/s gale",
-                    30.0,
-                    Aero::Derivatives,
-                    Section::H,
-                ),
-                preset(
-                    "Streamlined box deck, 19 m/s",
-                    19.0,
-                    Aero::Derivatives,
-                    Section::Box,
-                ),
-                preset(
-                    "Streamlined box deck, 40 m/s",
-                    40.0,
-                    Aero::Derivatives,
-                    Section::Box,
-                ),
-                preset(
-                    "Simplest picture, 19 m/s (ζ_eff = ζ_s − g·U)",
-                    19.0,
-                    Aero::Simplest,
-                    Section::H,
-                ),
-            ],
-            table: Some(text::table()),
-            schematic: true,
-            ..Declaration::new(
-                "flutter",
-                "Flutter: the Tacoma Narrows bridge",
-                text::SUMMARY,
-            )
-        }
-    }
 
     fn step(&mut self, p: &P) -> Option<Results> {
         let model = p.model()?;
@@ -282,12 +172,7 @@ impl Model for Flutter {
     }
 
     fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![
-            figures::derivative(r),
-            figures::damping(r),
-            figures::locus(r),
-            figures::response(r),
-        ]
+        rows::figures(&declaration::PLOTS, r)
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {
@@ -298,6 +183,10 @@ impl Model for Flutter {
         let history = self.last.as_ref()?;
         let peak = history.peak().max(radians(p.theta0_deg));
         Some(schematic::deck(history.theta_at(t), peak, p.u, t))
+    }
+
+    fn declare() -> Declaration<P, Results> {
+        declaration::declaration()
     }
 }
 

@@ -14,11 +14,6 @@ const STRIDE: usize = 4;
 /// Points of the force curves.
 const CURVE: usize = 241;
 
-pub(super) const RESPONSE_TITLE: &str = "Nonlinear and linear response x(t)";
-pub(super) const PHASE_TITLE: &str = "Phase plane (x, v)";
-pub(super) const SPRING_TITLE: &str = "Spring and bump-stop force";
-pub(super) const DAMPER_TITLE: &str = "Damper and friction force";
-
 /// Every [`STRIDE`]-th point of `pick(i)` for `i < n`, always including the last.
 fn strided(n: usize, pick: impl Fn(usize) -> (f64, f64)) -> Vec<(f64, f64)> {
     let mut out: Vec<(f64, f64)> = (0..n).step_by(STRIDE).map(&pick).collect();
@@ -81,17 +76,7 @@ pub(super) fn response(r: &Results) -> Figure {
             )
             .with_line("", vec![(0.0, -gap), (r.t_end, -gap)], stop);
     }
-    fig = fig
-        .with_line(
-            t!("nonlinear-series-linear"),
-            lin,
-            LineStyle::dashed(Ink::Vermillion, 2.0),
-        )
-        .with_line(
-            t!("nonlinear-series-nonlinear"),
-            nl,
-            LineStyle::solid(Ink::Blue, 2.5),
-        );
+    fig = both_runs(fig, lin, nl, 2.5);
     if let Some(st) = r.cmp.sticking {
         fig = fig.with_marker(Marker::dot(
             t!("nonlinear-marker-sticks"),
@@ -112,21 +97,12 @@ pub(super) fn phase(r: &Results) -> Figure {
     let x = padded((xs.0, xs.1.max(xs.0 + 1e-6)), 0.08);
     let description = text::describe_phase(&nl, &lin);
     let start = nl.first().copied();
-    let mut fig = Figure::plot(
+    let plot = Figure::plot(
         t!("nonlinear-plot-phase"),
         Axis::linear(t!("axis-extension"), "m", x),
         Axis::linear(t!("axis-velocity"), "m/s", with_legend_room(vs)),
-    )
-    .with_line(
-        t!("nonlinear-series-linear"),
-        lin,
-        LineStyle::dashed(Ink::Vermillion, 2.0),
-    )
-    .with_line(
-        t!("nonlinear-series-nonlinear"),
-        nl,
-        LineStyle::solid(Ink::Blue, 2.0),
     );
+    let mut fig = both_runs(plot, lin, nl, 2.0);
     if let Some(p) = start {
         fig = fig.with_marker(Marker::dot(t!("nonlinear-marker-start"), p, Ink::Black));
     }
@@ -143,39 +119,64 @@ pub(super) fn spring(r: &Results) -> Figure {
         reach = reach.max(1.3 * cfg.stop_gap);
     }
     let reach = reach.min(ESCAPE) * 1.15;
-    let nl = symmetric(reach, |x| model.elastic_force(x));
-    let lin = symmetric(reach, |x| cfg.k * x);
-    let extent = finite_extent(nl.iter().chain(&lin).map(|p| p.1)).unwrap_or((-1.0, 1.0));
     force_plot(
         t!("nonlinear-plot-spring"),
-        Axis::linear(t!("axis-extension"), "m", (-reach, reach)),
-        extent,
-        (t!("nonlinear-series-linear-spring"), lin),
-        (t!("nonlinear-series-spring"), nl),
+        (t!("axis-extension"), "m", reach),
+        (t!("nonlinear-series-linear-spring"), &|x| cfg.k * x),
+        (t!("nonlinear-series-spring"), &|x| model.elastic_force(x)),
     )
     .described(text::describe_spring(model, reach, max_travel))
 }
 
-/// A force against `x`: the linear model's line (dashed) under the nonlinear one.
+/// One force against `x` over `±reach` (the x axis's label and unit given): the linear
+/// model's force (dashed) under the nonlinear one, each with its legend label.
 fn force_plot(
     title: String,
-    x: Axis,
-    extent: (f64, f64),
+    (x_label, x_unit, reach): (String, &'static str, f64),
+    (linear_label, linear): (String, &dyn Fn(f64) -> f64),
+    (label, nonlinear): (String, &dyn Fn(f64) -> f64),
+) -> Figure {
+    let nl = symmetric(reach, nonlinear);
+    let lin = symmetric(reach, linear);
+    let extent =
+        finite_extent(nl.iter().chain(&lin).map(|p| p.1).chain([0.0])).unwrap_or((-1.0, 1.0));
+    let plot = Figure::plot(
+        title,
+        Axis::linear(x_label, x_unit, (-reach, reach)),
+        Axis::linear(t!("axis-force"), "N", with_legend_room(extent)),
+    );
+    against_linear(plot, (linear_label, lin), (label, nl), 2.5).with_origin_lines()
+}
+
+/// `fig` with the linear model's curve (dashed) under the nonlinear one (solid, `width`
+/// wide), each with its legend label.
+fn against_linear(
+    fig: Figure,
     (linear_label, linear): (String, Vec<(f64, f64)>),
     (label, nonlinear): (String, Vec<(f64, f64)>),
+    width: f64,
 ) -> Figure {
-    Figure::plot(
-        title,
-        x,
-        Axis::linear(t!("axis-force"), "N", with_legend_room(extent)),
-    )
-    .with_line(
+    fig.with_line(
         linear_label,
         linear,
         LineStyle::dashed(Ink::Vermillion, 2.0),
     )
-    .with_line(label, nonlinear, LineStyle::solid(Ink::Blue, 2.5))
-    .with_origin_lines()
+    .with_line(label, nonlinear, LineStyle::solid(Ink::Blue, width))
+}
+
+/// `fig` with the linear and the nonlinear run (see [`against_linear`]).
+fn both_runs(
+    fig: Figure,
+    linear: Vec<(f64, f64)>,
+    nonlinear: Vec<(f64, f64)>,
+    width: f64,
+) -> Figure {
+    against_linear(
+        fig,
+        (t!("nonlinear-series-linear"), linear),
+        (t!("nonlinear-series-nonlinear"), nonlinear),
+        width,
+    )
 }
 
 /// Damper plus friction force against velocity, beside the linear model's mean damper.
@@ -188,16 +189,13 @@ pub(super) fn damper(r: &Results) -> Figure {
         .clamp(0.05, 10.0)
         * 1.15;
     let c_mean = 0.5 * (cfg.c_compression + cfg.c_rebound);
-    let nl = symmetric(vmax, |v| model.dissipative_force(v));
-    let lin = symmetric(vmax, |v| c_mean * v);
-    let extent =
-        finite_extent(nl.iter().chain(&lin).map(|p| p.1).chain([0.0])).unwrap_or((-1.0, 1.0));
     force_plot(
         t!("nonlinear-plot-damper"),
-        Axis::linear(t!("nonlinear-axis-velocity-rebound"), "m/s", (-vmax, vmax)),
-        extent,
-        (t!("nonlinear-series-linear-damper"), lin),
-        (t!("nonlinear-series-damper"), nl),
+        (t!("nonlinear-axis-velocity-rebound"), "m/s", vmax),
+        (t!("nonlinear-series-linear-damper"), &|v| c_mean * v),
+        (t!("nonlinear-series-damper"), &|v| {
+            model.dissipative_force(v)
+        }),
     )
     .described(text::describe_damper(model, vmax, c_mean))
 }
@@ -210,21 +208,18 @@ pub(super) fn schematic(cfg: &NonlinearConfig, x: f64, reach: f64, t: f64) -> Fi
         damper: "c_c/c_r",
         base: "",
     };
-    let (time, extension) = (si(t, "s", 3), si(x, "m", 3));
-    let description = if cfg.stop_stiffness <= 0.0 {
-        t!("nonlinear-schematic", time = time, extension = extension)
+    let stops = if cfg.stop_stiffness <= 0.0 {
+        "none"
     } else if x.abs() > cfg.stop_gap {
-        t!(
-            "nonlinear-schematic-pressing",
-            time = time,
-            extension = extension
-        )
+        "pressing"
     } else {
-        t!(
-            "nonlinear-schematic-clear",
-            time = time,
-            extension = extension
-        )
+        "clear"
     };
+    let description = t!(
+        "nonlinear-schematic",
+        time = si(t, "s", 3),
+        extension = si(x, "m", 3),
+        stops = stops
+    );
     mass_spring_damper(x / reach, 0.0, &labels, description)
 }

@@ -5,14 +5,18 @@
 //! Cost per update is bounded: `STEPS` RK4 steps. Coulomb friction sticks and slips: the
 //! solver switches between a kinetic force `F_c` while sliding and a static force
 //! `F_static = ratio·F_c` that holds the mass once it stops.
+//!
+//! This file holds the model step; `declaration.rs` declares the demo (parameters,
+//! readouts and plots as tables); `figures.rs` draws; `text.rs` holds the prose.
 
+mod declaration;
 mod figures;
 mod text;
 
+use super::rows;
 use super::Model;
-use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::declare::Declaration;
 use crate::figure::{finite_extent, Figure};
-use crate::spec::PlotSpec;
 use zeta_solver::nonlinear::{undamped_period, Comparison, NonlinearConfig, NonlinearModel};
 
 /// Default static-to-kinetic friction ratio (dry sliding joints hold about a fifth more
@@ -112,82 +116,6 @@ impl Model for Nonlinear {
     type Params = P;
     type Results = Results;
 
-    fn declare() -> Declaration<P, Results> {
-        Declaration {
-            equation_mathml: text::EQUATION,
-            params: params(),
-            readouts: vec![
-                ReadoutDef::text("effect", "dominant nonlinearity", |r| {
-                    text::effect_name(r.effect)
-                }),
-                ReadoutDef::number(
-                    "period_ratio",
-                    "first-swing period ratio T_nonlinear / T_linear",
-                    "",
-                    4,
-                    |r| r.cmp.first_swing_ratio(),
-                ),
-                ReadoutDef::number(
-                    "max_deviation",
-                    "largest |x_nonlinear − x_linear|",
-                    "m",
-                    3,
-                    |r| (!r.cmp.t.is_empty()).then(|| r.cmp.max_deviation()),
-                ),
-                ReadoutDef::number(
-                    "period_nonlinear",
-                    "nonlinear period of the first full swing (three zero crossings)",
-                    "s",
-                    4,
-                    |r| r.cmp.first_swing_nonlinear(),
-                ),
-                ReadoutDef::number(
-                    "period_linear",
-                    "linear period of the first full swing (= 2π/ω_d)",
-                    "s",
-                    4,
-                    |r| r.cmp.first_swing_linear(),
-                ),
-                ReadoutDef::number("max_travel", "largest |x| (nonlinear)", "m", 3, |r| {
-                    r.max_travel
-                }),
-                ReadoutDef::number(
-                    "stick_position",
-                    "friction holds the mass at",
-                    "m",
-                    3,
-                    |r| r.cmp.sticking.map(|st| st.x),
-                ),
-            ],
-            plots: vec![
-                PlotSpec {
-                    key: "response",
-                    title: figures::RESPONSE_TITLE,
-                    aspect: 2.0,
-                },
-                PlotSpec {
-                    key: "phase",
-                    title: figures::PHASE_TITLE,
-                    aspect: 1.25,
-                },
-                PlotSpec {
-                    key: "spring",
-                    title: figures::SPRING_TITLE,
-                    aspect: 2.0,
-                },
-                PlotSpec {
-                    key: "damper",
-                    title: figures::DAMPER_TITLE,
-                    aspect: 1.25,
-                },
-            ],
-            presets: text::presets(),
-            table: Some(text::table()),
-            schematic: true,
-            ..Declaration::new("nonlinear", "Beyond the linear model", text::SUMMARY)
-        }
-    }
-
     fn step(&mut self, p: &P) -> Option<Results> {
         let Some((model, h)) = p.model() else {
             self.last = None;
@@ -207,12 +135,7 @@ impl Model for Nonlinear {
     }
 
     fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![
-            figures::response(r),
-            figures::phase(r),
-            figures::spring(r),
-            figures::damper(r),
-        ]
+        rows::figures(&declaration::PLOTS, r)
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {
@@ -231,111 +154,10 @@ impl Model for Nonlinear {
             .max(1e-6);
         Some(figures::schematic(&model.config(), x, reach, t))
     }
-}
 
-/// The parameter table.
-fn params() -> Vec<Param<P>> {
-    vec![
-        Param::linear(
-            "m",
-            "sprung mass",
-            "m",
-            "kg",
-            (100.0, 600.0, 1.0),
-            300.0,
-            |p, v| p.m = v,
-        ),
-        Param::linear(
-            "k",
-            "linear spring rate",
-            "k",
-            "N/m",
-            (5_000.0, 60_000.0, 100.0),
-            24_000.0,
-            |p, v| p.k = v,
-        ),
-        Param::linear(
-            "k3",
-            "cubic spring coefficient (+ hardening, − softening)",
-            "k₃",
-            "N/m³",
-            (-4.0e6, 4.0e6, 10_000.0),
-            1.0e6,
-            |p, v| p.k3 = v,
-        ),
-        Param::linear(
-            "c_comp",
-            "damper rate in compression",
-            "c_c",
-            "N·s/m",
-            (0.0, 6_000.0, 10.0),
-            1_500.0,
-            |p, v| p.c_comp = v,
-        ),
-        Param::linear(
-            "c_reb",
-            "damper rate in rebound",
-            "c_r",
-            "N·s/m",
-            (0.0, 6_000.0, 10.0),
-            1_500.0,
-            |p, v| p.c_reb = v,
-        ),
-        Param::linear(
-            "friction",
-            "Coulomb friction force while sliding",
-            "F_c",
-            "N",
-            (0.0, 1_500.0, 10.0),
-            0.0,
-            |p, v| p.friction = v,
-        ),
-        Param::linear(
-            "stick_ratio",
-            "static-to-sliding friction ratio",
-            "F_static/F_c",
-            "",
-            (1.0, 2.0, 0.05),
-            STICK_RATIO,
-            |p, v| p.stick_ratio = v,
-        ),
-        Param::linear(
-            "gap",
-            "bump-stop clearance",
-            "gap",
-            "m",
-            (0.01, 0.2, 0.001),
-            0.06,
-            |p, v| p.gap = v,
-        ),
-        Param::linear(
-            "k_stop",
-            "bump-stop rate (0 = no stops)",
-            "k_stop",
-            "N/m",
-            (0.0, 500_000.0, 1_000.0),
-            0.0,
-            |p, v| p.k_stop = v,
-        ),
-        Param::linear(
-            "x0",
-            "initial extension",
-            "x₀",
-            "m",
-            (-0.15, 0.15, 0.001),
-            0.08,
-            |p, v| p.x0 = v,
-        ),
-        Param::linear(
-            "v0",
-            "initial velocity",
-            "v₀",
-            "m/s",
-            (-2.0, 2.0, 0.01),
-            0.0,
-            |p, v| p.v0 = v,
-        ),
-    ]
+    fn declare() -> Declaration<P, Results> {
+        declaration::declaration()
+    }
 }
 
 #[cfg(test)]

@@ -2,6 +2,7 @@
 //! the figures' text alternatives.
 
 use super::{Results, ESCAPE};
+use crate::demos::rows;
 use crate::format::si;
 use crate::spec::{Preset, Table};
 use crate::t;
@@ -31,31 +32,11 @@ pub(super) const EQUATION: &str = "<math display=\"block\"><mrow>\
 <mo>+</mo><msub><mi>F</mi><mtext>stop</mtext></msub><mo>(</mo><mi>x</mi><mo>)</mo><mo>=</mo><mn>0</mn>\
 </mrow></math>";
 
-/// A preset: the base car with `changes` applied.
-fn preset(label: &'static str, changes: &[(&'static str, f64)]) -> Preset {
-    let mut values = vec![
-        ("m", 300.0),
-        ("k", 24_000.0),
-        ("k3", 0.0),
-        ("c_comp", 1_500.0),
-        ("c_reb", 1_500.0),
-        ("friction", 0.0),
-        ("stick_ratio", super::STICK_RATIO),
-        ("gap", 0.06),
-        ("k_stop", 0.0),
-        ("x0", 0.08),
-        ("v0", 0.0),
-    ];
-    for &(key, v) in changes {
-        if let Some(slot) = values.iter_mut().find(|(k, _)| *k == key) {
-            slot.1 = v;
-        }
-    }
-    Preset { label, values }
-}
-
-/// One preset per nonlinearity, and one with all of them off.
-pub(super) fn presets() -> Vec<Preset> {
+/// One preset per nonlinearity, and one with all of them off. Each sets every parameter:
+/// its `defaults` (the declared sliders') with a linear spring, then its changes.
+pub(super) fn presets(defaults: &[(&'static str, f64)]) -> Vec<Preset> {
+    let linear = rows::preset("", defaults, &[("k3", 0.0)]).values;
+    let preset = |label, changes: &[(&'static str, f64)]| rows::preset(label, &linear, changes);
     vec![
         preset("Linear (all off)", &[]),
         preset(
@@ -252,25 +233,21 @@ pub(super) fn describe_spring(model: &NonlinearModel, reach: f64, max_travel: f6
     let at = max_travel.max(1e-6);
     let (reach, travel) = (si(reach, "m", 3), si(at, "m", 3));
     let (force, linear) = (si(model.elastic_force(at), "N", 3), si(cfg.k * at, "N", 3));
-    if cfg.stop_stiffness > 0.0 {
-        t!(
-            "nonlinear-describe-spring-stops",
-            reach = reach,
-            travel = travel,
-            force = force,
-            linear = linear,
-            rate = si(cfg.stop_stiffness, "N/m", 3),
-            gap = si(cfg.stop_gap, "m", 3)
-        )
+    let stops = if cfg.stop_stiffness > 0.0 {
+        "yes"
     } else {
-        t!(
-            "nonlinear-describe-spring",
-            reach = reach,
-            travel = travel,
-            force = force,
-            linear = linear
-        )
-    }
+        "no"
+    };
+    t!(
+        "nonlinear-describe-spring",
+        reach = reach,
+        travel = travel,
+        force = force,
+        linear = linear,
+        stops = stops,
+        rate = si(cfg.stop_stiffness, "N/m", 3),
+        gap = si(cfg.stop_gap, "m", 3)
+    )
 }
 
 /// The damper curve in words, over ±`vmax` (m/s); `c_mean` the linear model's rate.
@@ -280,23 +257,14 @@ pub(super) fn describe_damper(model: &NonlinearModel, vmax: f64, c_mean: f64) ->
     let rebound = si(model.dissipative_force(vmax), "N", 3);
     let compression = si(model.dissipative_force(-vmax), "N", 3);
     let linear = si(c_mean * vmax, "N", 3);
-    if cfg.friction > 0.0 {
-        t!(
-            "nonlinear-describe-damper-friction",
-            speed = speed,
-            rebound = rebound,
-            compression = compression,
-            linear = linear,
-            friction = si(cfg.friction, "N", 3),
-            holding = si(model.static_limit(), "N", 3)
-        )
-    } else {
-        t!(
-            "nonlinear-describe-damper",
-            speed = speed,
-            rebound = rebound,
-            compression = compression,
-            linear = linear
-        )
-    }
+    t!(
+        "nonlinear-describe-damper",
+        speed = speed,
+        rebound = rebound,
+        compression = compression,
+        linear = linear,
+        coulomb = if cfg.friction > 0.0 { "yes" } else { "no" },
+        friction = si(cfg.friction, "N", 3),
+        holding = si(model.static_limit(), "N", 3)
+    )
 }

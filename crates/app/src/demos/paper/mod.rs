@@ -5,9 +5,12 @@
 //! to that exact state, and each quantitative claim with the value the app computes and a
 //! verdict, confirmed or differs, with the reason.
 //!
-//! The model step runs the linked demos through the registry, so a value in the tour is
-//! the very readout the link opens.
+//! The model step (this file) runs the linked demos through the registry, so a value in
+//! the tour is the very readout the link opens. `declaration.rs` declares the demo (the
+//! counts of verdicts and one thumbnail plot per exhibit); `tour.rs` is the tour as data;
+//! `verdict.rs` judges the claims; `text.rs` holds the prose.
 
+mod declaration;
 mod text;
 mod tour;
 mod verdict;
@@ -15,10 +18,9 @@ mod verdict;
 pub use verdict::{ClaimView, ExhibitView, Tour, Verdict};
 
 use super::Model;
-use crate::declare::{Declaration, ReadoutDef};
+use crate::declare::Declaration;
 use crate::figure::{Axis, Figure, Marker};
 use crate::plot::Ink;
-use crate::spec::PlotSpec;
 use tour::{CLAIMS, EXHIBITS};
 
 /// The tour. Stateless: the paper does not change.
@@ -45,14 +47,9 @@ impl Results {
     }
 }
 
-/// A count as a readout: the number and its text in the interface language's digits.
-fn count(n: usize) -> Option<(f64, String)> {
-    Some((n as f64, crate::i18n::number::fixed(n as f64, 0)))
-}
-
 /// The thumbnail of exhibit `id`: its demo's plot, or the demo's primary plot.
 fn thumbnail(e: &tour::Exhibit, runs: &mut verdict::Runs) -> Figure {
-    let drawn = crate::demos::create(e.demo).and_then(|d| {
+    let drawn = crate::demos::create(e.at.demo).and_then(|d| {
         let spec = d.spec();
         let key = if e.plot.is_empty() {
             spec.primary()
@@ -60,7 +57,7 @@ fn thumbnail(e: &tour::Exhibit, runs: &mut verdict::Runs) -> Figure {
             e.plot
         };
         let i = spec.plots.iter().position(|p| p.key == key)?;
-        runs.get(e.demo, e.query)?.figures.get(i).cloned()
+        runs.get(e.at.demo, e.at.query)?.figures.get(i).cloned()
     });
     match drawn {
         Some(fig) => fig,
@@ -77,32 +74,6 @@ fn thumbnail(e: &tour::Exhibit, runs: &mut verdict::Runs) -> Figure {
 impl Model for Paper {
     type Params = P;
     type Results = Results;
-
-    fn declare() -> Declaration<P, Results> {
-        Declaration {
-            readouts: vec![
-                ReadoutDef::formatted("claims", "claims checked", "", |r| {
-                    count(r.tour.claims.len())
-                }),
-                ReadoutDef::formatted("confirmed", "claims confirmed", "", |r| {
-                    count(r.count(Verdict::Confirmed))
-                }),
-                ReadoutDef::formatted("differs", "claims that differ", "", |r| {
-                    count(r.count(Verdict::Differs))
-                }),
-            ],
-            plots: EXHIBITS
-                .iter()
-                .map(|e| PlotSpec {
-                    key: e.id,
-                    title: e.place,
-                    aspect: 1.6,
-                })
-                .collect(),
-            primary_plot: "fig1a",
-            ..Declaration::new("paper", "The paper, checked", text::SUMMARY)
-        }
-    }
 
     fn step(&mut self, _p: &P) -> Option<Results> {
         let mut runs = verdict::Runs::default();
@@ -124,6 +95,10 @@ impl Model for Paper {
 
     fn tour(&self, _p: &P, r: &Results) -> Option<Tour> {
         Some(r.tour.clone())
+    }
+
+    fn declare() -> Declaration<P, Results> {
+        declaration::declaration()
     }
 }
 

@@ -6,6 +6,30 @@
 
 use crate::t;
 
+/// A demo in one state: the demo and its URL query (without `demo=`).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct State {
+    /// The demo's id.
+    pub demo: &'static str,
+    /// Its URL query (without `demo=`; empty: its defaults).
+    pub query: &'static str,
+}
+
+impl State {
+    const fn new(demo: &'static str, query: &'static str) -> Self {
+        Self { demo, query }
+    }
+}
+
+/// The quarter car at its defaults (Figure 1).
+const QUARTER_CAR: State = State::new("quarter-car", "");
+/// The circuit of Figure 2.
+const FIG2: State = State::new("rlc", "R=5&L=0.5&C=0.02&V0=12");
+/// The lightly damped oscillator of Figure 3.
+const FIG3: State = State::new("resonance", "zeta=0.05&r=1");
+/// The integrators' test problem of Figure 4 and Table 3.
+const FIG4: State = State::new("integrators", "zeta=0.05&wn=2&h=0.3");
+
 /// A figure or table of the paper, reproduced live by a demo.
 pub(super) struct Exhibit {
     /// Stable id, also the thumbnail's plot key (`fig1a`, `table1`, …).
@@ -15,10 +39,8 @@ pub(super) struct Exhibit {
     pub place: &'static str,
     /// What it shows, paraphrased, in the interface language.
     pub shows: fn() -> String,
-    /// The demo and query that reproduce it.
-    pub demo: &'static str,
-    /// URL query of that demo (without `demo=`).
-    pub query: &'static str,
+    /// The demo state that reproduces it.
+    pub at: State,
     /// Which of that demo's plots is its thumbnail.
     pub plot: &'static str,
 }
@@ -59,10 +81,8 @@ pub(super) struct ClaimDef {
     /// What the paper says, paraphrased (never quoted at length), in the interface
     /// language.
     pub says: fn() -> String,
-    /// The demo that shows the value.
-    pub demo: &'static str,
-    /// URL query of that demo (without `demo=`).
-    pub query: &'static str,
+    /// The demo state that shows the value.
+    pub at: State,
     /// The check.
     pub check: Check,
     /// Unit of the values, for formatting.
@@ -109,96 +129,84 @@ pub(super) const EXHIBITS: &[Exhibit] = &[
         id: "fig1a",
         place: "Figure 1(a)",
         shows: || t!("paper-exhibit-fig1a"),
-        demo: "quarter-car",
-        query: "",
+        at: QUARTER_CAR,
         plot: "response",
     },
     Exhibit {
         id: "fig1b",
         place: "Figure 1(b)",
         shows: || t!("paper-exhibit-fig1b"),
-        demo: "quarter-car",
-        query: "",
+        at: QUARTER_CAR,
         plot: "settling",
     },
     Exhibit {
         id: "fig2a",
         place: "Figure 2(a)",
         shows: || t!("paper-exhibit-fig2a"),
-        demo: "rlc",
-        query: "R=5&L=0.5&C=0.02&V0=12",
+        at: FIG2,
         plot: "current",
     },
     Exhibit {
         id: "fig2b",
         place: "Figure 2(b)",
         shows: || t!("paper-exhibit-fig2b"),
-        demo: "rlc",
-        query: "R=5&L=0.5&C=0.02&V0=12",
+        at: FIG2,
         plot: "voltage",
     },
     Exhibit {
         id: "fig3a",
         place: "Figure 3(a)",
         shows: || t!("paper-exhibit-fig3a"),
-        demo: "resonance",
-        query: "zeta=0.05&r=1",
+        at: FIG3,
         plot: "magnitude",
     },
     Exhibit {
         id: "fig3b",
         place: "Figure 3(b)",
         shows: || t!("paper-exhibit-fig3b"),
-        demo: "resonance",
-        query: "zeta=0.05&r=1",
+        at: FIG3,
         plot: "phase",
     },
     Exhibit {
         id: "fig4a",
         place: "Figure 4(a)",
         shows: || t!("paper-exhibit-fig4a"),
-        demo: "integrators",
-        query: "zeta=0.05&wn=2&h=0.3",
+        at: FIG4,
         plot: "response",
     },
     Exhibit {
         id: "fig4b",
         place: "Figure 4(b)",
         shows: || t!("paper-exhibit-fig4b"),
-        demo: "integrators",
-        query: "zeta=0.05&wn=2&h=0.3",
+        at: FIG4,
         plot: "convergence",
     },
     Exhibit {
         id: "fig5",
         place: "Figure 5",
         shows: || t!("paper-exhibit-fig5"),
-        demo: "universality",
-        query: "",
+        at: State::new("universality", ""),
         plot: "",
     },
     Exhibit {
         id: "table1",
         place: "Table 1",
         shows: || t!("paper-exhibit-table1"),
-        demo: "analogy",
-        query: "",
+        at: State::new("analogy", ""),
         plot: "",
     },
     Exhibit {
         id: "table2",
         place: "Table 2",
         shows: || t!("paper-exhibit-table2"),
-        demo: "regimes",
-        query: "",
+        at: State::new("regimes", ""),
         plot: "",
     },
     Exhibit {
         id: "table3",
         place: "Table 3",
         shows: || t!("paper-exhibit-table3"),
-        demo: "integrators",
-        query: "zeta=0.05&wn=2&h=0.3",
+        at: FIG4,
         plot: "stability",
     },
 ];
@@ -210,8 +218,7 @@ pub(super) const CLAIMS: &[ClaimDef] = &[
         beside: "fig1b",
         place: Place::Figure("1(b)"),
         says: || t!("paper-claim-fig1-zeta-optimum"),
-        demo: "quarter-car",
-        query: "band=5",
+        at: State::new("quarter-car", "band=5"),
         check: Check::Near {
             readout: "zeta_argmin",
             claimed: 0.7,
@@ -229,8 +236,7 @@ pub(super) const CLAIMS: &[ClaimDef] = &[
         beside: "fig1b",
         place: Place::Section("3"),
         says: || t!("paper-claim-sec3-natural-frequency"),
-        demo: "quarter-car",
-        query: "m=300&k=24000",
+        at: State::new("quarter-car", "m=300&k=24000"),
         check: Check::Near {
             readout: "wn",
             claimed: 8.9,
@@ -248,8 +254,7 @@ pub(super) const CLAIMS: &[ClaimDef] = &[
         beside: "fig2b",
         place: Place::Section("4"),
         says: || t!("paper-claim-sec4-critical-resistance"),
-        demo: "rlc",
-        query: "R=10&L=0.5&C=0.02&V0=12",
+        at: State::new("rlc", "R=10&L=0.5&C=0.02&V0=12"),
         check: Check::Near {
             readout: "R_crit",
             claimed: 10.0,
@@ -263,8 +268,7 @@ pub(super) const CLAIMS: &[ClaimDef] = &[
         beside: "fig3a",
         place: Place::Figure("3"),
         says: || t!("paper-claim-fig3-q-factor"),
-        demo: "resonance",
-        query: "zeta=0.05&r=1",
+        at: FIG3,
         check: Check::Near {
             readout: "Q",
             claimed: 10.0,
@@ -278,8 +282,7 @@ pub(super) const CLAIMS: &[ClaimDef] = &[
         beside: "fig3a",
         place: Place::Figure("3"),
         says: || t!("paper-claim-fig3-q-factor-light"),
-        demo: "resonance",
-        query: "zeta=0.01&r=1",
+        at: State::new("resonance", "zeta=0.01&r=1"),
         check: Check::Near {
             readout: "Q",
             claimed: 50.0,
@@ -293,8 +296,7 @@ pub(super) const CLAIMS: &[ClaimDef] = &[
         beside: "fig3b",
         place: Place::Section("5"),
         says: || t!("paper-claim-sec5-peak-frequency"),
-        demo: "resonance",
-        query: "zeta=0.1&r=1",
+        at: State::new("resonance", "zeta=0.1&r=1"),
         check: Check::PeakFormula {
             zeta: 0.1,
             tol: 1e-6,
@@ -307,8 +309,7 @@ pub(super) const CLAIMS: &[ClaimDef] = &[
         beside: "fig4a",
         place: Place::SectionFigure("6.5", "4(a)"),
         says: || t!("paper-claim-fig4-euler-error"),
-        demo: "integrators",
-        query: "zeta=0.05&wn=2&h=0.3",
+        at: FIG4,
         check: Check::Near {
             readout: "max_err_euler",
             claimed: 0.08,
@@ -326,8 +327,7 @@ pub(super) const CLAIMS: &[ClaimDef] = &[
         beside: "fig4a",
         place: Place::SectionFigure("6.5", "4(a)"),
         says: || t!("paper-claim-fig4-rk4-error"),
-        demo: "integrators",
-        query: "zeta=0.05&wn=2&h=0.3",
+        at: FIG4,
         check: Check::Below {
             readout: "max_err_rk4",
             bound: 0.001,
@@ -344,8 +344,7 @@ pub(super) const CLAIMS: &[ClaimDef] = &[
         beside: "fig4b",
         place: Place::Figure("4(b)"),
         says: || t!("paper-claim-fig4-euler-slope"),
-        demo: "integrators",
-        query: "zeta=0.05&wn=2&h=0.3",
+        at: FIG4,
         check: Check::Slope {
             claimed: 1.0,
             tol: 0.15,
@@ -362,8 +361,7 @@ pub(super) const CLAIMS: &[ClaimDef] = &[
         beside: "",
         place: Place::Section("7.2"),
         says: || t!("paper-claim-sec7-mass-tolerance"),
-        demo: "uncertainty",
-        query: "system=0&m=300&k=24000&zeta=1&dm=10",
+        at: State::new("uncertainty", "system=0&m=300&k=24000&zeta=1&dm=10"),
         check: Check::Range {
             lo: "zeta_min",
             hi: "zeta_max",

@@ -120,7 +120,7 @@ pub(super) fn exhibit(e: &Exhibit) -> ExhibitView {
         id: e.id,
         place: place(e),
         shows: (e.shows)(),
-        link: link(e.demo, e.query),
+        link: link(e.at.demo, e.at.query),
     }
 }
 
@@ -151,7 +151,7 @@ fn euler_slope(frame_query: &str) -> Option<(f64, f64, f64)> {
 
 /// Checks one claim; `None` only if its demo is missing from the registry.
 pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
-    let frame = runs.get(def.demo, def.query)?;
+    let frame = runs.get(def.at.demo, def.at.query)?;
     // The paper's numbers carry two or three digits.
     let fmt = |v: f64| si(v, def.unit, 3);
     let (claimed, computed, agrees, why) = match def.check {
@@ -222,7 +222,7 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
             (si(formula, "", 6), si(found, "", 6), agrees, why)
         }
         Check::Slope { claimed, tol } => {
-            let (slope, h_min, h_max) = euler_slope(def.query)?;
+            let (slope, h_min, h_max) = euler_slope(def.at.query)?;
             let agrees = (slope - claimed).abs() <= tol;
             let why = t!(
                 "paper-slope",
@@ -236,11 +236,11 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
     let mut reason = why;
     if let Some(ctx) = &def.context {
         let query = if ctx.query.is_empty() {
-            def.query
+            def.at.query
         } else {
             ctx.query
         };
-        if let Some((_, shown)) = readout(runs.get(def.demo, query)?, ctx.readout) {
+        if let Some((_, shown)) = readout(runs.get(def.at.demo, query)?, ctx.readout) {
             // Two sentences: the catalogue decides how they join (a space, or none).
             reason = t!(
                 "paper-reason-context",
@@ -254,7 +254,7 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
         place: def.place.text(),
         beside: def.beside,
         says: (def.says)(),
-        link: link(def.demo, def.query),
+        link: link(def.at.demo, def.at.query),
         claimed,
         computed,
         verdict: if agrees {

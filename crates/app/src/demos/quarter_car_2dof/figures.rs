@@ -10,11 +10,6 @@ use std::f64::consts::TAU;
 use zeta_solver::two_dof::{TwoDof, G};
 use zeta_solver::two_dof_exact::ExactMetrics;
 
-pub(super) const MOTION_TITLE: &str = "Body, wheel and road";
-pub(super) const ACCEL_TITLE: &str = "Body acceleration";
-pub(super) const FRF_TITLE: &str = "Frequency response per unit road height";
-pub(super) const TYRE_TITLE: &str = "Tyre deflection";
-
 /// Every `stride`-th state is plotted once a run exceeds this many points.
 const PLOT_POINTS: usize = 1000;
 
@@ -56,6 +51,11 @@ fn range_with_legend(values: impl Iterator<Item = f64>, empty: f64, headroom: f6
     y
 }
 
+/// An empty plot against time over the run, `0 … t_end` \[s\], with this y axis.
+fn over_run(title: String, t_end: f64, y: Axis) -> Figure {
+    Figure::plot(title, Axis::linear(t!("axis-time"), "s", (0.0, t_end)), y)
+}
+
 /// Body, wheel and road heights over the run.
 pub(super) fn motion(run: &Run, t_end: f64, kind: RoadKind) -> Figure {
     let road = sampled(run, |_, u| u);
@@ -64,9 +64,9 @@ pub(super) fn motion(run: &Run, t_end: f64, kind: RoadKind) -> Figure {
     let all = road.iter().chain(&body).chain(&wheel).map(|p| p.1);
     let y = range_with_legend(all, 0.05, 0.35);
     let description = text::describe_motion(kind, peak(&road).1, peak(&body), peak(&wheel));
-    Figure::plot(
+    over_run(
         t!("quarter-car-2dof-plot-motion"),
-        Axis::linear(t!("axis-time"), "s", (0.0, t_end)),
+        t_end,
         Axis::linear(t!("quarter-car-2dof-axis-height"), "m", y),
     )
     .with_line(
@@ -104,9 +104,9 @@ pub(super) fn acceleration(
     let peak = lo.abs().max(hi.abs());
     let rms = m.map(|m| m.rms_body_acceleration);
     let description = text::describe_acceleration(peak, peak / G, m);
-    let mut fig = Figure::plot(
+    let mut fig = over_run(
         t!("quarter-car-2dof-plot-accel"),
-        Axis::linear(t!("axis-time"), "s", (0.0, t_end)),
+        t_end,
         Axis::linear(t!("quarter-car-2dof-axis-acceleration"), "m/s²", y),
     )
     .with_line(
@@ -156,9 +156,9 @@ pub(super) fn tyre(run: &Run, t_end: f64, static_tyre: f64, m: Option<ExactMetri
     let top = if shows_limit { hi.max(static_tyre) } else { hi };
     let mut y = padded((lo, top.max(lo + 1e-6)), 0.08);
     y.1 += 0.3 * (y.1 - y.0);
-    let mut fig = Figure::plot(
+    let mut fig = over_run(
         t!("quarter-car-2dof-plot-tyre"),
-        Axis::linear(t!("axis-time"), "s", (0.0, t_end)),
+        t_end,
         Axis::linear(t!("quarter-car-2dof-axis-tyre-deflection"), "m", y),
     )
     .with_line("z_u − u", defl, LineStyle::solid(Ink::Blue, 2.0));

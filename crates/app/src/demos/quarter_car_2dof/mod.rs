@@ -5,10 +5,12 @@
 //! body acceleration; tyre deflection with the time off the road; and the frequency
 //! responses with the two modes, body bounce and wheel hop.
 //!
-//! This file declares the demo and holds its model step; `readouts.rs` is the readout
-//! table; `run.rs` keeps the road and the exact run between updates; `figures.rs` and
-//! `schematic.rs` draw; `text.rs` holds the prose.
+//! This file holds the model step; `declaration.rs` declares the demo (parameters and
+//! plots as tables) and `readouts.rs` is its readout table; `run.rs` keeps the road and
+//! the exact run between updates; `figures.rs` and `schematic.rs` draw; `text.rs` holds
+//! the prose.
 
+mod declaration;
 mod figures;
 mod readouts;
 mod run;
@@ -16,9 +18,8 @@ mod schematic;
 mod text;
 
 use super::Model;
-use crate::declare::{choice_enum, Choice, Declaration, Param};
+use crate::declare::{choice_enum, Choice, Declaration};
 use crate::figure::Figure;
-use crate::spec::PlotSpec;
 use run::Run;
 use std::f64::consts::TAU;
 use zeta_solver::ride::{stationary, Stationary};
@@ -152,131 +153,6 @@ impl Model for QuarterCar2Dof {
     type Params = P;
     type Results = Results;
 
-    fn declare() -> Declaration<P, Results> {
-        let d = P::default();
-        Declaration {
-            equation_mathml: text::EQUATION,
-            params: vec![
-                Param::linear(
-                    "ms",
-                    "body (sprung) mass",
-                    "m_s",
-                    "kg",
-                    (100.0, 800.0, 1.0),
-                    d.ms,
-                    |p, v| p.ms = v,
-                ),
-                Param::linear(
-                    "mu",
-                    "wheel (unsprung) mass",
-                    "m_u",
-                    "kg",
-                    (10.0, 150.0, 1.0),
-                    d.mu,
-                    |p, v| p.mu = v,
-                ),
-                Param::linear(
-                    "ks",
-                    "suspension stiffness",
-                    "k_s",
-                    "N/m",
-                    (5_000.0, 80_000.0, 100.0),
-                    d.ks,
-                    |p, v| p.ks = v,
-                ),
-                Param::linear(
-                    "kt",
-                    "tyre stiffness",
-                    "k_t",
-                    "N/m",
-                    (50_000.0, 500_000.0, 1_000.0),
-                    d.kt,
-                    |p, v| p.kt = v,
-                ),
-                Param::linear(
-                    "cs",
-                    "suspension damping",
-                    "c_s",
-                    "N·s/m",
-                    (0.0, 8_000.0, 10.0),
-                    d.cs,
-                    |p, v| p.cs = v,
-                ),
-                Param::choice("road", "road input", d.road, |p, v| p.road = v),
-                Param::linear(
-                    "h",
-                    "bump or step height, sine amplitude",
-                    "h",
-                    "m",
-                    (0.005, 0.2, 0.001),
-                    d.h,
-                    |p, v| p.h = v,
-                ),
-                Param::linear(
-                    "L",
-                    "bump length",
-                    "L",
-                    "m",
-                    (0.1, 5.0, 0.05),
-                    d.l,
-                    |p, v| p.l = v,
-                ),
-                Param::linear("V", "speed", "V", "m/s", (2.0, 40.0, 0.5), d.v, |p, v| {
-                    p.v = v
-                }),
-                Param::log(
-                    "f_road",
-                    "sine road frequency",
-                    "f",
-                    "Hz",
-                    (0.2, 30.0, 0.01),
-                    d.f_road,
-                    |p, v| p.f_road = v,
-                ),
-                Param::choice("class", "random road class", d.class, |p, v| p.class = v),
-                Param::linear(
-                    "seed",
-                    "random road seed",
-                    "seed",
-                    "",
-                    (1.0, 999.0, 1.0),
-                    d.seed,
-                    |p, v| p.seed = v,
-                ),
-            ],
-            readouts: readouts::table(),
-            plots: vec![
-                PlotSpec {
-                    key: "motion",
-                    title: figures::MOTION_TITLE,
-                    aspect: 2.0,
-                },
-                PlotSpec {
-                    key: "accel",
-                    title: figures::ACCEL_TITLE,
-                    aspect: 1.25,
-                },
-                PlotSpec {
-                    key: "frf",
-                    title: figures::FRF_TITLE,
-                    aspect: 2.0,
-                },
-                PlotSpec {
-                    key: "tyre",
-                    title: figures::TYRE_TITLE,
-                    aspect: 1.25,
-                },
-            ],
-            presets: text::presets(),
-            schematic: true,
-            ..Declaration::new(
-                "quarter-car-2dof",
-                "Quarter car with body and wheel",
-                text::SUMMARY,
-            )
-        }
-    }
-
     fn step(&mut self, p: &P) -> Option<Results> {
         let car = p.car()?;
         let [f_body, f_wheel] = car.natural_frequencies_hz();
@@ -327,6 +203,10 @@ impl Model for QuarterCar2Dof {
             p.v,
             t,
         ))
+    }
+
+    fn declare() -> Declaration<P, Results> {
+        declaration::declaration()
     }
 }
 

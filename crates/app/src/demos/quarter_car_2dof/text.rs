@@ -130,21 +130,14 @@ pub(super) fn describe_car(t: f64, body: f64, wheel: f64, road: f64) -> String {
     )
 }
 
-/// A preset: the default car with `changes`.
-fn preset(label: &'static str, changes: &[(&'static str, f64)]) -> Preset {
-    let mut values = vec![
-        ("ms", 300.0),
-        ("mu", 40.0),
-        ("ks", 24_000.0),
-        ("kt", 200_000.0),
-        ("cs", 1_500.0),
-    ];
-    values.extend_from_slice(changes);
-    Preset { label, values }
-}
-
-/// One-click configurations: roads that show each mode and each kind of road.
-pub(super) fn presets() -> Vec<Preset> {
+/// One-click configurations: roads that show each mode and each kind of road. Each sets
+/// the `car`'s parameters (their declared defaults), then its changes.
+pub(super) fn presets(car: &[(&'static str, f64)]) -> Vec<Preset> {
+    let preset = |label, changes: &[(&'static str, f64)]| {
+        let mut values = car.to_vec();
+        values.extend_from_slice(changes);
+        Preset { label, values }
+    };
     vec![
         preset(
             "Speed bump 5 cm at 10 m/s",

@@ -14,9 +14,6 @@ const SAMPLES: usize = 600;
 /// At most this many samples of a fast machine on A's time axis.
 const MAX_SAMPLES: usize = 4000;
 
-pub(super) const NORMALISED_TITLE: &str = "Normalised responses y/y₀ against ωₙt";
-pub(super) const REALTIME_TITLE: &str = "Responses in real time";
-
 /// The free response of `one` released from rest at `y₀ = 1`.
 fn released(one: &One) -> FreeResponse {
     FreeResponse::new(one.sys, 1.0, 0.0)

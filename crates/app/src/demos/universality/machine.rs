@@ -2,12 +2,13 @@
 //! target by the solver's inverse, and what the page needs to say about it: the units of
 //! its coefficients, its coordinate, the slider ranges and which sliders "match" moves.
 
-use super::params::{pick, Kind, Values};
+use super::params::{self, pick, Kind, Values};
+use crate::declare::Param;
 use zeta_solver::machines::{
     DcServo, Machine, MassSpringDamper, MatchError, SeriesRlc, Storey, Target, TwoCapacityThermal,
     UTube,
 };
-use zeta_solver::{ModelError, SecondOrder};
+use zeta_solver::SecondOrder;
 
 // Slider ranges `(min, max, step)`, one per quantity, shared by both slots. The ranges of
 // the parameters that "match" tunes are also where the tuned values must land.
@@ -37,58 +38,65 @@ pub(super) const RTH: (f64, f64, f64) = (1e-3, 1e3, 1e-4);
 pub(super) const COLUMNS: f64 = 4.0;
 
 /// The coefficients of machine `kind` with slider values `v`.
-pub(super) fn system(kind: Kind, v: &Values) -> Result<SecondOrder, ModelError> {
-    Ok(match kind {
-        Kind::MassSpring => MassSpringDamper::new(v.m, v.c, v.k)?.system(),
-        Kind::Rlc => SeriesRlc::new(v.l, v.r, v.cap)?.system(),
-        Kind::UTube => UTube::new(v.len, v.bore, v.rho, v.mu)?.system(),
-        Kind::Servo => DcServo::new(v.j, v.kt, v.ra, v.kp, v.kd)?.system(),
-        Kind::Storey => Storey::new(v.mf, v.h, v.ei, COLUMNS, v.cf)?.system(),
-        Kind::Thermal => TwoCapacityThermal::new(v.c1, v.r1, v.c2, v.r2)?.system(),
-    })
+pub(super) fn system(kind: Kind, v: &Values) -> Result<SecondOrder, MatchError> {
+    solve(kind, v, None).map(|(sys, _)| sys)
 }
 
 /// The slider values of machine `kind` tuned by the solver to `target`: the two tuning
 /// parameters solved for, everything else kept.
 pub(super) fn tune(kind: Kind, v: &Values, target: Target) -> Result<Values, MatchError> {
+    solve(kind, v, Some(target)).map(|(_, tuned)| tuned)
+}
+
+/// Machine `kind` built by the solver from slider values `v` and, given a `target`, tuned
+/// to it: its coefficients, and `v` with the two tuning parameters as the machine has them.
+fn solve(
+    kind: Kind,
+    v: &Values,
+    target: Option<Target>,
+) -> Result<(SecondOrder, Values), MatchError> {
     let mut out = *v;
-    match kind {
+    let sys = match kind {
         Kind::MassSpring => {
-            let (_, c, k) = MassSpringDamper::new(v.m, v.c, v.k)?
-                .matched(target)?
-                .params();
-            (out.c, out.k) = (c, k);
+            let m = tuned_to(MassSpringDamper::new(v.m, v.c, v.k)?, target)?;
+            (_, out.c, out.k) = m.params();
+            m.system()
         }
         Kind::Rlc => {
-            let (_, r, cap) = SeriesRlc::new(v.l, v.r, v.cap)?.matched(target)?.params();
-            (out.r, out.cap) = (r, cap);
+            let m = tuned_to(SeriesRlc::new(v.l, v.r, v.cap)?, target)?;
+            (_, out.r, out.cap) = m.params();
+            m.system()
         }
         Kind::UTube => {
-            let (len, _, _, mu) = UTube::new(v.len, v.bore, v.rho, v.mu)?
-                .matched(target)?
-                .params();
-            (out.len, out.mu) = (len, mu);
+            let m = tuned_to(UTube::new(v.len, v.bore, v.rho, v.mu)?, target)?;
+            (out.len, _, _, out.mu) = m.params();
+            m.system()
         }
         Kind::Servo => {
-            let (_, _, _, kp, kd) = DcServo::new(v.j, v.kt, v.ra, v.kp, v.kd)?
-                .matched(target)?
-                .params();
-            (out.kp, out.kd) = (kp, kd);
+            let m = tuned_to(DcServo::new(v.j, v.kt, v.ra, v.kp, v.kd)?, target)?;
+            (_, _, _, out.kp, out.kd) = m.params();
+            m.system()
         }
         Kind::Storey => {
-            let (_, _, ei, _, cf) = Storey::new(v.mf, v.h, v.ei, COLUMNS, v.cf)?
-                .matched(target)?
-                .params();
-            (out.ei, out.cf) = (ei, cf);
+            let m = tuned_to(Storey::new(v.mf, v.h, v.ei, COLUMNS, v.cf)?, target)?;
+            (_, _, out.ei, _, out.cf) = m.params();
+            m.system()
         }
         Kind::Thermal => {
-            let (_, r1, _, r2) = TwoCapacityThermal::new(v.c1, v.r1, v.c2, v.r2)?
-                .matched(target)?
-                .params();
-            (out.r1, out.r2) = (r1, r2);
+            let m = tuned_to(TwoCapacityThermal::new(v.c1, v.r1, v.c2, v.r2)?, target)?;
+            (_, out.r1, _, out.r2) = m.params();
+            m.system()
         }
+    };
+    Ok((sys, out))
+}
+
+/// `m` tuned to `target`, or as it is without one.
+fn tuned_to<M: Machine>(m: M, target: Option<Target>) -> Result<M, MatchError> {
+    match target {
+        Some(t) => m.matched(t),
+        None => Ok(m),
     }
-    Ok(out)
 }
 
 /// One slider that "match" moves: URL key, symbol, unit, allowed range and tuned value.
@@ -100,41 +108,36 @@ pub(super) struct Tuned {
     pub value: f64,
 }
 
-/// The two sliders of slot `slot` that "match" moves for machine `kind`, at values `v`.
-pub(super) fn tuned(kind: Kind, slot: usize, v: &Values) -> [Tuned; 2] {
-    let t = |a, b, symbol, unit, range: (f64, f64, f64), value| Tuned {
-        key: pick(slot, a, b),
-        symbol,
-        unit,
-        range: (range.0, range.1),
-        value,
+/// The two sliders of slot `slot` that "match" moves for machine `kind`, at values `v`;
+/// symbol, unit and range as the slot's parameter table declares them.
+pub(super) fn tuned(kind: Kind, slot: usize, v: &Values) -> Vec<Tuned> {
+    let moved = match kind {
+        Kind::MassSpring => [("A_k", "B_k", v.k), ("A_c", "B_c", v.c)],
+        Kind::Rlc => [("A_C", "B_C", v.cap), ("A_R", "B_R", v.r)],
+        Kind::UTube => [("A_len", "B_len", v.len), ("A_mu", "B_mu", v.mu)],
+        Kind::Servo => [("A_Kp", "B_Kp", v.kp), ("A_Kd", "B_Kd", v.kd)],
+        Kind::Storey => [("A_EI", "B_EI", v.ei), ("A_cf", "B_cf", v.cf)],
+        Kind::Thermal => [("A_R1", "B_R1", v.r1), ("A_R2", "B_R2", v.r2)],
     };
-    match kind {
-        Kind::MassSpring => [
-            t("A_k", "B_k", "k", "N/m", K, v.k),
-            t("A_c", "B_c", "c", "N·s/m", C, v.c),
-        ],
-        Kind::Rlc => [
-            t("A_C", "B_C", "C", "F", CAP, v.cap),
-            t("A_R", "B_R", "R", "Ω", R, v.r),
-        ],
-        Kind::UTube => [
-            t("A_len", "B_len", "L", "m", LEN, v.len),
-            t("A_mu", "B_mu", "μ", "Pa·s", MU, v.mu),
-        ],
-        Kind::Servo => [
-            t("A_Kp", "B_Kp", "K_p", "V/rad", KP, v.kp),
-            t("A_Kd", "B_Kd", "K_d", "V·s/rad", KD, v.kd),
-        ],
-        Kind::Storey => [
-            t("A_EI", "B_EI", "EI", "N·m²", EI, v.ei),
-            t("A_cf", "B_cf", "c", "N·s/m", CF, v.cf),
-        ],
-        Kind::Thermal => [
-            t("A_R1", "B_R1", "R₁", "K/W", RTH, v.r1),
-            t("A_R2", "B_R2", "R₂", "K/W", RTH, v.r2),
-        ],
-    }
+    let declared = if slot == 0 {
+        params::slot::<0>()
+    } else {
+        params::slot::<1>()
+    };
+    moved
+        .into_iter()
+        .filter_map(|(a, b, value)| {
+            let key = pick(slot, a, b);
+            let spec = declared.iter().map(Param::spec).find(|s| s.key == key)?;
+            Some(Tuned {
+                key,
+                symbol: spec.symbol,
+                unit: spec.unit,
+                range: (spec.min, spec.max),
+                value,
+            })
+        })
+        .collect()
 }
 
 /// Units of the coefficients `(a, b, c)` of machine `kind`.

@@ -7,19 +7,22 @@
 //! "Match" tunes B by the solver's inverse so that its ωₙ and ζ equal A's; the tuned
 //! sliders are published as derived parameters, so the page moves them.
 //!
-//! Files: `params.rs` (the parameter table), `machine.rs` (solver glue), `figures.rs`,
-//! `drawings.rs` (schematics of the new machines), `text.rs` (prose).
+//! Files: this one holds the model step; `declaration.rs` declares the demo (readouts,
+//! plots and presets), `params.rs` is the parameter table, `machine.rs` the solver glue;
+//! `figures.rs` and `drawings.rs` (schematics of the new machines) draw; `text.rs` holds
+//! the prose.
 
+mod declaration;
 mod drawings;
 mod figures;
 mod machine;
 mod params;
 mod text;
 
+use super::rows;
 use super::Model;
-use crate::declare::{Declaration, Param, ReadoutDef};
+use crate::declare::Declaration;
 use crate::figure::Figure;
-use crate::spec::{PlotSpec, Preset};
 use params::{Kind, Values, P};
 use zeta_solver::machines::{MatchError, Target};
 use zeta_solver::SecondOrder;
@@ -111,39 +114,6 @@ impl Model for Universality {
     type Params = P;
     type Results = Results;
 
-    fn declare() -> Declaration<P, Results> {
-        let mut params = params::slot::<0>();
-        params.extend(params::slot::<1>());
-        params.push(Param::toggle(
-            "match",
-            "match: tune B to behave like A (same ωₙ and ζ)",
-            false,
-            |p, on| p.matched = on,
-        ));
-        Declaration {
-            equation_mathml: text::EQUATION,
-            params,
-            readouts: readouts(),
-            plots: vec![
-                PlotSpec {
-                    key: "normalised",
-                    title: figures::NORMALISED_TITLE,
-                    aspect: 1.9,
-                },
-                PlotSpec {
-                    key: "realtime",
-                    title: figures::REALTIME_TITLE,
-                    aspect: 1.9,
-                },
-            ],
-            primary_plot: "normalised",
-            presets: presets(),
-            table: Some(text::table()),
-            schematic: true,
-            ..Declaration::new("universality", "One equation, many machines", text::SUMMARY)
-        }
-    }
-
     fn step(&mut self, p: &P) -> Option<Results> {
         self.derived.clear();
         let (m, matching, derived) = resolve(p)?;
@@ -158,7 +128,7 @@ impl Model for Universality {
     }
 
     fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![figures::normalised(r), figures::realtime(r)]
+        rows::figures(&declaration::PLOTS, r)
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {
@@ -175,6 +145,10 @@ impl Model for Universality {
 
     fn sonify(&self, p: &P, t: f64) -> Option<f64> {
         Some(figures::normalised_at(&resolve(p)?.0[0], t))
+    }
+
+    fn declare() -> Declaration<P, Results> {
+        declaration::declaration()
     }
 }
 
@@ -217,111 +191,6 @@ fn resolve(p: &P) -> Option<Resolved> {
         }
     };
     Some(([a, One::new(kind_b, v_b)?], matching, derived))
-}
-
-/// `(value, text)` of coefficient `i` (0: a, 1: b, 2: c) of machine `slot`, in its units.
-fn coefficient(r: &Results, slot: usize, i: usize) -> Option<(f64, String)> {
-    let one = &r.m[slot];
-    let v = [one.sys.inertia(), one.sys.damping(), one.sys.stiffness()][i];
-    Some((v, text::amount(v, machine::units(one.kind)[i])))
-}
-
-fn readouts() -> Vec<ReadoutDef<Results>> {
-    let mut rows = slot_readouts::<0>();
-    rows.extend(slot_readouts::<1>());
-    rows.extend([
-        ReadoutDef::number(
-            "wn_ratio",
-            "time-scale ratio ωₙ(B)/ωₙ(A)",
-            "",
-            4,
-            |r: &Results| Some(r.m[1].wn() / r.m[0].wn()),
-        ),
-        ReadoutDef::text("match", "match", |r| text::matching(&r.matching)),
-    ]);
-    rows
-}
-
-/// Slot `S`'s coefficients, natural frequency, damping ratio and regime.
-fn slot_readouts<const S: usize>() -> Vec<ReadoutDef<Results>> {
-    let name = |a: &'static str, b| params::pick(S, a, b);
-    vec![
-        ReadoutDef::formatted(
-            name("a_A", "a_B"),
-            name("inertia coefficient a of A", "inertia coefficient a of B"),
-            "",
-            |r| coefficient(r, S, 0),
-        ),
-        ReadoutDef::formatted(
-            name("b_A", "b_B"),
-            name("damping coefficient b of A", "damping coefficient b of B"),
-            "",
-            |r| coefficient(r, S, 1),
-        ),
-        ReadoutDef::formatted(
-            name("c_A", "c_B"),
-            name(
-                "stiffness coefficient c of A",
-                "stiffness coefficient c of B",
-            ),
-            "",
-            |r| coefficient(r, S, 2),
-        ),
-        ReadoutDef::number(
-            name("wn_A", "wn_B"),
-            name("natural frequency ωₙ of A", "natural frequency ωₙ of B"),
-            "rad/s",
-            4,
-            |r| r.m[S].sys.natural_frequency(),
-        ),
-        ReadoutDef::number(
-            name("zeta_A", "zeta_B"),
-            name("damping ratio ζ of A", "damping ratio ζ of B"),
-            "",
-            4,
-            |r| r.m[S].sys.damping_ratio(),
-        ),
-        ReadoutDef::text(
-            name("regime_A", "regime_B"),
-            name("regime of A", "regime of B"),
-            |r| crate::format::regime(r.m[S].sys.regime()),
-        ),
-    ]
-}
-
-fn presets() -> Vec<Preset> {
-    use crate::declare::Choice;
-    let kinds = |a: Kind, b: Kind, on: bool| {
-        vec![
-            ("A", a.index() as f64),
-            ("B", b.index() as f64),
-            ("match", if on { 1.0 } else { 0.0 }),
-        ]
-    };
-    let mut fast_thermometer = kinds(Kind::Thermal, Kind::MassSpring, true);
-    fast_thermometer.extend([("A_C1", 5.0), ("A_R1", 0.5), ("A_C2", 1.0), ("A_R2", 2.0)]);
-    vec![
-        Preset {
-            label: "Mass–spring and RLC circuit, matched",
-            values: kinds(Kind::MassSpring, Kind::Rlc, true),
-        },
-        Preset {
-            label: "U-tube manometer and mass–spring, matched",
-            values: kinds(Kind::UTube, Kind::MassSpring, true),
-        },
-        Preset {
-            label: "Building storey tuned like a servo",
-            values: kinds(Kind::Servo, Kind::Storey, true),
-        },
-        Preset {
-            label: "Thermometer (two capacities) and mass–spring, matched",
-            values: fast_thermometer,
-        },
-        Preset {
-            label: "A thermal system cannot match an oscillator",
-            values: kinds(Kind::MassSpring, Kind::Thermal, true),
-        },
-    ]
 }
 
 #[cfg(test)]

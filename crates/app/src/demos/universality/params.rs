@@ -6,6 +6,7 @@ use super::machine::{
     BORE, C, CAP, CF, CTH, EI, H, J, K, KD, KP, KT, L, LEN, M, MF, MU, R, RA, RHO, RTH,
 };
 use crate::declare::{choice_enum, Choice, Param};
+use crate::demos::rows::sliders;
 
 choice_enum! {
     /// The six machines.
@@ -91,289 +92,70 @@ pub(super) const fn pick(slot: usize, a: &'static str, b: &'static str) -> &'sta
     }
 }
 
+/// How many sliders each machine has, in the order of the slider table of [`slot`].
+const MACHINE_SLIDERS: [(Kind, usize); 6] = [
+    (Kind::MassSpring, 3),
+    (Kind::Rlc, 3),
+    (Kind::UTube, 4),
+    (Kind::Servo, 5),
+    (Kind::Storey, 4),
+    (Kind::Thermal, 4),
+];
+
 /// Slot `S`'s machine choice and every machine's sliders, each shown only while its
 /// machine is chosen.
 pub(super) fn slot<const S: usize>() -> Vec<Param<P>> {
     let key = |a, b| pick(S, a, b);
     let choice = key("A", "B");
-    let of = |p: Param<P>, kind: Kind| p.visible_when(choice, kind.index());
-    use Kind::*;
-    vec![
-        Param::choice(
-            choice,
-            key("machine A", "machine B"),
-            DEFAULT_KIND[S],
-            |p, k| p.slots[S].kind = k,
-        ),
+    let sliders = sliders! { P, |p| p.slots[S].v;
         // Mass–spring–damper.
-        of(
-            Param::log(key("A_m", "B_m"), "mass", "m", "kg", M, 1.0, |p, v| {
-                p.slots[S].v.m = v
-            }),
-            MassSpring,
-        ),
-        of(
-            Param::linear(
-                key("A_c", "B_c"),
-                "damping coefficient",
-                "c",
-                "N·s/m",
-                C,
-                2.0,
-                |p, v| p.slots[S].v.c = v,
-            ),
-            MassSpring,
-        ),
-        of(
-            Param::log(
-                key("A_k", "B_k"),
-                "spring rate",
-                "k",
-                "N/m",
-                K,
-                100.0,
-                |p, v| p.slots[S].v.k = v,
-            ),
-            MassSpring,
-        ),
+        log key("A_m", "B_m"), "mass", "m", "kg", M, 1.0 => m;
+        linear key("A_c", "B_c"), "damping coefficient", "c", "N·s/m", C, 2.0 => c;
+        log key("A_k", "B_k"), "spring rate", "k", "N/m", K, 100.0 => k;
         // Series RLC.
-        of(
-            Param::log(key("A_L", "B_L"), "inductance", "L", "H", L, 0.1, |p, v| {
-                p.slots[S].v.l = v
-            }),
-            Rlc,
-        ),
-        of(
-            Param::linear(
-                key("A_R", "B_R"),
-                "resistance",
-                "R",
-                "Ω",
-                R,
-                10.0,
-                |p, v| p.slots[S].v.r = v,
-            ),
-            Rlc,
-        ),
-        of(
-            Param::log(
-                key("A_C", "B_C"),
-                "capacitance",
-                "C",
-                "F",
-                CAP,
-                1e-3,
-                |p, v| p.slots[S].v.cap = v,
-            ),
-            Rlc,
-        ),
+        log key("A_L", "B_L"), "inductance", "L", "H", L, 0.1 => l;
+        linear key("A_R", "B_R"), "resistance", "R", "Ω", R, 10.0 => r;
+        log key("A_C", "B_C"), "capacitance", "C", "F", CAP, 1e-3 => cap;
         // U-tube manometer.
-        of(
-            Param::log(
-                key("A_len", "B_len"),
-                "liquid column length",
-                "L",
-                "m",
-                LEN,
-                0.5,
-                |p, v| p.slots[S].v.len = v,
-            ),
-            UTube,
-        ),
-        of(
-            Param::log(
-                key("A_bore", "B_bore"),
-                "tube bore",
-                "d",
-                "m",
-                BORE,
-                0.01,
-                |p, v| p.slots[S].v.bore = v,
-            ),
-            UTube,
-        ),
-        of(
-            Param::log(
-                key("A_rho", "B_rho"),
-                "liquid density",
-                "ρ",
-                "kg/m³",
-                RHO,
-                1000.0,
-                |p, v| p.slots[S].v.rho = v,
-            ),
-            UTube,
-        ),
-        of(
-            Param::log(
-                key("A_mu", "B_mu"),
-                "dynamic viscosity",
-                "μ",
-                "Pa·s",
-                MU,
-                1e-3,
-                |p, v| p.slots[S].v.mu = v,
-            ),
-            UTube,
-        ),
+        log key("A_len", "B_len"), "liquid column length", "L", "m", LEN, 0.5 => len;
+        log key("A_bore", "B_bore"), "tube bore", "d", "m", BORE, 0.01 => bore;
+        log key("A_rho", "B_rho"), "liquid density", "ρ", "kg/m³", RHO, 1000.0 => rho;
+        log key("A_mu", "B_mu"), "dynamic viscosity", "μ", "Pa·s", MU, 1e-3 => mu;
         // DC-motor servo.
-        of(
-            Param::log(
-                key("A_J", "B_J"),
-                "inertia of motor and load",
-                "J",
-                "kg·m²",
-                J,
-                1e-3,
-                |p, v| p.slots[S].v.j = v,
-            ),
-            Servo,
-        ),
-        of(
-            Param::log(
-                key("A_Kt", "B_Kt"),
-                "motor torque constant",
-                "K_t",
-                "N·m/A",
-                KT,
-                0.1,
-                |p, v| p.slots[S].v.kt = v,
-            ),
-            Servo,
-        ),
-        of(
-            Param::log(
-                key("A_Ra", "B_Ra"),
-                "armature resistance",
-                "R_a",
-                "Ω",
-                RA,
-                2.0,
-                |p, v| p.slots[S].v.ra = v,
-            ),
-            Servo,
-        ),
-        of(
-            Param::log(
-                key("A_Kp", "B_Kp"),
-                "proportional gain",
-                "K_p",
-                "V/rad",
-                KP,
-                20.0,
-                |p, v| p.slots[S].v.kp = v,
-            ),
-            Servo,
-        ),
-        of(
-            Param::linear(
-                key("A_Kd", "B_Kd"),
-                "derivative gain",
-                "K_d",
-                "V·s/rad",
-                KD,
-                0.1,
-                |p, v| p.slots[S].v.kd = v,
-            ),
-            Servo,
-        ),
+        log key("A_J", "B_J"), "inertia of motor and load", "J", "kg·m²", J, 1e-3 => j;
+        log key("A_Kt", "B_Kt"), "motor torque constant", "K_t", "N·m/A", KT, 0.1 => kt;
+        log key("A_Ra", "B_Ra"), "armature resistance", "R_a", "Ω", RA, 2.0 => ra;
+        log key("A_Kp", "B_Kp"), "proportional gain", "K_p", "V/rad", KP, 20.0 => kp;
+        linear key("A_Kd", "B_Kd"), "derivative gain", "K_d", "V·s/rad", KD, 0.1 => kd;
         // Building storey.
-        of(
-            Param::log(
-                key("A_mf", "B_mf"),
-                "floor mass",
-                "m",
-                "kg",
-                MF,
-                20_000.0,
-                |p, v| p.slots[S].v.mf = v,
-            ),
-            Storey,
-        ),
-        of(
-            Param::linear(
-                key("A_h", "B_h"),
-                "storey height",
-                "h",
-                "m",
-                H,
-                3.0,
-                |p, v| p.slots[S].v.h = v,
-            ),
-            Storey,
-        ),
-        of(
-            Param::log(
-                key("A_EI", "B_EI"),
-                "bending stiffness of each of the 4 columns",
-                "EI",
-                "N·m²",
-                EI,
-                1e7,
-                |p, v| p.slots[S].v.ei = v,
-            ),
-            Storey,
-        ),
-        of(
-            Param::linear(
-                key("A_cf", "B_cf"),
-                "storey damping coefficient",
-                "c",
-                "N·s/m",
-                CF,
-                60_000.0,
-                |p, v| p.slots[S].v.cf = v,
-            ),
-            Storey,
-        ),
+        log key("A_mf", "B_mf"), "floor mass", "m", "kg", MF, 20_000.0 => mf;
+        linear key("A_h", "B_h"), "storey height", "h", "m", H, 3.0 => h;
+        log key("A_EI", "B_EI"), "bending stiffness of each of the 4 columns", "EI", "N·m²",
+            EI, 1e7 => ei;
+        linear key("A_cf", "B_cf"), "storey damping coefficient", "c", "N·s/m",
+            CF, 60_000.0 => cf;
         // Two-capacity thermal system.
-        of(
-            Param::log(
-                key("A_C1", "B_C1"),
-                "heat capacity of body 1",
-                "C₁",
-                "J/K",
-                CTH,
-                5.0,
-                |p, v| p.slots[S].v.c1 = v,
-            ),
-            Thermal,
-        ),
-        of(
-            Param::log(
-                key("A_R1", "B_R1"),
-                "thermal resistance, body 1 to surroundings",
-                "R₁",
-                "K/W",
-                RTH,
-                0.5,
-                |p, v| p.slots[S].v.r1 = v,
-            ),
-            Thermal,
-        ),
-        of(
-            Param::log(
-                key("A_C2", "B_C2"),
-                "heat capacity of body 2",
-                "C₂",
-                "J/K",
-                CTH,
-                1.0,
-                |p, v| p.slots[S].v.c2 = v,
-            ),
-            Thermal,
-        ),
-        of(
-            Param::log(
-                key("A_R2", "B_R2"),
-                "thermal resistance, body 2 to body 1",
-                "R₂",
-                "K/W",
-                RTH,
-                2.0,
-                |p, v| p.slots[S].v.r2 = v,
-            ),
-            Thermal,
-        ),
-    ]
+        log key("A_C1", "B_C1"), "heat capacity of body 1", "C₁", "J/K", CTH, 5.0 => c1;
+        log key("A_R1", "B_R1"), "thermal resistance, body 1 to surroundings", "R₁", "K/W",
+            RTH, 0.5 => r1;
+        log key("A_C2", "B_C2"), "heat capacity of body 2", "C₂", "J/K", CTH, 1.0 => c2;
+        log key("A_R2", "B_R2"), "thermal resistance, body 2 to body 1", "R₂", "K/W",
+            RTH, 2.0 => r2;
+    };
+    let kinds = MACHINE_SLIDERS
+        .iter()
+        .flat_map(|&(kind, n)| std::iter::repeat_n(kind, n));
+    let mut params = vec![Param::choice(
+        choice,
+        key("machine A", "machine B"),
+        DEFAULT_KIND[S],
+        |p: &mut P, k| p.slots[S].kind = k,
+    )];
+    params.extend(
+        sliders
+            .into_iter()
+            .zip(kinds)
+            .map(|(s, kind)| s.visible_when(choice, kind.index())),
+    );
+    params
 }

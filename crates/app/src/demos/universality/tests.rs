@@ -82,6 +82,8 @@ fn tuned_values_outside_the_sliders_are_reported_not_applied() {
 #[test]
 fn hidden_sliders_belong_to_their_machine_and_slot() {
     let spec = Universality::declare().spec();
+    // Per slot the machine and the 23 sliders of the six machines (none dropped), then "match".
+    assert_eq!(spec.params.len(), 2 * (1 + 23) + 1);
     for p in &spec.params {
         match p.key {
             "A" | "B" | "match" => assert_eq!(p.visible_when, None),
