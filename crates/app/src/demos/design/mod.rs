@@ -70,8 +70,8 @@ pub struct P {
     /// The selected design \[N/m\], \[N·s/m\].
     k: f64,
     c: f64,
-    /// Grid cells per axis.
-    n: usize,
+    /// Grid cells per axis, as set (the sweep rounds it into 2–400).
+    n: f64,
 }
 
 impl P {
@@ -85,7 +85,7 @@ impl P {
             v: self.v,
             k: (self.k_min, self.k_max),
             c: (self.c_min, self.c_max),
-            n: self.n,
+            n: self.n.round().clamp(2.0, 400.0) as usize,
         };
         let ok = key.m > 0.0
             && key.mu > 0.0
@@ -164,7 +164,7 @@ impl Model for DesignSpace {
     fn step(&mut self, p: &P) -> Option<Results> {
         let key = p.sweep_key()?;
         let band = SettlingBand::new(p.band / 100.0).ok()?;
-        let road = RoadInput::iso_class(p.road.class(), p.v, CUTOFF).ok()?;
+        let road = RoadInput::iso_class(p.road.0, p.v, CUTOFF).ok()?;
         self.sweep_for(
             key,
             KcSweepConfig {
@@ -183,7 +183,7 @@ impl Model for DesignSpace {
         });
         let ride = car
             .ok()
-            .and_then(|car| stationary(&car, p.road.class(), p.v).ok());
+            .and_then(|car| stationary(&car, p.road.0, p.v).ok());
         let sel = Selected {
             sys,
             zeta: sys.and_then(|s| s.damping_ratio()),

@@ -44,7 +44,7 @@ fn comfort_rows(
     rows: std::ops::Range<usize>,
     maps: &mut KcMaps,
 ) {
-    let (class, axes) = (key.road.class(), (k_axis, c_axis));
+    let (class, axes) = (key.road.0, (k_axis, c_axis));
     ride.weighted_rows(
         key.car(),
         class,

@@ -28,7 +28,7 @@ impl Uncertainty {
         // Inputs moved on: a run under way for other inputs is dropped unseen.
         self.drop_job();
         let watch = Stopwatch::start();
-        let distribution = key.dist.distribution();
+        let distribution = key.dist.0;
         let cfg = McConfig {
             design: key.design,
             tolerances: key.tolerances.map(|fraction| Tolerance {

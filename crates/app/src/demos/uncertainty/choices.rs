@@ -1,78 +1,62 @@
 //! The tolerance demo's choice parameters as typed enums: the system analysed, the
 //! distribution of the parts and the quantity of the second histogram.
 
-use crate::declare::Choice;
+use crate::declare::{choice_enum, Choice};
 use crate::t;
 use zeta_solver::design::monte_carlo::{Distribution, McSamples};
 
-/// Which parameter group is analysed.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum System {
-    /// The quarter car under a mass tolerance.
-    #[default]
-    Suspension,
-    /// The series RLC loop under part tolerances.
-    Rlc,
+choice_enum! {
+    /// Which parameter group is analysed.
+    pub enum System {
+        /// The quarter car under a mass tolerance.
+        #[default]
+        Suspension => ("suspension", "quarter-car suspension"),
+        /// The series RLC loop under part tolerances.
+        Rlc => ("rlc", "series RLC"),
+    }
 }
 
-impl Choice for System {
-    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
-        (System::Suspension, "suspension", "quarter-car suspension"),
-        (System::Rlc, "rlc", "series RLC"),
-    ];
-}
+/// How the parts are distributed within their tolerance: the solver's distribution
+/// (uniform within ±tolerance by default; normal with the tolerance as 3σ).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Dist(pub(super) Distribution);
 
-/// How the parts are distributed within their tolerance.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Dist {
-    /// Uniform within ±tolerance.
-    #[default]
-    Uniform,
-    /// Normal with the tolerance as 3σ.
-    Normal,
+impl Default for Dist {
+    fn default() -> Self {
+        Dist(Distribution::Uniform)
+    }
 }
 
 impl Choice for Dist {
     const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
-        (Dist::Uniform, "uniform", "uniform within ±tolerance"),
-        (Dist::Normal, "normal", "normal, tolerance = 3σ"),
+        (
+            Dist(Distribution::Uniform),
+            "uniform",
+            "uniform within ±tolerance",
+        ),
+        (
+            Dist(Distribution::Normal),
+            "normal",
+            "normal, tolerance = 3σ",
+        ),
     ];
 }
 
-impl Dist {
-    /// The solver's distribution.
-    pub(super) fn distribution(self) -> Distribution {
-        match self {
-            Dist::Uniform => Distribution::Uniform,
-            Dist::Normal => Distribution::Normal,
-        }
+choice_enum! {
+    /// The quantity shown in the second histogram.
+    pub enum HistOf {
+        /// Damping ratio ζ.
+        Zeta => ("zeta", "damping ratio ζ"),
+        /// Natural frequency f0 \[Hz\].
+        F0 => ("f0", "natural frequency f0"),
+        /// Quality factor Q.
+        #[default]
+        Q => ("q", "quality factor Q"),
+        /// Half-power bandwidth \[rad/s\].
+        Bandwidth => ("bandwidth", "bandwidth"),
+        /// Settling time of a release from rest \[s\].
+        SettlingTime => ("settling_time", "settling time"),
     }
-}
-
-/// The quantity shown in the second histogram.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum HistOf {
-    /// Damping ratio ζ.
-    Zeta,
-    /// Natural frequency f0 \[Hz\].
-    F0,
-    /// Quality factor Q.
-    #[default]
-    Q,
-    /// Half-power bandwidth \[rad/s\].
-    Bandwidth,
-    /// Settling time of a release from rest \[s\].
-    SettlingTime,
-}
-
-impl Choice for HistOf {
-    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
-        (HistOf::Zeta, "zeta", "damping ratio ζ"),
-        (HistOf::F0, "f0", "natural frequency f0"),
-        (HistOf::Q, "q", "quality factor Q"),
-        (HistOf::Bandwidth, "bandwidth", "bandwidth"),
-        (HistOf::SettlingTime, "settling_time", "settling time"),
-    ];
 }
 
 impl HistOf {

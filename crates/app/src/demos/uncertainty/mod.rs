@@ -48,9 +48,9 @@ pub struct P {
     dl: f64,
     dc: f64,
     dist: Dist,
-    /// Monte Carlo draws and seed.
-    draws: usize,
-    seed: u64,
+    /// Monte Carlo draws and seed, as set (the run rounds them to whole numbers).
+    draws: f64,
+    seed: f64,
     /// Spec: ζ window and longest settling time \[s\].
     zeta_lo: f64,
     zeta_hi: f64,
@@ -92,8 +92,8 @@ impl P {
             design,
             tolerances,
             dist: self.dist,
-            draws: self.draws,
-            seed: self.seed,
+            draws: self.draws.round().clamp(1.0, 100_000.0) as usize,
+            seed: self.seed.round().max(0.0) as u64,
         }
     }
 }

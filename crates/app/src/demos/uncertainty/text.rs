@@ -6,6 +6,7 @@ use super::{HistOf, System, P};
 use crate::format::{si, significant, significant_plain};
 use crate::i18n::number;
 use crate::t;
+use zeta_solver::design::monte_carlo::Distribution;
 
 pub(super) const SUMMARY: &str =
     "Real parts are not their nominal values. Choose the system: the quarter \
@@ -113,9 +114,9 @@ pub(super) fn describe_histogram(
     yield_pct: f64,
 ) -> String {
     let (name, unit) = h.label();
-    let dist = match p.dist {
-        super::Dist::Normal => t!("uncertainty-dist-normal"),
-        super::Dist::Uniform => t!("uncertainty-dist-uniform"),
+    let dist = match p.dist.0 {
+        Distribution::Normal => t!("uncertainty-dist-normal"),
+        Distribution::Uniform => t!("uncertainty-dist-uniform"),
     };
     let (zlo, zhi) = p.zeta_window();
     let spec_text = match h {
