@@ -3,7 +3,7 @@
 
 use super::{figures, text, Results, P};
 use crate::declare::Declaration;
-use crate::demos::rows::{self, readouts, sliders, Plot};
+use crate::demos::rows::{self, readouts, sliders};
 use crate::spec::Preset;
 
 /// Parameters, readouts, plots and presets of `analogy`.
@@ -38,7 +38,11 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             number "Q", "quality factor Q (both)", "", 4 => r.mech.quality_factor();
             number "energy", "stored energy ½kx₀² = ½q₀²/C", "J", 4 => Some(r.energy());
         },
-        plots: rows::plots(&PLOTS),
+        // Key, title and width / height.
+        plots: rows::plots(&[
+            ("responses", figures::RESPONSES_TITLE, 1.6),
+            ("energy", figures::ENERGY_TITLE, 1.4),
+        ]),
         presets: [
             ("Frictionless spring ↔ LC tank (c = R = 0)", 1.0, 0.0, 100.0),
             ("Light damping ζ = 0.05", 1.0, 1.0, 100.0),
@@ -62,9 +66,3 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         ..Declaration::new("analogy", "One equation, two machines", text::SUMMARY)
     }
 }
-
-/// The plots, in order: key, title and width / height.
-const PLOTS: [Plot; 2] = [
-    ("responses", figures::RESPONSES_TITLE, 1.6),
-    ("energy", figures::ENERGY_TITLE, 1.4),
-];

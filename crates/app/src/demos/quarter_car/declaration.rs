@@ -6,7 +6,7 @@ use super::{
     X0_DEFAULT, ZETA_DEFAULT, ZETA_RANGE,
 };
 use crate::declare::{Declaration, DAMPING_RATIO, INITIAL_DISPLACEMENT};
-use crate::demos::rows::{self, sliders, Plot};
+use crate::demos::rows::{self, sliders};
 use crate::spec::Preset;
 use zeta_solver::SecondOrder;
 
@@ -25,7 +25,12 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             linear "dm", "sprung-mass variation", "±Δm", "%", (0.0, 40.0, 1.0), 10.0 => dm;
         },
         readouts: readouts::table(),
-        plots: rows::plots(&PLOTS),
+        // Key, title and width / height.
+        plots: rows::plots(&[
+            ("response", response::RESPONSE_TITLE, 1.3),
+            ("settling", figures::SETTLING_TITLE, 1.6),
+            ("sensitivity", figures::SENSITIVITY_TITLE, 2.0),
+        ]),
         presets: presets(),
         schematic: true,
         ..Declaration::new("quarter-car", "Quarter-car suspension", text::SUMMARY)
@@ -60,10 +65,3 @@ fn presets() -> Vec<Preset> {
     })
     .collect()
 }
-
-/// The plots, in order: key, title and width / height.
-const PLOTS: [Plot; 3] = [
-    ("response", response::RESPONSE_TITLE, 1.3),
-    ("settling", figures::SETTLING_TITLE, 1.6),
-    ("sensitivity", figures::SENSITIVITY_TITLE, 2.0),
-];

@@ -5,7 +5,7 @@ use super::{figures, text, Results, P};
 use crate::declare::{
     Declaration, DAMPING_RATIO, INITIAL_DISPLACEMENT, INITIAL_VELOCITY, NATURAL_FREQUENCY,
 };
-use crate::demos::rows::{self, readouts, sliders, Plot};
+use crate::demos::rows::{self, readouts, sliders};
 use crate::format;
 use crate::spec::Preset;
 
@@ -27,7 +27,11 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             number "pole_re", "pole real part", "1/s", 4 => Some(r.poles[0].re);
             number "pole_im", "pole imaginary part", "rad/s", 4 => Some(r.poles[0].im);
         },
-        plots: rows::plots(&PLOTS),
+        // Key, title and width / height.
+        plots: rows::plots(&[
+            ("response", figures::RESPONSE_TITLE, 1.9),
+            ("poles", figures::POLES_TITLE, 1.25),
+        ]),
         primary_plot: "response",
         // One per regime, each released from x₀ = 0.06 m at rest (ωₙ stays).
         presets: [
@@ -48,9 +52,3 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         ..Declaration::new("regimes", "Damping regimes", text::SUMMARY)
     }
 }
-
-/// The plots, in order: key, title and width / height.
-const PLOTS: [Plot; 2] = [
-    ("response", figures::RESPONSE_TITLE, 1.9),
-    ("poles", figures::POLES_TITLE, 1.25),
-];

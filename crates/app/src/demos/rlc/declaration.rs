@@ -3,7 +3,7 @@
 
 use super::{figures, text, Results, P};
 use crate::declare::Declaration;
-use crate::demos::rows::{self, readouts, sliders, Plot};
+use crate::demos::rows::{self, readouts, sliders};
 use crate::spec::Preset;
 
 /// Defaults of L \[H\], C \[F\] and V₀ \[V\], which every preset keeps.
@@ -35,7 +35,11 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             number "settling_time", "v_C within 5 % of V₀ after", "s", 4
                 => r.metrics.and_then(|m| m.settling_time);
         },
-        plots: rows::plots(&PLOTS),
+        // Key, title and width / height.
+        plots: rows::plots(&[
+            ("current", figures::CURRENT_TITLE, 1.35),
+            ("voltage", figures::VOLTAGE_TITLE, 1.35),
+        ]),
         // R alone changes; L, C and V₀ go back to their defaults.
         presets: [
             ("Lossless LC, R = 0", 0.0),
@@ -59,9 +63,3 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         ..Declaration::new("rlc", "Series RLC circuit", text::SUMMARY)
     }
 }
-
-/// The plots, in order: key, title and width / height.
-const PLOTS: [Plot; 2] = [
-    ("current", figures::CURRENT_TITLE, 1.35),
-    ("voltage", figures::VOLTAGE_TITLE, 1.35),
-];
