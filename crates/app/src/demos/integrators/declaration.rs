@@ -18,8 +18,8 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             log "h", "step size", "h", "s", (1e-3, 2.0, 1e-4), 0.3 => h;
             linear "T", "duration", "T", "s", (1.0, 60.0, 0.5), 20.0 => t_end;
             quantity INITIAL_DISPLACEMENT, (0.05, 2.0, 0.01), 1.0 => x0;
-            log "tol", "DP45 tolerance (relative; absolute tol·x₀)", "tol", "", (1e-10, 1e-2, 1e-10),
-                1e-6 => tol;
+            log "tol", "DP45 tolerance (relative; absolute tol·x₀)", "tol", "",
+                (1e-10, 1e-2, 1e-10), 1e-6 => tol;
             toggle "euler", "forward Euler", true => show[0];
             toggle "symplectic_euler", "symplectic Euler", true => show[1];
             toggle "heun", "Heun (RK2)", true => show[2];

@@ -20,8 +20,8 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             linear "c", "damper rate", "c", "N·s/m", C_RANGE, C_DEFAULT => c;
             quantity DAMPING_RATIO, ZETA_RANGE, ZETA_DEFAULT => zeta;
             quantity INITIAL_DISPLACEMENT, (0.005, 0.15, 0.001), X0_DEFAULT => x0;
-            linear "band", "settling band around rest, relative to x₀", "±", "%", (1.0, 20.0, 0.5), 5.0
-                => band;
+            linear "band", "settling band around rest, relative to x₀", "±", "%", (1.0, 20.0, 0.5),
+                5.0 => band;
             linear "dm", "sprung-mass variation", "±Δm", "%", (0.0, 40.0, 1.0), 10.0 => dm;
         },
         readouts: readouts::table(),
