@@ -5,7 +5,8 @@ use crate::declare::Param;
 use crate::figure::Figure;
 use crate::spec::{PlotSpec, Preset};
 
-/// The parameters of the typed parameters `P`, one row each, in order:
+/// The parameters that fill the typed struct `P` (sliders, checkboxes and drop-down
+/// lists), one row each, in order:
 ///
 /// ```text
 /// sliders! { P;
@@ -19,7 +20,7 @@ use crate::spec::{PlotSpec, Preset};
 /// ```
 ///
 /// Each row names a [`Param`](crate::declare::Param) constructor (`linear`, `log`,
-/// `quantity`, `toggle`, `choice`) and its arguments but the setter: the row fills `field`
+/// `quantity`, `toggle`, `choice`) and all its arguments but the setter: the row fills `field`
 /// of `P` (or one element of it, `field[i]`) with the validated value. Builder methods
 /// after the field (`, log_scale()`, `, visible_when("key", 1)`) apply to the row's
 /// parameter. With `P, |p| place;` the rows fill `place.field` instead (a field of a
@@ -53,8 +54,8 @@ pub(crate) use sliders;
 /// }
 /// ```
 ///
-/// Each row names a [`ReadoutDef`](crate::declare::ReadoutDef) constructor and its
-/// arguments but the getter; the getter is an expression in `r: &R` of the type that
+/// Each row names a [`ReadoutDef`](crate::declare::ReadoutDef) constructor and all its
+/// arguments but the getter, then the getter: an expression in `r: &R` of the type that
 /// constructor reads (`Option<f64>`, `String`, `Option<(f64, String)>`,
 /// `Result<Option<f64>, String>`).
 macro_rules! readouts {
