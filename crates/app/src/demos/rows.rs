@@ -1,36 +1,42 @@
-//! Declaration tables as rows of data: a demo with many sliders, readouts or plots writes
-//! one row each (used by `flutter`, `nonlinear`, `paper`, `quarter-car-2dof` and
-//! `universality`).
+//! Declaration tables as rows of data: every demo writes its parameters, readouts and
+//! plots one row each.
 
 use crate::declare::Param;
 use crate::figure::Figure;
 use crate::spec::{PlotSpec, Preset};
 
-/// The sliders of the typed parameters `P`, one row each, in order:
+/// The parameters that fill the typed struct `P` (sliders, checkboxes and drop-down
+/// lists), one row each, in order:
 ///
 /// ```text
 /// sliders! { P;
 ///     linear "key", "label", "symbol", "unit", (min, max, step), default => field;
 ///     log "key", "label", "symbol", "unit", (min, max, step), default => field;
+///     quantity DAMPING_RATIO, (min, max, step), default => field;
+///     quantity DAMPING_RATIO, (min, max, step), default => field, log_scale();
+///     toggle "key", "label", on => flags[0];
+///     choice "key", "label", View::Linear => field;
 /// }
 /// ```
 ///
-/// `linear` and `log` are the [`Param`](crate::declare::Param) constructors; each slider
-/// fills `field` of `P`. With `P, |p| place;` it fills `place.field` instead (a field of a
-/// struct inside `P`, e.g. `|p| p.slots[S].v`); a key may be any `&'static str`
-/// expression.
+/// Each row names a [`Param`](crate::declare::Param) constructor (`linear`, `log`,
+/// `quantity`, `toggle`, `choice`) and all its arguments but the setter: the row fills `field`
+/// of `P` (or one element of it, `field[i]`) with the validated value. Builder methods
+/// after the field (`, log_scale()`, `, visible_when("key", 1)`) apply to the row's
+/// parameter. With `P, |p| place;` the rows fill `place.field` instead (a field of a
+/// struct inside `P`, e.g. `|p| p.slots[S].v`).
 macro_rules! sliders {
     ($p:ty; $($rows:tt)*) => {
         $crate::demos::rows::sliders!($p, |p| p; $($rows)*)
     };
     ($p:ty, |$q:ident| $place:expr; $(
-        $scale:ident $key:expr, $label:literal, $symbol:literal, $unit:literal,
-        $range:expr, $default:expr => $field:ident;
+        $kind:ident $($arg:expr),+ => $field:ident $([$i:expr])?
+            $(, $then:ident($($then_arg:expr),*))*;
     )*) => {
         vec![$(
-            $crate::declare::Param::<$p>::$scale(
-                $key, $label, $symbol, $unit, $range, $default, |$q, v| $place.$field = v,
-            ),
+            $crate::declare::Param::<$p>::$kind(
+                $($arg),+, |$q, v| $place.$field$([$i])? = v,
+            )$(.$then($($then_arg),*))*,
         )*]
     };
 }
@@ -41,12 +47,17 @@ pub(crate) use sliders;
 /// ```text
 /// readouts! { R, |r|;
 ///     number "key", "label", "unit", sig => getter;
+///     plain "key", "label", "unit", sig => getter;
 ///     text "key", "label" => getter;
+///     formatted "key", "label", "unit" => getter;
+///     number_or_note "key", "label", "unit", sig => getter;
 /// }
 /// ```
 ///
-/// Each row names a [`ReadoutDef`](crate::declare::ReadoutDef) constructor and its
-/// arguments; the getter is an expression in `r: &R`.
+/// Each row names a [`ReadoutDef`](crate::declare::ReadoutDef) constructor and all its
+/// arguments but the getter, then the getter: an expression in `r: &R` of the type that
+/// constructor reads (`Option<f64>`, `String`, `Option<(f64, String)>`,
+/// `Result<Option<f64>, String>`).
 macro_rules! readouts {
     ($r:ty, |$q:ident|; $($kind:ident $($arg:expr),+ => $get:expr;)*) => {
         vec![$(
@@ -143,6 +154,69 @@ mod tests {
         assert_eq!((spec.min, spec.max, spec.default), (0.1, 10.0, 2.0));
         assert_eq!(spec.scale, crate::spec::Scale::Log);
         assert_eq!(defaults(&params), vec![("a", 1.0)]);
+    }
+
+    crate::declare::choice_enum! {
+        /// A test choice.
+        enum Pick {
+            #[default]
+            One => ("one", "first"),
+            Two => ("two", "second"),
+        }
+    }
+
+    #[derive(Debug, Default)]
+    struct Q {
+        zeta: f64,
+        shown: [bool; 2],
+        pick: Pick,
+    }
+
+    #[test]
+    fn quantity_toggle_and_choice_rows_fill_their_fields() {
+        use crate::declare::DAMPING_RATIO;
+        use crate::spec::Scale;
+        let params = sliders! { Q;
+            quantity DAMPING_RATIO, (0.01, 2.0, 0.01), 0.1 => zeta, log_scale();
+            toggle "b", "second shown", true => shown[1];
+            choice "pick", "which", Pick::Two => pick, with_symbol("π");
+        };
+        let mut q = Q::default();
+        params[0].apply(&mut q, 0.5);
+        params[1].apply(&mut q, 1.0);
+        params[2].apply(&mut q, 0.0);
+        assert_eq!((q.zeta, q.shown, q.pick), (0.5, [false, true], Pick::One));
+        let zeta = params[0].spec();
+        assert_eq!(
+            (zeta.key, zeta.label, zeta.scale),
+            ("zeta", "damping ratio", Scale::Log)
+        );
+        assert_eq!((zeta.min, zeta.max, zeta.default), (0.01, 2.0, 0.1));
+        assert_eq!((params[1].spec().key, params[1].spec().default), ("b", 1.0));
+        assert_eq!(
+            (params[2].spec().symbol, params[2].spec().default),
+            ("π", 1.0)
+        );
+        assert_eq!(params[2].options().len(), 2);
+    }
+
+    #[test]
+    fn every_readout_kind_has_a_row() {
+        let rows = readouts! { R, |r|;
+            plain "p", "plain", "ms", 3 => Some(r.a);
+            formatted "f", "own text", "m" => Some((r.a, format!("{} m", r.a)));
+            number_or_note "n", "or a note", "m", 3 => Err(format!("none at {}", r.a));
+        };
+        let read: Vec<_> = rows.iter().map(|row| row.read(&R { a: 2.0 })).collect();
+        assert_eq!(read[0].data_value, "2");
+        assert_eq!(
+            (read[1].text.as_str(), read[1].data_value.as_str()),
+            ("2 m", "2")
+        );
+        assert_eq!(
+            (read[2].text.as_str(), read[2].data_value.as_str()),
+            ("none at 2", "")
+        );
     }
 
     #[test]

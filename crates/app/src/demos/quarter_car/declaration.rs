@@ -1,89 +1,36 @@
-//! The `quarter-car` demo's declaration: parameters, readouts, plots and presets as tables.
+//! The `quarter-car` demo's declaration: parameters, readouts, plots and presets as tables,
+//! one row each.
 
 use super::{
     figures, readouts, response, text, Results, C_DEFAULT, C_RANGE, K_DEFAULT, M_DEFAULT, P,
     X0_DEFAULT, ZETA_DEFAULT, ZETA_RANGE,
 };
-use crate::declare::{Declaration, Param, DAMPING_RATIO, INITIAL_DISPLACEMENT};
-use crate::spec::{PlotSpec, Preset};
+use crate::declare::{Declaration, DAMPING_RATIO, INITIAL_DISPLACEMENT};
+use crate::demos::rows::{self, sliders};
+use crate::spec::Preset;
 use zeta_solver::SecondOrder;
 
 /// Parameters, readouts, plots and presets of `quarter-car`.
 pub(super) fn declaration() -> Declaration<P, Results> {
     Declaration {
         equation_mathml: text::EQUATION,
-        params: vec![
-            Param::linear(
-                "m",
-                "sprung mass",
-                "m",
-                "kg",
-                (100.0, 1000.0, 1.0),
-                M_DEFAULT,
-                |p, v| p.m = v,
-            ),
-            Param::linear(
-                "k",
-                "spring rate",
-                "k",
-                "N/m",
-                (5_000.0, 100_000.0, 100.0),
-                K_DEFAULT,
-                |p, v| p.k = v,
-            ),
-            Param::linear(
-                "c",
-                "damper rate",
-                "c",
-                "N·s/m",
-                C_RANGE,
-                C_DEFAULT,
-                |p, v| p.c = v,
-            ),
-            Param::quantity(DAMPING_RATIO, ZETA_RANGE, ZETA_DEFAULT, |p, v| p.zeta = v),
-            Param::quantity(
-                INITIAL_DISPLACEMENT,
-                (0.005, 0.15, 0.001),
-                X0_DEFAULT,
-                |p, v| p.x0 = v,
-            ),
-            Param::linear(
-                "band",
-                "settling band around rest, relative to x₀",
-                "±",
-                "%",
-                (1.0, 20.0, 0.5),
-                5.0,
-                |p, v| p.band = v,
-            ),
-            Param::linear(
-                "dm",
-                "sprung-mass variation",
-                "±Δm",
-                "%",
-                (0.0, 40.0, 1.0),
-                10.0,
-                |p, v| p.dm = v,
-            ),
-        ],
+        params: sliders! { P;
+            linear "m", "sprung mass", "m", "kg", (100.0, 1000.0, 1.0), M_DEFAULT => m;
+            linear "k", "spring rate", "k", "N/m", (5_000.0, 100_000.0, 100.0), K_DEFAULT => k;
+            linear "c", "damper rate", "c", "N·s/m", C_RANGE, C_DEFAULT => c;
+            quantity DAMPING_RATIO, ZETA_RANGE, ZETA_DEFAULT => zeta;
+            quantity INITIAL_DISPLACEMENT, (0.005, 0.15, 0.001), X0_DEFAULT => x0;
+            linear "band", "settling band around rest, relative to x₀", "±", "%", (1.0, 20.0, 0.5),
+                5.0 => band;
+            linear "dm", "sprung-mass variation", "±Δm", "%", (0.0, 40.0, 1.0), 10.0 => dm;
+        },
         readouts: readouts::table(),
-        plots: vec![
-            PlotSpec {
-                key: "response",
-                title: response::RESPONSE_TITLE,
-                aspect: 1.3,
-            },
-            PlotSpec {
-                key: "settling",
-                title: figures::SETTLING_TITLE,
-                aspect: 1.6,
-            },
-            PlotSpec {
-                key: "sensitivity",
-                title: figures::SENSITIVITY_TITLE,
-                aspect: 2.0,
-            },
-        ],
+        // Key, title and width / height.
+        plots: rows::plots(&[
+            ("response", response::RESPONSE_TITLE, 1.3),
+            ("settling", figures::SETTLING_TITLE, 1.6),
+            ("sensitivity", figures::SENSITIVITY_TITLE, 2.0),
+        ]),
         presets: presets(),
         schematic: true,
         ..Declaration::new("quarter-car", "Quarter-car suspension", text::SUMMARY)

@@ -2,7 +2,8 @@
 //! the two poles in the s-plane, a table of the regimes and an animated mass on a spring.
 //!
 //! The shape every demo follows, one job per file: `declaration.rs` declares the demo
-//! (parameters, readouts, plots and presets as tables); this file holds its model step
+//! (parameters, readouts, plots and presets as tables, one row each: the `sliders!` and
+//! `readouts!` rows and the plot rows of `demos::rows`); this file holds its model step
 //! (solver calls only); `figures.rs` builds the plots from the results; `text.rs` holds the
 //! prose.
 
