@@ -1,16 +1,70 @@
-//! The one test harness for demos: run a demo from a URL query, read its readouts.
+//! The one test harness for demos: run a demo from a URL query (by id, or by its model
+//! type through [`Tested`]), read its readouts, draw its schematic.
 // Not every demo uses every reader.
 #![allow(dead_code)]
 
-use super::{create, Frame, Readout};
-use crate::params::resolve_query;
+use super::{create, Demo, Frame, Model, Readout};
+use crate::figure::Figure;
+use crate::params::{resolve_query, Params};
+
+/// A demo run through the page path, named by its model type: in a demo's tests,
+/// `Flutter::run("U=19")`, `Flutter::preset("…")` and `Flutter::live("")` are [`run`],
+/// [`preset`] and [`live`] with that demo's declared id, so no test file wraps them.
+pub trait Tested: Model {
+    /// [`run`] for this demo.
+    fn run(query: &str) -> Frame {
+        run(Self::declare().id, query)
+    }
+
+    /// [`preset`] for this demo.
+    fn preset(label: &str) -> Frame {
+        preset(Self::declare().id, label)
+    }
+
+    /// [`live`] for this demo.
+    fn live(query: &str) -> Live {
+        live(Self::declare().id, query)
+    }
+}
+
+impl<M: Model> Tested for M {}
 
 /// Demo `id` updated once for `query` (as the page does on load with that link).
 pub fn run(id: &str, query: &str) -> Frame {
+    live(id, query).frame
+}
+
+/// A demo updated once for a query, kept to draw its schematic at chosen times (or to
+/// update again).
+pub struct Live {
+    /// What the update showed.
+    pub frame: Frame,
+    /// The demo, after that update.
+    pub demo: Box<dyn Demo>,
+    /// The query's parameter values.
+    pub params: Params,
+}
+
+impl Live {
+    /// The schematic at time `t` \[s\].
+    pub fn at(&self, t: f64) -> Figure {
+        self.demo
+            .schematic(&self.params, t)
+            .unwrap_or_else(|| panic!("no schematic at t = {t}"))
+    }
+}
+
+/// Demo `id` updated once for `query`, as [`run`] does, with its schematic to draw.
+pub fn live(id: &str, query: &str) -> Live {
     let mut demo = create(id).unwrap_or_else(|| panic!("no demo {id}"));
     let (params, notices) = resolve_query(&demo.spec(), query);
     assert!(notices.is_empty(), "{id}?{query}: {notices:?}");
-    demo.update(&params)
+    let frame = demo.update(&params);
+    Live {
+        frame,
+        demo,
+        params,
+    }
 }
 
 /// Demo `id` at its preset `label`: the query that preset writes (its values on top of

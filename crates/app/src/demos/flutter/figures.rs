@@ -11,6 +11,14 @@ use zeta_solver::flutter::{degrees, DeckSection};
 /// Most points drawn of the twist history.
 const TWIST_POINTS: usize = 4000;
 
+/// The look of each kind of line, the same in every plot: the chosen model's curve (the
+/// lower pole is its mirror image, dashed), the curve compared with it, and the
+/// thresholds (the A₂* threshold, the limit cycle).
+const CURVE: LineStyle = LineStyle::solid(Ink::Blue, 2.5);
+const MIRROR: LineStyle = LineStyle::dashed(Ink::Blue, 2.5);
+const COMPARED: LineStyle = LineStyle::dashed(Ink::Green, 1.5);
+const THRESHOLD: LineStyle = LineStyle::dotted(Ink::Purple, 1.5);
+
 /// `A₂*` above which the wind's moment beats the structural damping, to first order:
 /// `4Iζ_s/(ρB⁴) = 2ζ_s/q`.
 pub(super) fn threshold(r: &Results) -> f64 {
@@ -55,13 +63,13 @@ pub(super) fn derivative(r: &Results) -> Figure {
         Axis::linear(t!("flutter-axis-reduced-velocity"), "", (0.0, x_hi)),
         Axis::linear("A₂*", "", y),
     )
-    .with_line(other.1, others, LineStyle::dashed(Ink::Green, 1.5))
+    .with_line(other.1, others, COMPARED)
     .with_line(
         t!("flutter-threshold", value = si(a2_crit, "", 3)),
         vec![(0.0, a2_crit), (x_hi, a2_crit)],
-        LineStyle::dotted(Ink::Purple, 1.5),
+        THRESHOLD,
     )
-    .with_line(label, along, LineStyle::solid(Ink::Blue, 2.5));
+    .with_line(label, along, CURVE);
     if let Some(s) = r.state {
         fig = fig.with_marker(Marker::dot(
             format!(
@@ -106,13 +114,9 @@ pub(super) fn damping(r: &Results) -> Figure {
         Axis::linear(t!("flutter-axis-effective-damping"), "%", y),
     );
     if let Some(s) = simplest {
-        fig = fig.with_line(
-            t!("flutter-series-simplest-line"),
-            s,
-            LineStyle::dashed(Ink::Green, 1.5),
-        );
+        fig = fig.with_line(t!("flutter-series-simplest-line"), s, COMPARED);
     }
-    fig = fig.with_line("ζ_eff(U)", line, LineStyle::solid(Ink::Blue, 2.5));
+    fig = fig.with_line("ζ_eff(U)", line, CURVE);
     if let Some(s) = r.state {
         fig = fig.with_marker(Marker::dot(
             format!("U = {}", si(r.p.u, "m/s", 3)),
@@ -152,16 +156,8 @@ pub(super) fn locus(r: &Results) -> Figure {
         fig = fig.with_marker(Marker::dot("U = 0", start, Ink::Green));
     }
     fig = fig
-        .with_line(
-            t!("flutter-upper-pole"),
-            upper,
-            LineStyle::solid(Ink::Blue, 2.5),
-        )
-        .with_line(
-            t!("flutter-lower-pole"),
-            lower,
-            LineStyle::dashed(Ink::Blue, 2.5),
-        );
+        .with_line(t!("flutter-upper-pole"), upper, CURVE)
+        .with_line(t!("flutter-lower-pole"), lower, MIRROR);
     if let Some(s) = r.state {
         let [p1, p2] = s.poles();
         fig = fig
@@ -215,7 +211,7 @@ pub(super) fn response(r: &Results) -> Figure {
         fig = fig.with_line(
             t!("flutter-limit-cycle", amplitude = si(lc, "°", 3)),
             vec![(0.0, lc), (t_end, lc)],
-            LineStyle::dotted(Ink::Purple, 1.5),
+            THRESHOLD,
         );
     }
     fig.with_origin_lines()

@@ -2,17 +2,11 @@
 //! snapshot tests (`crates/app/tests/snapshots.rs`).
 
 use super::*;
-use crate::demos::testing::{self, number, text, value};
-use crate::demos::Frame;
-use crate::params::Params;
-
-fn run(query: &str) -> Frame {
-    testing::run("flutter", query)
-}
+use crate::demos::testing::{number, text, value, Tested};
 
 #[test]
 fn the_failure_day_grows_to_a_large_twist_within_the_plotted_window() {
-    let f = testing::preset("flutter", "Tacoma 1940, 19 m/s (failure day, ≈ 42 mph)");
+    let f = Flutter::preset("Tacoma 1940, 19 m/s (failure day, ≈ 42 mph)");
     assert_eq!(value(&f, "regime"), "negatively damped");
     let uc = number(&f, "U_crit");
     assert!(uc > 17.0 && uc < 19.0, "{uc}");
@@ -39,7 +33,7 @@ fn the_failure_day_grows_to_a_large_twist_within_the_plotted_window() {
 
 #[test]
 fn below_the_critical_speed_a_twist_dies_away() {
-    let f = testing::preset("flutter", "Tacoma 1940, 10 m/s (stable)");
+    let f = Flutter::preset("Tacoma 1940, 10 m/s (stable)");
     assert_eq!(value(&f, "regime"), "underdamped");
     assert!(number(&f, "growth_rate") < 0.0);
     assert_eq!(value(&f, "doubling_time"), "");
@@ -50,11 +44,11 @@ fn below_the_critical_speed_a_twist_dies_away() {
 
 #[test]
 fn a_streamlined_box_never_flutters_and_the_h_section_does() {
-    let boxed = testing::preset("flutter", "Streamlined box deck, 40 m/s");
+    let boxed = Flutter::preset("Streamlined box deck, 40 m/s");
     assert_eq!(value(&boxed, "U_crit"), "");
     assert!(number(&boxed, "A2") < 0.0);
     assert!(boxed.figures[1].description.contains("never crosses zero"));
-    let h = run("U=25");
+    let h = Flutter::run("U=25");
     assert!(number(&h, "A2") > 0.0);
     // A₃* > 0 lowers the frequency below the still-air 0.2 Hz.
     assert!(number(&h, "frequency") < 0.2);
@@ -66,7 +60,7 @@ fn a_streamlined_box_never_flutters_and_the_h_section_does() {
 
 #[test]
 fn the_simplest_picture_is_the_old_linear_model() {
-    let f = testing::preset("flutter", "Simplest picture, 19 m/s (ζ_eff = ζ_s − g·U)");
+    let f = Flutter::preset("Simplest picture, 19 m/s (ζ_eff = ζ_s − g·U)");
     let uc = number(&f, "U_crit");
     assert!((uc - TACOMA_FAILURE_WIND).abs() < 1e-6, "{uc}");
     let z = number(&f, "zeta_eff");
@@ -76,15 +70,13 @@ fn the_simplest_picture_is_the_old_linear_model() {
 
 #[test]
 fn the_schematic_twists_with_the_deck() {
-    let mut d = crate::demos::create("flutter").unwrap();
-    let p = Params::defaults(&d.spec());
-    d.update(&p);
-    let a = d.schematic(&p, 0.0).unwrap();
-    let b = d.schematic(&p, 2.5).unwrap(); // about half a period later
+    let d = Flutter::live("");
+    let a = d.at(0.0);
+    let b = d.at(2.5); // about half a period later
     assert_ne!(a.series[1].points, b.series[1].points);
     assert!(a.description.contains("2.00 °"), "{}", a.description);
     for t in [0.0, 100.0, 1e9] {
-        let f = d.schematic(&p, t).unwrap();
+        let f = d.at(t);
         assert!(f
             .series
             .iter()
@@ -96,7 +88,7 @@ fn the_schematic_twists_with_the_deck() {
 fn the_table_has_a_row_for_every_reachable_regime() {
     let table = Flutter::declare().spec().table.unwrap();
     for u in [5.0, 30.0] {
-        let r = value(&run(&format!("U={u}")), "regime");
+        let r = value(&Flutter::run(&format!("U={u}")), "regime");
         assert!(table.rows.iter().any(|(k, _)| *k == r), "{r}");
     }
     assert!(table

@@ -70,8 +70,6 @@ pub struct Tour {
     pub claims: Vec<ClaimView>,
 }
 
-impl Tour {}
-
 /// `?demo=<demo>&<query>`.
 pub(super) fn link(demo: &str, query: &str) -> String {
     if query.is_empty() {

@@ -13,6 +13,16 @@ use zeta_solver::two_dof_exact::ExactMetrics;
 /// Every `stride`-th state is plotted once a run exceeds this many points.
 const PLOT_POINTS: usize = 1000;
 
+/// The look of each line that draws the road, the wheel or the body (the body the same
+/// in the motion and the frequency response; the tyre's gain a little heavier than the
+/// wheel's motion).
+const ROAD: LineStyle = LineStyle::dotted(Ink::Black, 2.0);
+const WHEEL: LineStyle = LineStyle::dashed(Ink::Vermillion, 1.8);
+const TYRE: LineStyle = LineStyle::dashed(Ink::Vermillion, 2.0);
+const BODY: LineStyle = LineStyle::solid(Ink::Blue, 2.5);
+/// The one trace of a plot over the run (body acceleration, tyre deflection).
+const TRACE: LineStyle = LineStyle::solid(Ink::Blue, 2.0);
+
 fn stride(run: &Run) -> usize {
     run.states.len().div_ceil(PLOT_POINTS).max(1)
 }
@@ -69,21 +79,9 @@ pub(super) fn motion(run: &Run, t_end: f64, kind: RoadKind) -> Figure {
         t_end,
         Axis::linear(t!("quarter-car-2dof-axis-height"), "m", y),
     )
-    .with_line(
-        t!("quarter-car-2dof-series-road"),
-        road,
-        LineStyle::dotted(Ink::Black, 2.0),
-    )
-    .with_line(
-        t!("quarter-car-2dof-series-wheel"),
-        wheel,
-        LineStyle::dashed(Ink::Vermillion, 1.8),
-    )
-    .with_line(
-        t!("quarter-car-2dof-series-body"),
-        body,
-        LineStyle::solid(Ink::Blue, 2.5),
-    )
+    .with_line(t!("quarter-car-2dof-series-road"), road, ROAD)
+    .with_line(t!("quarter-car-2dof-series-wheel"), wheel, WHEEL)
+    .with_line(t!("quarter-car-2dof-series-body"), body, BODY)
     .with_origin_lines()
     .described(description)
 }
@@ -109,11 +107,7 @@ pub(super) fn acceleration(
         t_end,
         Axis::linear(t!("quarter-car-2dof-axis-acceleration"), "m/s²", y),
     )
-    .with_line(
-        t!("quarter-car-2dof-series-body-acceleration"),
-        acc,
-        LineStyle::solid(Ink::Blue, 2.0),
-    );
+    .with_line(t!("quarter-car-2dof-series-body-acceleration"), acc, TRACE);
     if let Some(r) = rms {
         let style = LineStyle::dashed(Ink::Purple, 1.5);
         fig = fig
@@ -161,7 +155,7 @@ pub(super) fn tyre(run: &Run, t_end: f64, static_tyre: f64, m: Option<ExactMetri
         t_end,
         Axis::linear(t!("quarter-car-2dof-axis-tyre-deflection"), "m", y),
     )
-    .with_line("z_u − u", defl, LineStyle::solid(Ink::Blue, 2.0));
+    .with_line("z_u − u", defl, TRACE);
     if shows_limit {
         fig = fig.with_line(
             t!("quarter-car-2dof-series-lift-off"),
@@ -237,16 +231,8 @@ pub(super) fn frf(run: &Run, f_body: f64, f_wheel: f64, sine: Option<f64>) -> Fi
         Axis::log(t!("quarter-car-2dof-axis-frequency"), "Hz", FRF_RANGE),
         Axis::log(t!("quarter-car-2dof-axis-magnitude"), "", y),
     )
-    .with_line(
-        t!("quarter-car-2dof-series-body-gain"),
-        body,
-        LineStyle::solid(Ink::Blue, 2.5),
-    )
-    .with_line(
-        t!("quarter-car-2dof-series-tyre-gain"),
-        tyre,
-        LineStyle::dashed(Ink::Vermillion, 2.0),
-    );
+    .with_line(t!("quarter-car-2dof-series-body-gain"), body, BODY)
+    .with_line(t!("quarter-car-2dof-series-tyre-gain"), tyre, TYRE);
     for (f, name, ink) in [
         (f_body, "f_body", Ink::Green),
         (f_wheel, "f_wheel", Ink::Purple),

@@ -6,17 +6,12 @@
 
 use super::run::FRF_POINTS;
 use super::*;
-use crate::demos::testing::{self, number, value};
-use crate::demos::Frame;
-use crate::params::{resolve_query, Params};
-
-fn run(query: &str) -> Frame {
-    testing::run("quarter-car-2dof", query)
-}
+use crate::demos::testing::{number, text, value, Tested};
+use crate::params::resolve_query;
 
 #[test]
 fn natural_frequencies_are_the_two_modes() {
-    let f = run("");
+    let f = QuarterCar2Dof::run("");
     let fb = number(&f, "f_body");
     let fw = number(&f, "f_wheel");
     assert!(fb > 1.0 && fb < 1.5, "{fb}");
@@ -33,7 +28,7 @@ fn natural_frequencies_are_the_two_modes() {
 #[test]
 fn every_road_runs_and_draws() {
     for road in ["bump", "step", "sine", "random"] {
-        let f = run(&format!("road={road}"));
+        let f = QuarterCar2Dof::run(&format!("road={road}"));
         assert!(number(&f, "rms_body_accel") > 0.0, "{road}");
         assert!(number(&f, "rms_tyre_deflection") > 0.0, "{road}");
         assert!(f.figures.iter().all(|g| g.has_visible_data()), "{road}");
@@ -44,8 +39,8 @@ fn every_road_runs_and_draws() {
 
 #[test]
 fn a_rougher_road_class_shakes_more() {
-    let a = run("road=random&class=A&V=20");
-    let c = run("road=random&class=C&V=20");
+    let a = QuarterCar2Dof::run("road=random&class=A&V=20");
+    let c = QuarterCar2Dof::run("road=random&class=C&V=20");
     // Each class quadruples the PSD: RMS road height and response double per class, as
     // long as the wheel stays on the road (the only nonlinearity).
     let ratio = number(&c, "rms_road") / number(&a, "rms_road");
@@ -59,21 +54,21 @@ fn a_rougher_road_class_shakes_more() {
 fn a_short_fast_bump_gives_the_fine_step_reference() {
     // The audit's case: a 5 cm bump 0.1 m long at 40 m/s lasts 2.5 ms. Fine-step reference
     // (3 digits): 0.116 m/s² RMS body acceleration over the 2.5025 s run, 2.82 mm travel.
-    let f = run("road=bump&L=0.1&V=40");
+    let f = QuarterCar2Dof::run("road=bump&L=0.1&V=40");
     assert!((number(&f, "rms_body_accel") - 0.116).abs() < 5e-4);
     assert!((number(&f, "max_travel") - 2.82e-3).abs() < 5e-6);
     assert_eq!(number(&f, "window"), 0.1 / 40.0 + 2.5);
-    assert!(testing::text(&f, "rms_body_accel").ends_with("(0–2.50 s)"));
+    assert!(text(&f, "rms_body_accel").ends_with("(0–2.50 s)"));
 }
 
 #[test]
 fn the_tyre_cannot_pull_and_the_lift_off_is_shown() {
-    let calm = run("road=bump&h=0.02&L=2");
+    let calm = QuarterCar2Dof::run("road=bump&h=0.02&L=2");
     assert_eq!(value(&calm, "lift_off"), "");
     assert_eq!(number(&calm, "airborne_time"), 0.0);
     assert!(calm.figures[3].description.contains("keeps contact"));
     // A 10 cm bump half a metre long at 20 m/s throws the wheel off the road.
-    let thrown = run("road=bump&h=0.1&L=0.5&V=20");
+    let thrown = QuarterCar2Dof::run("road=bump&h=0.1&L=0.5&V=20");
     let lift = number(&thrown, "lift_off");
     let air = number(&thrown, "airborne_time");
     assert!(lift > 0.0 && lift < 0.1 && air > 0.05, "{lift} {air}");
@@ -110,24 +105,23 @@ fn the_run_stays_small_at_the_stiffest_tyre() {
 
 #[test]
 fn the_schematic_moves_with_the_run() {
-    let mut d = QuarterCar2Dof::default();
-    let decl = QuarterCar2Dof::declare();
-    let p = decl.read(&Params::defaults(&decl.spec()));
-    d.step(&p).unwrap();
-    let a = d.schematic(&p, 0.0).unwrap();
-    let b = d.schematic(&p, 0.1).unwrap();
+    let d = QuarterCar2Dof::live("");
+    let (a, b) = (d.at(0.0), d.at(0.1));
     assert_ne!(a.series[0].points, b.series[0].points);
     assert_ne!(a.description, b.description);
 }
 
 #[test]
 fn the_random_road_shows_the_stationary_comfort_values() {
-    let f = run("road=random&class=C&V=20");
+    let f = QuarterCar2Dof::run("road=random&class=C&V=20");
     let a = number(&f, "stationary_accel");
     let aw = number(&f, "stationary_weighted_accel");
     // W_k weighs body bounce (≈ 1.3 Hz) by about one half: a_w is well below the
     // unweighted value, which is of the order of the run's own RMS.
     assert!(aw < 0.9 * a && aw > 0.3 * a, "{a} {aw}");
     assert!((a / number(&f, "rms_body_accel") - 1.0).abs() < 0.5);
-    assert_eq!(value(&run(""), "stationary_weighted_accel"), "");
+    assert_eq!(
+        value(&QuarterCar2Dof::run(""), "stationary_weighted_accel"),
+        ""
+    );
 }

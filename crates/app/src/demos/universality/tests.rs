@@ -2,17 +2,12 @@
 //! snapshot tests (`crates/app/tests/snapshots.rs`).
 
 use super::*;
-use crate::demos::testing::{self, number, text, value};
-use crate::demos::{create, Frame};
+use crate::demos::testing::{number, text, value, Tested};
 use crate::params::Params;
-
-fn run(query: &str) -> Frame {
-    testing::run("universality", query)
-}
 
 #[test]
 fn each_machine_shows_its_coefficients_in_its_own_units() {
-    let f = run("A=servo&B=thermal");
+    let f = Universality::run("A=servo&B=thermal");
     assert_eq!(text(&f, "a_A"), "0.001000 kg·m²");
     assert_eq!(text(&f, "b_A"), "10.00 mN·m·s/rad");
     assert_eq!(text(&f, "c_A"), "1.000 N·m/rad");
@@ -25,16 +20,14 @@ fn each_machine_shows_its_coefficients_in_its_own_units() {
 
 #[test]
 fn match_tunes_b_to_a_and_publishes_the_tuned_sliders() {
-    let mut demo = create("universality").unwrap();
-    let spec = demo.spec();
-    let (mut params, _) = crate::params::resolve_query(&spec, "A=mass-spring&B=rlc&match=1");
-    let f = demo.update(&params);
+    let mut d = Universality::live("A=mass-spring&B=rlc&match=1");
+    let f = d.frame.clone();
     assert_eq!(value(&f, "match"), "on: B has the ωₙ and ζ of A");
     let rel = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
     assert!(rel(number(&f, "wn_B"), number(&f, "wn_A")));
     assert!(rel(number(&f, "zeta_B"), number(&f, "zeta_A")));
     // L = 0.1 H kept: C = 1/(Lωₙ²) = 0.1 F, R = 2ζLωₙ = 0.2 Ω.
-    let derived = demo.derived_params();
+    let derived = d.demo.derived_params();
     let keys: Vec<&str> = derived.iter().map(|d| d.0).collect();
     assert_eq!(keys, ["B_C", "B_R"]);
     assert!(rel(derived[0].1, 0.1) && rel(derived[1].1, 0.2));
@@ -45,15 +38,16 @@ fn match_tunes_b_to_a_and_publishes_the_tuned_sliders() {
     }
     assert!(f.figures[0].description.contains("coincide"));
     // Writing the derived values back changes nothing.
+    let spec = d.demo.spec();
     for (k, v) in derived {
-        params.set_raw(&spec, k, &format!("{v}"));
+        d.params.set_raw(&spec, k, &format!("{v}"));
     }
-    assert_eq!(demo.update(&params), f);
+    assert_eq!(d.demo.update(&d.params), f);
 }
 
 #[test]
 fn a_thermal_system_cannot_be_tuned_to_an_oscillator() {
-    let f = run("A=mass-spring&B=thermal&match=1");
+    let f = Universality::run("A=mass-spring&B=thermal&match=1");
     let status = value(&f, "match");
     // √(1 + C₂/C₁) = √1.2 = 1.095.
     assert!(
@@ -67,16 +61,14 @@ fn a_thermal_system_cannot_be_tuned_to_an_oscillator() {
 #[test]
 fn tuned_values_outside_the_sliders_are_reported_not_applied() {
     // A storey at ωₙ ≈ 30 rad/s would need a U-tube column of 2g/ωₙ² = 22 mm.
-    let mut demo = create("universality").unwrap();
-    let spec = demo.spec();
-    let (params, _) = crate::params::resolve_query(&spec, "A=storey&B=u-tube&match=1");
-    let f = demo.update(&params);
+    let d = Universality::live("A=storey&B=u-tube&match=1");
+    let f = &d.frame;
     assert!(
-        value(&f, "match").contains("within the sliders"),
+        value(f, "match").contains("within the sliders"),
         "{}",
-        value(&f, "match")
+        value(f, "match")
     );
-    assert!(demo.derived_params().is_empty());
+    assert!(d.demo.derived_params().is_empty());
 }
 
 #[test]
@@ -103,13 +95,11 @@ fn hidden_sliders_belong_to_their_machine_and_slot() {
 #[test]
 fn every_machine_draws_in_both_slots() {
     for kind in ["mass-spring", "rlc", "u-tube", "servo", "storey", "thermal"] {
-        let f = run(&format!("A={kind}&B={kind}"));
+        let d = Universality::live(&format!("A={kind}&B={kind}"));
+        let f = &d.frame;
         assert!(f.figures.iter().all(|fig| fig.has_visible_data()), "{kind}");
-        let mut demo = create("universality").unwrap();
-        let spec = demo.spec();
-        let (params, _) = crate::params::resolve_query(&spec, &format!("A={kind}&B={kind}"));
-        let (t0, t1) = demo.update(&params).time_span.unwrap();
-        let fig = demo.schematic(&params, 0.5 * (t0 + t1)).unwrap();
+        let (t0, t1) = f.time_span.unwrap();
+        let fig = d.at(0.5 * (t0 + t1));
         assert!(fig.has_visible_data() && fig.description.starts_with("At t ="));
     }
 }
