@@ -47,7 +47,44 @@ pub trait Choice: Copy + PartialEq + 'static {
 ///     }
 /// }
 /// ```
+///
+/// A choice over some values of a type declared elsewhere (e.g. a solver enum, whose
+/// `Choice` table would differ per demo) is a newtype around it, with its default and
+/// options listed the same way:
+///
+/// ```ignore
+/// choice_enum! {
+///     /// The road class.
+///     pub struct Road(pub(super) IsoClass) {
+///         default IsoClass::C;
+///         IsoClass::A => ("a", "class A (very good)"),
+///         IsoClass::C => ("c", "class C (average)"),
+///     }
+/// }
+/// ```
 macro_rules! choice_enum {
+    (
+        $(#[$meta:meta])*
+        $vis:vis struct $name:ident($inner_vis:vis $inner:ty) {
+            default $default:expr;
+            $($value:expr => ($key:literal, $label:literal),)+
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        $vis struct $name($inner_vis $inner);
+
+        impl Default for $name {
+            fn default() -> Self {
+                $name($default)
+            }
+        }
+
+        impl $crate::declare::Choice for $name {
+            const OPTIONS: &'static [(Self, &'static str, &'static str)] =
+                &[$(($name($value), $key, $label)),+];
+        }
+    };
     (
         $(#[$meta:meta])*
         $vis:vis enum $name:ident {
@@ -190,5 +227,41 @@ impl<P> Param<P> {
     /// Options, for a choice.
     pub fn options(&self) -> &[ChoiceOption] {
         &self.spec.options
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Choice;
+
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    enum Grade {
+        Low,
+        Mid,
+        High,
+    }
+
+    choice_enum! {
+        /// Two of the three grades, Mid by default.
+        struct Picked(Grade) {
+            default Grade::Mid;
+            Grade::Low => ("low", "the low grade"),
+            Grade::Mid => ("mid", "the middle grade"),
+        }
+    }
+
+    #[test]
+    fn a_newtype_choice_lists_its_values_in_order_with_its_own_default() {
+        assert_eq!(Picked::default(), Picked(Grade::Mid));
+        let keys: Vec<_> = Picked::OPTIONS.iter().map(|o| (o.0 .0, o.1, o.2)).collect();
+        assert_eq!(
+            keys,
+            [
+                (Grade::Low, "low", "the low grade"),
+                (Grade::Mid, "mid", "the middle grade")
+            ]
+        );
+        assert_eq!(Picked(Grade::Mid).key(), "mid");
+        assert!(!Picked::OPTIONS.iter().any(|o| o.0 .0 == Grade::High));
     }
 }

@@ -32,24 +32,16 @@ impl Metric {
     }
 }
 
-/// The road under the comfort metric: the solver's ISO 8608 class, A–D (class C, the
-/// quarter-car-2dof demo's default, by default).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Road(pub(super) IsoClass);
-
-impl Default for Road {
-    fn default() -> Self {
-        Road(IsoClass::C)
+choice_enum! {
+    /// The road under the comfort metric: the solver's ISO 8608 class, A–D (class C, the
+    /// quarter-car-2dof demo's default, by default).
+    pub struct Road(pub(super) IsoClass) {
+        default IsoClass::C;
+        IsoClass::A => ("a", "class A (very good)"),
+        IsoClass::B => ("b", "class B (good)"),
+        IsoClass::C => ("c", "class C (average)"),
+        IsoClass::D => ("d", "class D (poor)"),
     }
-}
-
-impl Choice for Road {
-    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
-        (Road(IsoClass::A), "a", "class A (very good)"),
-        (Road(IsoClass::B), "b", "class B (good)"),
-        (Road(IsoClass::C), "c", "class C (average)"),
-        (Road(IsoClass::D), "d", "class D (poor)"),
-    ];
 }
 
 impl Road {

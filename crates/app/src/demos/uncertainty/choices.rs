@@ -1,7 +1,7 @@
 //! The tolerance demo's choice parameters as typed enums: the system analysed, the
 //! distribution of the parts and the quantity of the second histogram.
 
-use crate::declare::{choice_enum, Choice};
+use crate::declare::choice_enum;
 use crate::t;
 use zeta_solver::design::monte_carlo::{Distribution, McSamples};
 
@@ -16,30 +16,14 @@ choice_enum! {
     }
 }
 
-/// How the parts are distributed within their tolerance: the solver's distribution
-/// (uniform within ±tolerance by default; normal with the tolerance as 3σ).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Dist(pub(super) Distribution);
-
-impl Default for Dist {
-    fn default() -> Self {
-        Dist(Distribution::Uniform)
+choice_enum! {
+    /// How the parts are distributed within their tolerance: the solver's distribution
+    /// (uniform within ±tolerance by default; normal with the tolerance as 3σ).
+    pub struct Dist(pub(super) Distribution) {
+        default Distribution::Uniform;
+        Distribution::Uniform => ("uniform", "uniform within ±tolerance"),
+        Distribution::Normal => ("normal", "normal, tolerance = 3σ"),
     }
-}
-
-impl Choice for Dist {
-    const OPTIONS: &'static [(Self, &'static str, &'static str)] = &[
-        (
-            Dist(Distribution::Uniform),
-            "uniform",
-            "uniform within ±tolerance",
-        ),
-        (
-            Dist(Distribution::Normal),
-            "normal",
-            "normal, tolerance = 3σ",
-        ),
-    ];
 }
 
 choice_enum! {
