@@ -16,6 +16,8 @@ fi
 # Release builds: shrink the wasm with binaryen's wasm-opt from npm (package-lock.json).
 # Not Debian's binaryen: its wasm-opt 108 rewrites the externref table that wasm-bindgen
 # emits into one browsers reject at start-up.
+# `-Os --converge` rather than `-Oz`: about 2 KB less brotli (what the page downloads),
+# though 7 KB more before compression; -Os gives up less speed for size (docs/wasm-size.md).
 wasm="$stage/zeta-app_bg.wasm"
 opt="${TRUNK_SOURCE_DIR:-.}/node_modules/.bin/wasm-opt"
 if [ "${TRUNK_PROFILE:-}" = "release" ]; then
@@ -23,7 +25,7 @@ if [ "${TRUNK_PROFILE:-}" = "release" ]; then
     echo "post-build: $opt is missing; run scripts/setup.sh" >&2
     exit 1
   fi
-  "$opt" -Oz --strip-debug --strip-producers \
+  "$opt" -Os --converge --strip-debug --strip-producers \
     --enable-bulk-memory --enable-sign-ext --enable-mutable-globals \
     --enable-nontrapping-float-to-int --enable-reference-types --enable-multivalue \
     "$wasm" -o "$wasm.opt"
