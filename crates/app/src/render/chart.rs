@@ -52,7 +52,7 @@ where
     let (w, _) = area.dim_in_pixel();
     let room = f64::from(w) - f64::from(px(20.0, scale));
     let (title, size) = fit(area, &fig.title, 15.0 * scale, room);
-    let font = ("sans-serif", size).into_font().color(&theme.foreground);
+    let font = (super::SANS, size).into_font().color(&theme.foreground);
     ChartBuilder::on(area)
         .caption(title, font)
         .margin(px(10.0, scale))
@@ -80,7 +80,7 @@ where
     Y::CoordDescType: ValueFormatter<f64>,
 {
     let fg = theme.foreground;
-    let font = |size: f64| ("sans-serif", size * scale).into_font().color(&fg);
+    let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
     let entries = legend_entries(fig);
     let legend = Legend::measure(root, &entries, scale)?;
 
@@ -115,7 +115,7 @@ where
         .configure_mesh()
         .x_desc(x_title)
         .y_desc(y_title)
-        .axis_desc_style(("sans-serif", desc).into_font().color(&fg))
+        .axis_desc_style((super::SANS, desc).into_font().color(&fg))
         .label_style(font(12.0))
         .bold_line_style(theme.grid.stroke_width(px(1.0, scale)))
         .light_line_style(theme.grid_minor.stroke_width(px(1.0, scale)))

@@ -39,7 +39,7 @@ pub(super) fn draw_colour_bar<DB: DrawingBackend>(
         theme.grid.stroke_width(1),
     ))
     .map_err(err)?;
-    let font = ("sans-serif", 11.0 * scale)
+    let font = (super::SANS, 11.0 * scale)
         .into_font()
         .color(&theme.foreground);
     let label_x = x1 + px(4.0, scale) as i32;
@@ -60,7 +60,7 @@ pub(super) fn draw_colour_bar<DB: DrawingBackend>(
     }
     if !h.label.is_empty() {
         let (label, size) = super::fit::fit(area, &h.label, 12.0 * scale, f64::from(bottom - top));
-        let along = ("sans-serif", size)
+        let along = (super::SANS, size)
             .into_font()
             .color(&theme.foreground)
             .transform(FontTransform::Rotate90)

@@ -11,7 +11,7 @@ pub(super) const MIN_SHRINK: f64 = 0.72;
 /// Width of `text` at `size` px in the plots' sans-serif face (0 if it cannot be
 /// measured).
 fn width<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, text: &str, size: f64) -> f64 {
-    let font = ("sans-serif", size).into_text_style(area);
+    let font = (super::SANS, size).into_text_style(area);
     area.estimate_text_size(text, &font)
         .map_or(0.0, |(w, _)| f64::from(w))
 }

@@ -126,7 +126,7 @@ pub(super) struct Legend {
 
 impl Legend {
     fn font(theme: &Theme, scale: f64) -> TextStyle<'static> {
-        ("sans-serif", 12.0 * scale)
+        (super::SANS, 12.0 * scale)
             .into_font()
             .color(&theme.foreground)
             .pos(Pos::new(HPos::Left, VPos::Center))
@@ -137,7 +137,7 @@ impl Legend {
         entries: &[(&str, LineStyle)],
         scale: f64,
     ) -> Result<Self, RenderError> {
-        let font = ("sans-serif", 12.0 * scale).into_text_style(area);
+        let font = (super::SANS, 12.0 * scale).into_text_style(area);
         let mut widths = Vec::with_capacity(entries.len());
         for (label, _) in entries {
             let (w, _) = area.estimate_text_size(label, &font).map_err(err)?;

@@ -53,7 +53,7 @@ where
     Y: Ranged<ValueType = f64>,
 {
     let fg = theme.foreground;
-    let font = |size: f64| ("sans-serif", size * scale).into_font().color(&fg);
+    let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
     let mut legend: Vec<(&str, LineStyle)> = Vec::new();
     let mut clipped = false;
     for s in &fig.series {
