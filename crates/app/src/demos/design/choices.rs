@@ -47,6 +47,6 @@ choice_enum! {
 impl Road {
     /// The class's letter, as ISO 8608 writes it: the URL key in capitals.
     pub(super) fn letter(self) -> String {
-        self.key().to_uppercase()
+        self.key().to_ascii_uppercase()
     }
 }
