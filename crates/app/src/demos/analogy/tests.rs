@@ -3,19 +3,15 @@
 
 use super::figures::CIRCUIT_OFFSET;
 use super::*;
+use crate::demos::create;
 use crate::demos::regime_cases::each_regime;
-use crate::demos::testing::{self, number, value};
-use crate::demos::{create, Frame};
+use crate::demos::testing::{number, value, Tested};
 use crate::figure::finite_extent;
 use crate::params::Params;
 
-fn run(query: &str) -> Frame {
-    testing::run("analogy", query)
-}
-
 #[test]
 fn the_circuit_mirrors_the_mechanism() {
-    let f = run("m=4&c=2&k=25&x0=0.02");
+    let f = Analogy::run("m=4&c=2&k=25&x0=0.02");
     assert_eq!(number(&f, "L"), 4.0);
     assert_eq!(number(&f, "R"), 2.0);
     assert!((number(&f, "C") - 0.04).abs() < 1e-15);
@@ -47,11 +43,11 @@ fn normalised_curves_coincide_in_every_regime() {
 
 #[test]
 fn energy_is_conserved_without_damping_and_lost_with_it() {
-    let free = run("c=0");
+    let free = Analogy::run("c=0");
     let tot = &free.figures[1].series[4].points;
     let e0 = tot[0].1;
     assert!(tot.iter().all(|p| (p.1 - e0).abs() < 1e-9 * e0));
-    let damped = run("c=2");
+    let damped = Analogy::run("c=2");
     let tot = &damped.figures[1].series[4].points;
     assert!(tot.last().unwrap().1 < 0.5 * tot[0].1);
 }
@@ -86,7 +82,7 @@ fn the_live_table_shows_equal_numbers_in_both_machines() {
     let live = table.live_cells();
     assert_eq!(live.len(), 18, "{live:?}");
     for query in ["", "m=4&c=2&k=25&x0=0.02", "m=0.37&c=13.1&k=731&x0=0.093"] {
-        let f = run(query);
+        let f = Analogy::run(query);
         for row in [
             "inertia",
             "dissipation",

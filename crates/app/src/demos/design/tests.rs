@@ -4,14 +4,9 @@
 use super::figures::ISO_ZETAS;
 use super::*;
 use crate::demos::progressive::shown;
-use crate::demos::testing::{number, run as run_demo};
-use crate::demos::Frame;
+use crate::demos::testing::{number, Tested};
 use crate::params::resolve_query;
 use zeta_solver::design::sweep::rebound_from_rest;
-
-fn run(query: &str) -> Frame {
-    run_demo("design", query)
-}
 
 /// One model step of `d` for `query`, as the page would run it.
 fn step(d: &mut DesignSpace, query: &str) -> (P, Results) {
@@ -25,7 +20,7 @@ fn step(d: &mut DesignSpace, query: &str) -> (P, Results) {
 
 #[test]
 fn readouts_are_the_selected_design_from_the_solver() {
-    let f = run("m=300&k=24000&c=2000");
+    let f = DesignSpace::run("m=300&k=24000&c=2000");
     let sys = SecondOrder::mechanical(300.0, 2000.0, 24_000.0).unwrap();
     let zeta = sys.damping_ratio().unwrap();
     assert_eq!(number(&f, "zeta"), zeta);
@@ -57,7 +52,7 @@ fn the_map_is_recomputed_only_when_its_inputs_change() {
 
 #[test]
 fn the_map_cells_hold_the_solver_metrics_at_their_centres() {
-    let f = run("n=20&metric=peak_rebound");
+    let f = DesignSpace::run("n=20&metric=peak_rebound");
     let map = f.figures[0].heatmap.as_ref().unwrap();
     // Cell (ix, iy) = (3, 7): k = 10 000 + 3.5·2 500, c = 500 + 7.5·375.
     let sys = SecondOrder::mechanical(300.0, 3_312.5, 18_750.0).unwrap();
@@ -90,7 +85,7 @@ fn clicking_picks_a_design_and_the_front_is_non_dominated() {
 
 #[test]
 fn iso_zeta_lines_lie_on_their_damping_ratio() {
-    let f = run("");
+    let f = DesignSpace::run("");
     let map = &f.figures[0];
     assert_eq!(map.series.len(), 5);
     for (s, zeta) in map.series.iter().zip(ISO_ZETAS) {
@@ -130,11 +125,15 @@ fn a_map_cell_and_the_two_dof_demo_agree_on_comfort_for_the_same_car() {
             "{design}: {cell} vs {a_w}"
         );
         // The page's map shows that cell as ln(a_w) on its logarithmic colour bar.
-        let map = run(&query).figures.swap_remove(0).heatmap.unwrap();
+        let map = DesignSpace::run(&query)
+            .figures
+            .swap_remove(0)
+            .heatmap
+            .unwrap();
         let ln_a_w = zeta_solver::grid::log10(a_w) * std::f64::consts::LN_10;
         assert!(map.log && (map.values[7 * 20 + 3] - ln_a_w).abs() < 1e-9);
         // The selected design's readouts call the very function the two-DOF demo calls.
-        let sel = run(&format!("k=18750&c=3312.5&{design}"));
+        let sel = DesignSpace::run(&format!("k=18750&c=3312.5&{design}"));
         assert_eq!(number(&sel, "accel_rms"), a_w);
         let unweighted = number(&car, "stationary_accel");
         assert_eq!(number(&sel, "accel_unweighted"), unweighted);
@@ -148,7 +147,7 @@ fn comfort_labels_say_weighted_two_dof_and_which_road() {
     let label = |key: &str| spec.readouts.iter().find(|r| r.key == key).unwrap().label;
     assert!(label("accel_rms").contains("weighted by ISO 2631-1 W_k"));
     assert!(label("accel_unweighted").contains("unweighted"));
-    let f = run("metric=accel_rms&road=c&V=20");
+    let f = DesignSpace::run("metric=accel_rms&road=c&V=20");
     let bar = &f.figures[0].heatmap.as_ref().unwrap().label;
     assert!(bar.contains("W_k-weighted"), "{bar}");
     assert!(f.figures[1].y.label.contains("W_k-weighted"));
@@ -159,7 +158,7 @@ fn comfort_labels_say_weighted_two_dof_and_which_road() {
         assert!(fig.description.contains("ISO 8608 class C road at 20 m/s"));
     }
     // The two-DOF demo's defaults: class C at 10 m/s, 40 kg wheel, 200 kN/m tyre.
-    let f = run("metric=accel_rms");
+    let f = DesignSpace::run("metric=accel_rms");
     assert!(f.figures[0]
         .description
         .contains("wheel 40 kg, tyre 200 kN/m"));
@@ -169,8 +168,8 @@ fn comfort_labels_say_weighted_two_dof_and_which_road() {
 #[test]
 fn the_road_class_scales_only_the_comfort_metric() {
     // ISO 8608: each class has 4× the roughness of the one before, so 2× the RMS.
-    let b = run("road=b");
-    let c = run("road=c");
+    let b = DesignSpace::run("road=b");
+    let c = DesignSpace::run("road=c");
     for key in ["accel_rms", "accel_unweighted"] {
         assert!((number(&c, key) / number(&b, key) - 2.0).abs() < 1e-12);
     }
@@ -190,7 +189,7 @@ fn settling_and_rebound_labels_say_free_response_relative_to_x0() {
     }
     let band = spec.param("band").unwrap();
     assert!(band.label.contains("x₀") && band.label.contains("free response"));
-    let f = run("band=2");
+    let f = DesignSpace::run("band=2");
     assert!(f.figures[0].title.contains("±2 % of x₀"));
     assert!(f.figures[2].description.contains("not a step"));
     // The colour bar names its unit for every metric.
@@ -200,7 +199,7 @@ fn settling_and_rebound_labels_say_free_response_relative_to_x0() {
         ("accel_rms", "[m/s²]"),
         ("peak_transmissibility", "[m/m]"),
     ] {
-        let f = run(&format!("metric={metric}"));
+        let f = DesignSpace::run(&format!("metric={metric}"));
         let label = &f.figures[0].heatmap.as_ref().unwrap().label;
         assert!(label.contains(unit), "{metric}: {label}");
     }

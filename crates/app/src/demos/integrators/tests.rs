@@ -1,16 +1,12 @@
 //! The integrators demo's own behaviour; its numbers at every preset are pinned by the
 //! snapshot tests (`crates/app/tests/snapshots.rs`).
 
-use crate::demos::testing::{number, run as run_demo, value};
-use crate::demos::Frame;
-
-fn run(query: &str) -> Frame {
-    run_demo("integrators", query)
-}
+use super::Integrators;
+use crate::demos::testing::{number, value, Tested};
 
 #[test]
 fn preset_shows_euler_unstable_and_the_orders() {
-    let f = run("");
+    let f = Integrators::run("");
     assert_eq!(value(&f, "stable_euler"), "no");
     assert_eq!(value(&f, "stable_rk4"), "yes");
     let (e, h, r) = (
@@ -32,7 +28,7 @@ fn preset_shows_euler_unstable_and_the_orders() {
 #[test]
 fn the_step_is_exactly_the_chosen_h() {
     // T = 20 s, h = 0.3 s: 66 steps of 0.3 s and a last one of 0.2 s ending at T.
-    let f = run("h=0.3");
+    let f = Integrators::run("h=0.3");
     assert_eq!(number(&f, "h_used"), 0.3);
     assert!((number(&f, "h_last") - 0.2).abs() < 1e-12);
     assert!(
@@ -43,7 +39,7 @@ fn the_step_is_exactly_the_chosen_h() {
         f.figures[0].description
     );
     // When h divides T every step is h.
-    let f = run("h=0.1");
+    let f = Integrators::run("h=0.1");
     assert_eq!(number(&f, "h_last"), 0.1);
 }
 
@@ -51,7 +47,7 @@ fn the_step_is_exactly_the_chosen_h() {
 fn every_preset_has_every_fixed_step_order_near_its_textbook_value() {
     let spec = crate::demos::create("integrators").unwrap().spec();
     for preset in &spec.presets {
-        let f = crate::demos::testing::preset("integrators", preset.label);
+        let f = Integrators::preset(preset.label);
         for (key, p) in [
             ("order_euler", 1.0),
             ("order_symplectic_euler", 1.0),
@@ -69,18 +65,18 @@ fn every_preset_has_every_fixed_step_order_near_its_textbook_value() {
 #[test]
 fn dp45_has_an_order_only_where_its_tolerance_sets_the_steps() {
     // A long decaying run: after the transient, stability sets DP45's steps.
-    let f = run("zeta=0.5&T=60");
+    let f = Integrators::run("zeta=0.5&T=60");
     assert_eq!(value(&f, "order_dp45"), "");
     assert!(f.figures[3]
         .description
         .contains("DP45 has no observed order"));
-    let f = run("zeta=0&h=0.1");
+    let f = Integrators::run("zeta=0&h=0.1");
     assert!((number(&f, "order_dp45") - 5.0).abs() < 0.2);
 }
 
 #[test]
 fn stiff_dp45_gets_no_meaningless_order() {
-    let f = run("zeta=2&wn=20&h=0.03&T=5");
+    let f = Integrators::run("zeta=2&wn=20&h=0.03&T=5");
     for (key, want) in [
         ("order_dp45", ""),
         ("stable_euler", "no"),
@@ -93,7 +89,7 @@ fn stiff_dp45_gets_no_meaningless_order() {
 #[test]
 fn an_overflowing_run_says_so_without_a_number() {
     // RK4 at ωₙh = 6 multiplies by |R(6i)| ≈ 48 per step: 200 steps overflow.
-    let f = run("zeta=0&wn=20&h=0.3&T=60");
+    let f = Integrators::run("zeta=0&wn=20&h=0.3&T=60");
     assert_eq!(value(&f, "max_err_rk4"), "");
     let text = crate::demos::testing::text(&f, "max_err_rk4");
     assert!(text.starts_with("overflow at t = "), "{text}");

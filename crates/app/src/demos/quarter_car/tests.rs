@@ -5,13 +5,9 @@
 #![allow(clippy::disallowed_methods)]
 
 use super::*;
-use crate::demos::testing::{self, close, number, value};
-use crate::demos::{create, Frame};
+use crate::demos::create;
+use crate::demos::testing::{close, number, value, Tested};
 use crate::params::Params;
-
-fn run(query: &str) -> Frame {
-    testing::run("quarter-car", query)
-}
 
 #[test]
 fn defaults_of_c_and_zeta_agree() {
@@ -20,12 +16,12 @@ fn defaults_of_c_and_zeta_agree() {
         2.0 * ZETA_DEFAULT * (M_DEFAULT * K_DEFAULT).sqrt(),
         1e-15
     ));
-    assert!(close(number(&run(""), "zeta"), 0.3, 1e-14));
+    assert!(close(number(&QuarterCar::run(""), "zeta"), 0.3, 1e-14));
 }
 
 #[test]
 fn readouts_match_closed_forms() {
-    let f = run("c=1610");
+    let f = QuarterCar::run("c=1610");
     let wn = 80.0f64.sqrt();
     let zeta = 1610.0 / (2.0 * 7.2e6f64.sqrt());
     assert!(close(number(&f, "wn"), wn, 1e-14));
@@ -91,20 +87,24 @@ fn moving_zeta_sets_c_and_moving_c_sets_zeta() {
 
 #[test]
 fn url_rule_c_wins_when_both_are_given() {
-    assert_eq!(number(&run("zeta=0.9&c=3000"), "c"), 3000.0);
-    assert_eq!(number(&run("c=3000&zeta=0.9"), "c"), 3000.0);
-    assert!(close(number(&run("zeta=0.9"), "zeta"), 0.9, 1e-14));
+    assert_eq!(number(&QuarterCar::run("zeta=0.9&c=3000"), "c"), 3000.0);
+    assert_eq!(number(&QuarterCar::run("c=3000&zeta=0.9"), "c"), 3000.0);
+    assert!(close(
+        number(&QuarterCar::run("zeta=0.9"), "zeta"),
+        0.9,
+        1e-14
+    ));
 }
 
 #[test]
 fn presets_give_consistent_c_and_zeta() {
     for preset in QuarterCar::declare().spec().presets {
-        let f = testing::preset("quarter-car", preset.label);
+        let f = QuarterCar::preset(preset.label);
         let z = preset.values.iter().find(|(k, _)| *k == "zeta").unwrap().1;
         assert!(close(number(&f, "zeta"), z, 1e-12), "{}", preset.label);
     }
     assert_eq!(
-        value(&run("zeta=1"), "regime"),
+        value(&QuarterCar::run("zeta=1"), "regime"),
         "critically damped",
         "ζ = 1 from the slider is exactly critical"
     );
@@ -112,7 +112,7 @@ fn presets_give_consistent_c_and_zeta() {
 
 #[test]
 fn settling_curve_breaks_at_jumps_and_marks_the_minimum() {
-    let f = run("");
+    let f = QuarterCar::run("");
     let fig = &f.figures[1];
     let breaks = fig.series[0].points.iter().filter(|p| p.0.is_nan()).count();
     assert!(breaks >= 3, "{breaks}");
@@ -122,16 +122,16 @@ fn settling_curve_breaks_at_jumps_and_marks_the_minimum() {
 
 #[test]
 fn descriptions_follow_the_design() {
-    let light = run("zeta=0.2").figures[0].description.clone();
-    let heavy = run("zeta=2").figures[0].description.clone();
+    let light = QuarterCar::run("zeta=0.2").figures[0].description.clone();
+    let heavy = QuarterCar::run("zeta=2").figures[0].description.clone();
     assert!(light.contains("crosses equilibrium"), "{light}");
     assert!(
         heavy.contains("overdamped") && heavy.contains("no rebound"),
         "{heavy}"
     );
-    let none = run("c=0").figures[0].description.clone();
+    let none = QuarterCar::run("c=0").figures[0].description.clone();
     assert!(none.contains("oscillates forever"), "{none}");
-    let past_jump = run("zeta=0.7");
+    let past_jump = QuarterCar::run("zeta=0.7");
     let d = &past_jump.figures[0].description;
     assert!(d.contains("settles before crossing"), "{d}");
     let strip = &past_jump.figures[2].description;

@@ -6,18 +6,14 @@
 
 use super::*;
 use crate::demos::testing;
-use crate::demos::Frame;
 
-fn run(query: &str) -> Frame {
-    testing::run("regimes", query)
-}
-
+use crate::demos::testing::Tested;
 use testing::value;
 
 #[test]
 fn readouts_come_from_the_solver() {
     const WN: f64 = 8.944_271_909_999_16; // √80 rad/s: m = 300 kg, k = 24 000 N/m
-    let f = run(&format!("wn={WN}&zeta=0.2"));
+    let f = Regimes::run(&format!("wn={WN}&zeta=0.2"));
     assert_eq!(value(&f, "wn").parse::<f64>().unwrap(), WN);
     assert_eq!(value(&f, "regime"), "underdamped");
     let wd: f64 = value(&f, "wd").parse().unwrap();
@@ -35,7 +31,7 @@ fn every_regime_is_reachable_from_the_sliders() {
         (2.0, "overdamped"),
         (-0.3, "negatively damped"),
     ] {
-        let f = run(&format!("zeta={z}"));
+        let f = Regimes::run(&format!("zeta={z}"));
         assert_eq!(value(&f, "regime"), name);
         assert!(f.figures.iter().all(|fig| fig.has_visible_data()));
         assert!(
@@ -45,7 +41,7 @@ fn every_regime_is_reachable_from_the_sliders() {
         );
     }
     assert_eq!(
-        value(&run("zeta=2"), "wd"),
+        value(&Regimes::run("zeta=2"), "wd"),
         "",
         "no damped frequency when overdamped"
     );
@@ -53,8 +49,8 @@ fn every_regime_is_reachable_from_the_sliders() {
 
 #[test]
 fn the_text_alternative_follows_the_response() {
-    let light = run("zeta=0.1").figures[0].description.clone();
-    let heavy = run("zeta=0.6").figures[0].description.clone();
+    let light = Regimes::run("zeta=0.1").figures[0].description.clone();
+    let heavy = Regimes::run("zeta=0.6").figures[0].description.clone();
     assert_ne!(light, heavy);
     assert!(
         light.contains("swings past equilibrium 9 times") && light.contains("within 5 %"),

@@ -4,14 +4,11 @@
 // Independent reference values are computed here by hand.
 #![allow(clippy::disallowed_methods)]
 
-use crate::demos::testing::{self, number, value};
+use super::Resonance;
+use crate::demos::testing::{self, number, value, Tested};
 use crate::demos::{create, Frame};
 use crate::figure::AxisScale;
 use crate::params::resolve_query;
-
-fn run(query: &str) -> Frame {
-    testing::run("resonance", query)
-}
 
 fn close(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol * b.abs().max(1e-300)
@@ -20,7 +17,7 @@ fn close(a: f64, b: f64, tol: f64) -> bool {
 #[test]
 fn readouts_match_the_closed_forms() {
     let z = 0.05;
-    let f = run("zeta=0.05&r=1&wn=6&F0=10");
+    let f = Resonance::run("zeta=0.05&r=1&wn=6&F0=10");
     assert!(close(number(&f, "Q"), 10.0, 1e-12));
     let g = 1.0 / (2.0 * z * (1.0f64 - z * z).sqrt());
     assert!(close(number(&f, "peak_gain"), g, 1e-12));
@@ -44,7 +41,7 @@ fn readouts_match_the_closed_forms() {
 
 #[test]
 fn no_peak_above_one_over_root_two() {
-    let f = run("zeta=0.8&r=2");
+    let f = Resonance::run("zeta=0.8&r=2");
     assert_eq!(value(&f, "peak_gain"), "");
     assert_eq!(value(&f, "peak_ratio"), "");
     assert_eq!(testing::text(&f, "peak_gain"), "—");
@@ -58,8 +55,8 @@ fn no_peak_above_one_over_root_two() {
 
 #[test]
 fn the_views_change_the_magnitude_axis_and_every_figure_is_drawable() {
-    let lin = run("view=linear&zeta=0.01");
-    let db = run("view=db&zeta=0.01");
+    let lin = Resonance::run("view=linear&zeta=0.01");
+    let db = Resonance::run("view=db&zeta=0.01");
     assert_eq!(lin.figures[0].y.unit, "");
     assert_eq!(db.figures[0].y.unit, "dB");
     for f in lin.figures.iter().chain(&db.figures) {
@@ -85,14 +82,14 @@ fn the_views_change_the_magnitude_axis_and_every_figure_is_drawable() {
 
 #[test]
 fn build_up_at_resonance_and_beats_off_it() {
-    let res = run("zeta=0.05&r=1");
+    let res = Resonance::run("zeta=0.05&r=1");
     let d = &res.figures[2].description;
     assert!(d.contains("builds up"), "{d}");
     let x = &res.figures[2].series.last().unwrap().points;
     let early = x[..100].iter().map(|p| p.1.abs()).fold(0.0, f64::max);
     let late = x[900..].iter().map(|p| p.1.abs()).fold(0.0, f64::max);
     assert!(late > 3.0 * early);
-    let beat = run("zeta=0.01&r=0.9");
+    let beat = Resonance::run("zeta=0.01&r=0.9");
     let d = &beat.figures[2].description;
     assert!(d.contains("beat"), "{d}");
     assert!(!value(&beat, "beat_period").is_empty());
@@ -105,7 +102,7 @@ fn build_up_at_resonance_and_beats_off_it() {
     };
     assert!(labels(&beat).iter().any(|l| l.starts_with("envelope")));
     // Far from resonance the "envelope" would wobble faster than the motion: not drawn.
-    assert!(!labels(&run("zeta=0.1&r=0.2"))
+    assert!(!labels(&Resonance::run("zeta=0.1&r=0.2"))
         .iter()
         .any(|l| l.starts_with("envelope")));
 }
@@ -131,11 +128,11 @@ fn schematic_draws_the_force_and_stays_finite() {
 #[test]
 fn the_half_power_width_is_two_sided_or_undefined() {
     // Both half-power points exist below ζ = sin(π/8) ≈ 0.383.
-    let narrow = run("zeta=0.3");
+    let narrow = Resonance::run("zeta=0.3");
     assert!(!value(&narrow, "peak_width").is_empty());
     assert!(narrow.figures[0].description.contains("peak width r₂ − r₁"));
     // Above it the peak is one-sided: |H| stays above |H|max/√2 down to r = 0.
-    let broad = run("zeta=0.5");
+    let broad = Resonance::run("zeta=0.5");
     assert!(!value(&broad, "peak_gain").is_empty(), "still a peak");
     assert_eq!(value(&broad, "peak_width"), "");
     let d = &broad.figures[0].description;
@@ -154,18 +151,18 @@ fn the_half_power_width_is_two_sided_or_undefined() {
 fn no_beat_period_where_no_beat_shows() {
     // At resonance the amplitude builds up: the would-be period 2π/|ω − ω_d| (209 s here)
     // is far longer than the transient lasts.
-    let at = run("zeta=0.1&r=1");
+    let at = Resonance::run("zeta=0.1&r=1");
     assert_eq!(value(&at, "beat_period"), "");
     assert_eq!(testing::text(&at, "beat_period"), "—");
     assert!(value(&at, "beats").starts_with("none (the free motion dies out"));
     // Far off resonance the "beat" is as fast as the motion.
-    assert!(value(&run("zeta=0.1&r=0.2"), "beats").starts_with("none (as fast as"));
+    assert!(value(&Resonance::run("zeta=0.1&r=0.2"), "beats").starts_with("none (as fast as"));
     // Near resonance with light damping the beats show.
-    let near = run("zeta=0.01&r=0.9");
+    let near = Resonance::run("zeta=0.01&r=0.9");
     assert_eq!(value(&near, "beats"), "visible");
     assert!(number(&near, "beat_period") > 0.0);
     assert_eq!(
-        value(&run("zeta=1.5&r=0.9"), "beats"),
+        value(&Resonance::run("zeta=1.5&r=0.9"), "beats"),
         "none (no free oscillation, ζ ≥ 1)"
     );
 }

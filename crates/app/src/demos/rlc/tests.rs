@@ -5,18 +5,14 @@
 #![allow(clippy::disallowed_methods)]
 
 use super::text::ohms;
+use super::Rlc;
 use crate::demos::regime_cases::each_regime;
-use crate::demos::testing::{self, close, number, value};
-use crate::demos::Frame;
-
-fn run(query: &str) -> Frame {
-    testing::run("rlc", query)
-}
+use crate::demos::testing::{close, number, value, Tested};
 
 #[test]
 fn readouts_match_the_textbook_circuit() {
     // L = 0.5 H, C = 20 mF: ω₀ = 10 rad/s, R_crit = 10 Ω; R = 4 Ω → ζ = 0.4, Q = 1.25.
-    let f = run("R=4&L=0.5&C=0.02&V0=12");
+    let f = Rlc::run("R=4&L=0.5&C=0.02&V0=12");
     for (key, want) in [
         ("w0", 10.0),
         ("R_crit", 10.0),
@@ -48,7 +44,7 @@ fn every_preset_reaches_its_regime_and_the_plots_start_right() {
             assert!(fig.description.contains(regime.split(' ').next().unwrap()));
         }
     }
-    let lossless = run("R=0");
+    let lossless = Rlc::run("R=0");
     assert_eq!(
         value(&lossless, "Q"),
         "",
@@ -60,7 +56,7 @@ fn every_preset_reaches_its_regime_and_the_plots_start_right() {
 #[test]
 fn the_current_never_exceeds_the_energy_bound() {
     for r in [0.0, 1.0, 4.0, 10.0, 30.0] {
-        let f = run(&format!("R={r}"));
+        let f = Rlc::run(&format!("R={r}"));
         // V₀·√(C/L): all the initial energy ½CV₀² in the inductor, ½Li².
         let bound = 12.0 * (0.02f64 / 0.5).sqrt();
         let peak = f.figures[0]
@@ -79,7 +75,7 @@ fn the_current_never_exceeds_the_energy_bound() {
 #[test]
 fn the_envelopes_bound_the_ringing_and_touch_it() {
     // R = 2 Ω: ζ = 0.2; the envelope of the current is V₀/(L·ω_d)·e^(−αt).
-    let f = run("R=2");
+    let f = Rlc::run("R=2");
     let wd = (100.0f64 - 4.0).sqrt();
     for (fig, amp) in [
         (&f.figures[0], 12.0 / (0.5 * wd)),
@@ -103,7 +99,7 @@ fn the_envelopes_bound_the_ringing_and_touch_it() {
         assert!(ratio <= 1.0 + 1e-12 && ratio > 0.99, "{ratio}");
     }
     assert!(
-        run("R=20").figures[0]
+        Rlc::run("R=20").figures[0]
             .series
             .iter()
             .all(|s| s.label != "envelope"),
@@ -113,11 +109,11 @@ fn the_envelopes_bound_the_ringing_and_touch_it() {
 
 #[test]
 fn the_voltage_text_counts_reversals() {
-    let ringing = run("R=2").figures[1].description.clone();
+    let ringing = Rlc::run("R=2").figures[1].description.clone();
     assert!(ringing.contains("reverses polarity"), "{ringing}");
-    let slight = run("R=8").figures[1].description.clone();
+    let slight = Rlc::run("R=8").figures[1].description.clone();
     assert!(slight.contains("reverses only slightly"), "{slight}");
-    let crit = run("R=10").figures[1].description.clone();
+    let crit = Rlc::run("R=10").figures[1].description.clone();
     assert!(crit.contains("without reversing"), "{crit}");
 }
 

@@ -6,13 +6,8 @@
 
 use super::*;
 use crate::demos::progressive::shown;
-use crate::demos::testing::{number, run as run_demo, text, value};
-use crate::demos::Frame;
+use crate::demos::testing::{number, text, value, Tested};
 use crate::params::resolve_query;
-
-fn run(query: &str) -> Frame {
-    run_demo("uncertainty", query)
-}
 
 /// One model step of `d` for `query`, as the page would run it.
 fn step(d: &mut Uncertainty, query: &str) -> Results {
@@ -24,7 +19,7 @@ fn step(d: &mut Uncertainty, query: &str) -> Results {
 
 #[test]
 fn the_mass_range_of_zeta_is_exact() {
-    let f = run("zeta=1&dm=10");
+    let f = Uncertainty::run("zeta=1&dm=10");
     // ζ ∝ m^−½ at fixed c, k.
     assert!((number(&f, "zeta_min") - 1.0 / 1.1f64.sqrt()).abs() < 1e-12);
     assert!((number(&f, "zeta_max") - 1.0 / 0.9f64.sqrt()).abs() < 1e-12);
@@ -50,7 +45,7 @@ fn the_mass_range_of_zeta_is_exact() {
 #[test]
 fn the_rlc_range_uses_each_part_tolerance() {
     // ζ = (R/2)√(C/L): lowest at R(1 − dR), C(1 − dC), L(1 + dL).
-    let f = run("system=rlc&dR=20&dL=5&dC=10");
+    let f = Uncertainty::run("system=rlc&dR=20&dL=5&dC=10");
     let lo = 7.0 * 0.8 / 2.0 * (0.02f64 * 0.9 / (0.5 * 1.05)).sqrt();
     assert!((number(&f, "zeta_min") - lo).abs() < 1e-12);
     let band = &f.figures[0];
@@ -93,7 +88,7 @@ fn percentiles_and_yield_follow_the_samples() {
         .count();
     assert!((r.yield_pct - 100.0 * pass as f64 / 2000.0).abs() < 1e-9);
     // The second histogram follows the choice.
-    let f = run("system=rlc&dR=20&dL=20&dC=20&N=2000&hist=settling_time");
+    let f = Uncertainty::run("system=rlc&dR=20&dL=20&dC=20&N=2000&hist=settling_time");
     assert!(f.figures[2].description.contains("settling time"));
     step(
         &mut d,
@@ -104,7 +99,7 @@ fn percentiles_and_yield_follow_the_samples() {
 
 #[test]
 fn a_hundred_thousand_draws_run() {
-    let f = run("N=100000&dist=normal");
+    let f = Uncertainty::run("N=100000&dist=normal");
     assert_eq!(number(&f, "draws"), 100_000.0);
     assert!(f.figures.iter().all(|g| g.has_visible_data()));
 }
@@ -117,13 +112,13 @@ fn percentiles_and_yield_follow_the_distribution_of_the_parts() {
     // a percentile with 10 000 draws: ~0.05 % of the value; of the yield, σ = 0.5 %.
     let close =
         |a: f64, b: f64, what: &str| assert!((a / b - 1.0).abs() < 2e-3, "{what}: {a} vs {b}");
-    let f = run("zeta=1&dm=10&ts_max=10&zeta_lo=0.6&zeta_hi=1");
+    let f = Uncertainty::run("zeta=1&dm=10&ts_max=10&zeta_lo=0.6&zeta_hi=1");
     close(number(&f, "zeta_p5"), 1.0 / 1.09f64.sqrt(), "ζ p5");
     close(number(&f, "zeta_p95"), 1.0 / 0.91f64.sqrt(), "ζ p95");
     let y = number(&f, "yield");
     assert!((y - 50.0).abs() < 2.0, "yield {y} %");
     // Normal parts: tolerance = 3σ, so 90 % of masses lie within ±1.645σ = ±5.48 %.
-    let f = run("zeta=1&dm=10&dist=normal");
+    let f = Uncertainty::run("zeta=1&dm=10&dist=normal");
     close(
         number(&f, "zeta_p5"),
         1.0 / (1.0 + 0.1 * 1.6449 / 3.0f64).sqrt(),
