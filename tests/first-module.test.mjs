@@ -66,6 +66,13 @@ test('?demo=regimes draws from the first module, then switches to the full one u
   assert.deepEqual(await canvasFingerprint(page, 'response'), pixels);
   assert.deepEqual(await canvasFingerprint(page, 'poles'), poles);
   assert.equal(await page.evaluate(() => document.activeElement && document.activeElement.id), 'p-zeta');
+  // The full module (glue and wasm) was requested only after the first plot.
+  const order = await page.evaluate(() => ({
+    draw: performance.getEntriesByName('zeta:first-draw')[0].startTime,
+    full: performance.getEntriesByType('resource').filter((e) => /\/zeta-app(_bg\.wasm|\.js)$/.test(e.name)).map((e) => e.startTime),
+  }));
+  assert.equal(order.full.length, 2, JSON.stringify(order));
+  for (const start of order.full) assert.ok(start >= order.draw, JSON.stringify(order));
   // The slider still drives the (now full) module.
   for (let i = 0; i < 5; i++) await page.keyboard.press('ArrowRight');
   await waitForReadout(page, 'zeta', 0.25);

@@ -13,6 +13,7 @@ import { download } from './download.js';
 import { applyEmbedView, connectHost, embedOptions } from './embed.js';
 import { createSonifier } from './sound.js';
 import { openShareDialog } from './share.js';
+import { useGlue } from './glue.js';
 import { activeLanguage, adoptInstance, languages, num, remember, requestedLanguages, t, translatePage, useLanguage } from './i18n.js';
 
 const DEFAULT_DEMO = 'regimes';
@@ -120,6 +121,7 @@ async function reinstantiate() {
   app.exports = await glue.default({ module_or_path: WASM_URL });
   adoptInstance(glue);
   app.wasm = glue;
+  useGlue(glue);
   app.module = 'full';
   app.session = new glue.Session(app.demoId);
   app.session.applyQuery(currentQuery()); // keeps range./step. overrides after a recovery
@@ -624,6 +626,18 @@ function openDemo(id, query) {
   if (autoplay && !reducedMotion.matches) requestAnimationFrame(() => setPlaying(true));
 }
 
+/**
+ * openDemo for embed.js (a restored token): the first module holds only the default
+ * demo, so another demo reloads the page at its address, which starts the full module.
+ */
+function openFromHost(id, query) {
+  if (app.module === 'first' && id !== DEFAULT_DEMO) {
+    window.location.replace(query + window.location.hash);
+    return;
+  }
+  openDemo(id, query);
+}
+
 function buildMenu(list) {
   const select = document.getElementById('demo-select');
   select.replaceChildren();
@@ -715,6 +729,7 @@ function adopt({ glue, exports }) {
   const values = app.needsRecovery ? shownValues() : old.values().map(([k, v]) => [k, String(v)]);
   adoptInstance(glue);
   app.wasm = glue;
+  useGlue(glue);
   app.exports = exports;
   app.module = 'full';
   app.session = new glue.Session(app.demoId);
@@ -837,6 +852,7 @@ async function main() {
       app.exports = exports;
       app.module = 'full';
     }
+    useGlue(app.wasm);
     // Read-only diagnostics for the soak test and curious lecturers.
     window.zetaDiagnostics = Object.freeze({
       wasmBytes: () => app.exports.memory.buffer.byteLength,
@@ -883,7 +899,7 @@ async function main() {
   darkQuery.addEventListener('change', () => requestDraw());
   document.addEventListener('keydown', onKey);
   wireShare();
-  app.host = connectHost(app.embed, { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo, isDark });
+  app.host = connectHost(app.embed, { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo: openFromHost, isDark });
   document.documentElement.dataset.ready = 'true';
   registerServiceWorker();
 }
