@@ -40,14 +40,20 @@ if [ "${TRUNK_PROFILE:-}" = "release" ]; then
       "$wasm" -o "$wasm.opt"
     mv "$wasm.opt" "$wasm"
   done
-  # Preload the first module, not the full one: the full module is fetched after the first
-  # plot and must not take bandwidth from it (a non-default demo fetches it at once).
-  perl -pi -e 's#href="\./zeta-app\.js"#href="./zeta-first.js"#g; s#href="\./zeta-app_bg\.wasm"#href="./zeta-first_bg.wasm"#g' "$html"
+  # Trunk's static preloads name the full module: web/preload.js preloads the one module
+  # the address starts with instead (the first module for the default demo), so the full
+  # module takes no bandwidth from the first plot and other demos do not download both.
+  perl -0pi -e 's#<link rel="(?:module)?preload" href="\./zeta-app(?:\.js|_bg\.wasm)"[^>]*>##g' "$html"
+  if grep -q 'preload" href="./zeta-app' "$html"; then
+    echo "post-build: could not remove Trunk's preloads" >&2
+    exit 1
+  fi
 fi
 for f in zeta-app_bg.wasm zeta-app.js zeta-first_bg.wasm zeta-first.js; do
   [ -f "$stage/$f" ] || continue
   hash="sha384-$(openssl dgst -sha384 -binary "$stage/$f" | openssl base64 -A)"
   perl -pi -e "s#(href=\"\\./\Q$f\E\"[^>]*?integrity=\")[^\"]*#\${1}$hash#g" "$html"
+  perl -pi -e "s#('\Q$f\E': ')__HASH__#\${1}$hash#" "$stage/web/preload.js"
 done
 
 # Version the service worker's cache by the build and list every file it must cache.
