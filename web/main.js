@@ -58,6 +58,8 @@ const app = {
   fullLoading: null,
   /** When the user last touched a control (the full module takes over between bursts). */
   lastInput: 0,
+  /** Message ids the first instance showed in English, kept across the switch. */
+  missing: [],
   /** How many times the module has been instantiated afresh (cache-busts the glue's URL). */
   instances: 0,
   recovering: null,
@@ -725,6 +727,11 @@ async function upgrade() {
 /** Moves the open demo from the first module's instance to the full module's. */
 function adopt({ glue, exports }) {
   const old = app.session;
+  try {
+    app.missing.push(...app.wasm.takeMissingMessages()); // reported by the diagnostics
+  } catch {
+    // a failed first instance cannot answer
+  }
   // The page's own copy if the first instance failed; else its exact values.
   const values = app.needsRecovery ? shownValues() : old.values().map(([k, v]) => [k, String(v)]);
   adoptInstance(glue);
@@ -859,7 +866,7 @@ async function main() {
       /** 'first' (the small module the default demo starts with) or 'full'. */
       module: () => app.module,
       /** Message ids shown in English since the last call (the active catalogue lacks them). */
-      missingMessages: () => [...app.wasm.takeMissingMessages()],
+      missingMessages: () => [...new Set([...app.missing.splice(0), ...app.wasm.takeMissingMessages()])],
       language: () => ({ ...activeLanguage() }),
       languages: () => languages().map((l) => ({ ...l })),
     });
