@@ -33,6 +33,7 @@ step() { # step NAME COMMAND...
 step "cargo fmt --check" cargo fmt --all -- --check
 step "cargo clippy" cargo clippy --workspace --all-targets -- -D warnings
 step "cargo clippy (wasm32)" cargo clippy -p zeta-app --target wasm32-unknown-unknown --all-targets -- -D warnings
+step "cargo clippy (wasm32, first module)" cargo clippy -p zeta-app --target wasm32-unknown-unknown --all-targets --features first -- -D warnings
 step "cargo test" cargo test --workspace
 step "cargo doc" env RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
 step "wasm-pack test (app, headless Chromium)" wasm-pack test --headless --chrome crates/app

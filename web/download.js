@@ -1,7 +1,7 @@
 // Saves a Blob as a file through a temporary object URL. PNG, SVG and CSV files get the
 // view's state token and the app version written in (see embed.js / export.rs), so that
 // dropping the file back onto the page reopens the same view.
-import { stampExport } from '../zeta-app.js';
+import { glue } from './glue.js';
 import { tokenNow } from './embed.js';
 
 function save(blob, name) {
@@ -23,7 +23,7 @@ export function download(blob, name) {
     return;
   }
   blob.arrayBuffer().then(
-    (buf) => save(new Blob([stampExport(format[1], new Uint8Array(buf), token)], { type: blob.type }), name),
+    (buf) => save(new Blob([glue().stampExport(format[1], new Uint8Array(buf), token)], { type: blob.type }), name),
     () => save(blob, name),
   );
 }

@@ -16,7 +16,7 @@
 // Messages are accepted only from the parent window and, when the page was given
 // `origin=<host origin>`, only from that origin; every message goes to the parent window
 // only, and with `origin=` only to that origin. Anything malformed is ignored.
-import { demoList, describeDemo, stampExport } from '../zeta-app.js';
+import { glue } from './glue.js';
 import { notify } from './ui.js';
 import { decodeToken, encodeToken, loaded, parsePresets, tokenInText, tokenNotice, viewQuery } from './state.js';
 import { setupPrediction } from './predict.js';
@@ -215,11 +215,11 @@ export async function exportPlot(h, key, format) {
   const w = canvas.clientWidth || 800;
   const hgt = canvas.clientHeight || 500;
   if (format === 'csv') {
-    return { mime: 'text/csv', bytes: stampExport('csv', bytesOf(app.session.csv(key)), token) };
+    return { mime: 'text/csv', bytes: glue().stampExport('csv', bytesOf(app.session.csv(key)), token) };
   }
   if (format === 'svg') {
     const svg = app.session.svg(key, w, hgt, h.isDark(), document.createElement('canvas'));
-    return { mime: 'image/svg+xml', bytes: stampExport('svg', bytesOf(svg), token) };
+    return { mime: 'image/svg+xml', bytes: glue().stampExport('svg', bytesOf(svg), token) };
   }
   if (format === 'png') {
     const big = document.createElement('canvas');
@@ -228,7 +228,7 @@ export async function exportPlot(h, key, format) {
     app.session.renderTo(key, big, 2, h.isDark());
     const blob = await new Promise((ok) => big.toBlob(ok, 'image/png'));
     if (!blob) throw new Error('the browser could not encode the PNG');
-    return { mime: 'image/png', bytes: stampExport('png', new Uint8Array(await blob.arrayBuffer()), token) };
+    return { mime: 'image/png', bytes: glue().stampExport('png', new Uint8Array(await blob.arrayBuffer()), token) };
   }
   throw new Error(`unknown format “${String(format).slice(0, 8)}” (png, svg or csv)`);
 }
@@ -245,7 +245,7 @@ export function applyToken(h, token) {
     return false;
   }
   const q = new URLSearchParams(dec.query);
-  if (!demoList().some((d) => d.id === q.get('demo'))) {
+  if (!glue().demoList().some((d) => d.id === q.get('demo'))) {
     const error = t('tokenNoDemo', { demo: String(q.get('demo')).slice(0, 40) });
     if (notices) notify(notices, error, 'warn');
     return false;
@@ -291,8 +291,7 @@ function wireRestore(h) {
     const file = ev.dataTransfer && ev.dataTransfer.files && ev.dataTransfer.files[0];
     if (!file) return;
     ev.preventDefault();
-    const { readStamp } = await import('../zeta-app.js');
-    const token = file.size <= 20e6 ? readStamp(new Uint8Array(await file.arrayBuffer())) : undefined;
+    const token = file.size <= 20e6 ? glue().readStamp(new Uint8Array(await file.arrayBuffer())) : undefined;
     if (token) applyToken(h, token);
     else notify(document.getElementById('notices'), t('noStamp'), 'warn');
   });
@@ -383,7 +382,7 @@ export function connectHost(opts, handlers) {
         const data = format === 'png' ? dataUrl(file.bytes, file.mime) : new TextDecoder().decode(file.bytes);
         post({ type: 'zeta:file', plot, format, mime: file.mime, data });
       } else if (msg.type === 'zeta:describe') {
-        post({ type: 'zeta:schema', schema: describeDemo(h.app.demoId, window.location.search) });
+        post({ type: 'zeta:schema', schema: glue().describeDemo(h.app.demoId, window.location.search) });
       }
     } catch (err) {
       fail(msg.type, err);

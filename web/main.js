@@ -1,9 +1,9 @@
 // Zeta Lab front end: loads the wasm module, builds the chosen demo from its Rust
 // declaration, and redraws at most once per animation frame while controls move.
 // No physics here: every number comes from the Session (Rust).
+// The default demo starts from a small "first" module (only that demo linked, issue 13);
+// the full module loads after the first plot and takes over between two bursts of input.
 import './state.js'; // first: expands a state= token in the address before anything reads it
-import init from '../zeta-app.js';
-import * as firstInstance from '../zeta-app.js';
 import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
 import { fillLiveCells } from './live-table.js';
 import { applyConditions } from './conditional.js';
@@ -13,12 +13,16 @@ import { download } from './download.js';
 import { applyEmbedView, connectHost, embedOptions } from './embed.js';
 import { createSonifier } from './sound.js';
 import { openShareDialog } from './share.js';
+import { useGlue } from './glue.js';
 import { activeLanguage, adoptInstance, languages, num, remember, requestedLanguages, t, translatePage, useLanguage } from './i18n.js';
 
 const DEFAULT_DEMO = 'regimes';
 const ANNOUNCE_DELAY_MS = 1200;
 const REFINE_SLICE_MS = 8; // one slice of a pending full study: well inside a frame
 const WASM_URL = new URL('../zeta-app_bg.wasm', import.meta.url);
+const FIRST_WASM_URL = new URL('../zeta-first_bg.wasm', import.meta.url);
+/** How long the controls must rest before the full module takes over from the first. */
+const QUIET_MS = 300;
 const darkQuery = window.matchMedia('(prefers-color-scheme: dark)');
 const reducedMotion = window.matchMedia('(prefers-reduced-motion: reduce)');
 
@@ -45,7 +49,17 @@ const app = {
   dragging: false,
   layoutDirty: true,
   /** The glue of the module instance in use: replaced by a fresh instance after a trap. */
-  wasm: firstInstance,
+  wasm: null,
+  /** That instance's wasm exports (its memory). */
+  exports: null,
+  /** Which module is in use: 'first' (the default demo only) or 'full'. */
+  module: 'full',
+  /** The full module loading while the first one is in use: a promise of {glue, exports}. */
+  fullLoading: null,
+  /** When the user last touched a control (the full module takes over between bursts). */
+  lastInput: 0,
+  /** Message ids the first instance showed in English, kept across the switch. */
+  missing: [],
   /** How many times the module has been instantiated afresh (cache-busts the glue's URL). */
   instances: 0,
   recovering: null,
@@ -106,9 +120,11 @@ async function reinstantiate() {
   app.instances += 1;
   // A new URL is a new ES module record, so the glue instantiates the wasm afresh.
   const glue = await import(`../zeta-app.js?instance=${app.instances}`);
-  await glue.default({ module_or_path: WASM_URL });
+  app.exports = await glue.default({ module_or_path: WASM_URL });
   adoptInstance(glue);
   app.wasm = glue;
+  useGlue(glue);
+  app.module = 'full';
   app.session = new glue.Session(app.demoId);
   app.session.applyQuery(currentQuery()); // keeps range./step. overrides after a recovery
   for (const [k, v] of values) app.session.set(k, v);
@@ -218,6 +234,7 @@ function drawFrame() {
     if (!app.firstDrawn) {
       app.firstDrawn = true;
       performance.mark('zeta:first-draw');
+      if (app.module === 'first') setTimeout(upgrade, 0); // after this frame is on screen
     }
     app.timeSpan = out.time_span;
     if (app.timeSpan) app.time = Math.min(Math.max(app.time, app.timeSpan[0]), app.timeSpan[1]);
@@ -320,6 +337,7 @@ function syncUrl() {
 }
 
 function setParam(control, raw) {
+  app.lastInput = performance.now();
   if (app.needsRecovery) {
     recover().then(() => setParam(control, raw), reportFailure);
     return;
@@ -341,6 +359,7 @@ function setParam(control, raw) {
 function setDragging(on) {
   if (app.dragging === on) return;
   app.dragging = on;
+  app.lastInput = performance.now();
   try {
     app.session.setDragging(on);
   } catch (err) {
@@ -609,6 +628,18 @@ function openDemo(id, query) {
   if (autoplay && !reducedMotion.matches) requestAnimationFrame(() => setPlaying(true));
 }
 
+/**
+ * openDemo for embed.js (a restored token): the first module holds only the default
+ * demo, so another demo reloads the page at its address, which starts the full module.
+ */
+function openFromHost(id, query) {
+  if (app.module === 'first' && id !== DEFAULT_DEMO) {
+    window.location.replace(query + window.location.hash);
+    return;
+  }
+  openDemo(id, query);
+}
+
 function buildMenu(list) {
   const select = document.getElementById('demo-select');
   select.replaceChildren();
@@ -623,9 +654,102 @@ function buildMenu(list) {
 function wireMenu() {
   const select = document.getElementById('demo-select');
   select.addEventListener('change', () => {
+    if (app.module === 'first' && select.value !== app.demoId) {
+      // The first module holds only the default demo: wait for the full one, visibly.
+      const note = document.createElement('p');
+      note.className = 'notice notice-info';
+      note.textContent = t('loading');
+      app.notices.append(note);
+      app.root.setAttribute('aria-busy', 'true');
+      app.root.dataset.loading = 'full';
+      loadFull()
+        .then((mod) => {
+          if (app.module === 'first') adopt(mod);
+          openDemo(select.value, null);
+          syncUrl();
+        })
+        .catch(reportFailure)
+        .finally(() => {
+          note.remove();
+          app.root.removeAttribute('aria-busy');
+          delete app.root.dataset.loading;
+        });
+      return;
+    }
     openDemo(select.value, null);
     syncUrl();
   });
+}
+
+/** Instantiates the full module once (a promise of {glue, exports}). */
+function loadFull() {
+  app.fullLoading ??= (async () => {
+    const glue = await import('../zeta-app.js');
+    const exports = await glue.default({ module_or_path: WASM_URL });
+    return { glue, exports };
+  })().catch((err) => {
+    app.fullLoading = null;
+    throw err;
+  });
+  return app.fullLoading;
+}
+
+/** Resolves when no control is held or has moved for QUIET_MS and no frame is pending. */
+function betweenBursts() {
+  return new Promise((resolve) => {
+    const check = () => {
+      const busy = app.dragging || app.framePending || app.recovering || app.needsRecovery;
+      const wait = QUIET_MS - (performance.now() - app.lastInput);
+      if (busy || wait > 0) setTimeout(check, Math.max(50, wait));
+      else resolve();
+    };
+    check();
+  });
+}
+
+/**
+ * After the first plot from the first module: loads the full module behind the page and
+ * switches to it between two bursts of input, with the same values, so nothing the user
+ * sees changes.
+ */
+async function upgrade() {
+  let mod;
+  try {
+    mod = await loadFull();
+  } catch (err) {
+    console.warn('Zeta Lab: the full module could not be loaded yet:', err && err.message);
+    return; // the next demo chosen from the menu tries again
+  }
+  await betweenBursts();
+  if (app.module === 'first') adopt(mod);
+}
+
+/** Moves the open demo from the first module's instance to the full module's. */
+function adopt({ glue, exports }) {
+  const old = app.session;
+  try {
+    app.missing.push(...app.wasm.takeMissingMessages()); // reported by the diagnostics
+  } catch {
+    // a failed first instance cannot answer
+  }
+  // The page's own copy if the first instance failed; else its exact values.
+  const values = app.needsRecovery ? shownValues() : old.values().map(([k, v]) => [k, String(v)]);
+  adoptInstance(glue);
+  app.wasm = glue;
+  useGlue(glue);
+  app.exports = exports;
+  app.module = 'full';
+  app.session = new glue.Session(app.demoId);
+  app.session.applyQuery(currentQuery());
+  for (const [k, v] of values) app.session.set(k, v);
+  attachCanvases();
+  app.needsRecovery = false;
+  requestDraw();
+  try {
+    old.free();
+  } catch {
+    // the first instance is dropped either way
+  }
 }
 
 /** The language menu: every language by its own name; a pseudo-locale only while active. */
@@ -714,13 +838,35 @@ async function main() {
   applyForcedTheme();
   app.root = document.getElementById('demo');
   app.notices = document.getElementById('notices');
+  const wanted = demoFromUrl();
+  // The first module serves the default demo on the main page; an embed (its host may
+  // open any demo at once) and every other demo start with the full module.
+  const first = (wanted === null || wanted === DEFAULT_DEMO) && !app.embed.embed;
   try {
-    const wasm = await init({ module_or_path: WASM_URL });
+    if (first) {
+      try {
+        const glue = await import('../zeta-first.js');
+        app.exports = await glue.default({ module_or_path: FIRST_WASM_URL });
+        app.wasm = glue;
+        app.module = 'first';
+      } catch (err) {
+        console.warn('Zeta Lab: starting with the full module:', err && err.message);
+      }
+    }
+    if (!app.wasm) {
+      const { glue, exports } = await loadFull();
+      app.wasm = glue;
+      app.exports = exports;
+      app.module = 'full';
+    }
+    useGlue(app.wasm);
     // Read-only diagnostics for the soak test and curious lecturers.
     window.zetaDiagnostics = Object.freeze({
-      wasmBytes: () => wasm.memory.buffer.byteLength,
+      wasmBytes: () => app.exports.memory.buffer.byteLength,
+      /** 'first' (the small module the default demo starts with) or 'full'. */
+      module: () => app.module,
       /** Message ids shown in English since the last call (the active catalogue lacks them). */
-      missingMessages: () => [...app.wasm.takeMissingMessages()],
+      missingMessages: () => [...new Set([...app.missing.splice(0), ...app.wasm.takeMissingMessages()])],
       language: () => ({ ...activeLanguage() }),
       languages: () => languages().map((l) => ({ ...l })),
     });
@@ -739,7 +885,6 @@ async function main() {
   const list = app.wasm.demoList();
   buildMenu(list);
   wireMenu();
-  const wanted = demoFromUrl();
   const known = list.some((d) => d.id === wanted);
   if (wanted !== null && !known) {
     notify(app.notices, t('noDemo', { id: wanted.slice(0, 40), fallback: DEFAULT_DEMO }), 'warn');
@@ -761,7 +906,7 @@ async function main() {
   darkQuery.addEventListener('change', () => requestDraw());
   document.addEventListener('keydown', onKey);
   wireShare();
-  app.host = connectHost(app.embed, { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo, isDark });
+  app.host = connectHost(app.embed, { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo: openFromHost, isDark });
   document.documentElement.dataset.ready = 'true';
   registerServiceWorker();
 }

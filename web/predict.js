@@ -9,7 +9,7 @@
 // `tol=0.5` is an absolute tolerance in the readout's unit; `tol=5%` is relative to the
 // value (default 10 %). The form works with the keyboard alone (type, Enter); the result
 // is announced through a polite live region and receives focus.
-import { parseNumber } from '../zeta-app.js';
+import { glue } from './glue.js';
 import { numberLocale, t } from './i18n.js';
 import { el } from './ui.js';
 
@@ -22,7 +22,7 @@ const DEFAULT_TOL = '10%';
 export function tolerance(raw, value) {
   const s = String(raw ?? DEFAULT_TOL).trim();
   const pct = s.endsWith('%');
-  const n = parseNumber(pct ? s.slice(0, -1) : s);
+  const n = glue().parseNumber(pct ? s.slice(0, -1) : s);
   if (n === undefined || n < 0) return null;
   return pct ? { abs: Math.abs(value) * n / 100, text: `±${n} %` } : { abs: n, text: `±${n}` };
 }
@@ -81,7 +81,7 @@ export function setupPrediction(view, opts, io) {
   button.addEventListener('click', () => reveal());
   const reveal = () => {
     if (button.disabled) return;
-    const prediction = parseNumber(input.value.replace(',', '.'));
+    const prediction = glue().parseNumber(input.value.replace(',', '.'));
     const value = Number(item.getAttribute('data-value'));
     if (prediction === undefined) {
       error.textContent = t('predictNan', { text: input.value.slice(0, 40), example: show(0.25) });

@@ -222,34 +222,55 @@ fn boxed<M: Model>(model: M) -> Box<dyn Demo> {
     Box::new(Typed::new(model))
 }
 
-/// Every demo, in menu order: the one list. The id here must equal the declaration's
-/// (checked by the registry test).
-const REGISTRY: &[(&str, Factory)] = &[
-    ("regimes", || boxed(regimes::Regimes)),
-    ("quarter-car", || boxed(quarter_car::QuarterCar::new())),
-    ("rlc", || boxed(rlc::Rlc)),
-    ("analogy", || boxed(analogy::Analogy)),
-    ("universality", || {
-        boxed(universality::Universality::default())
-    }),
-    ("resonance", || boxed(resonance::Resonance::default())),
-    ("integrators", || boxed(integrators::Integrators::new())),
-    ("flutter", || boxed(flutter::Flutter::default())),
-    ("nonlinear", || boxed(nonlinear::Nonlinear::default())),
-    ("quarter-car-2dof", || {
-        boxed(quarter_car_2dof::QuarterCar2Dof::default())
-    }),
-    ("design", || boxed(design::DesignSpace::default())),
-    ("uncertainty", || boxed(uncertainty::Uncertainty::default())),
-    ("paper", || boxed(paper::Paper)),
-];
+/// The one list of demos, in menu order: `id, English title => factory;`. It defines
+/// `MENU` (every id and title) and `REGISTRY` (the factories). The ids and titles here
+/// must equal the declarations' (checked by the registry test).
+macro_rules! registry {
+    ($($id:literal, $title:literal => $make:expr;)*) => {
+        /// Every demo's id and English title, in menu order: the `first` build, which
+        /// links only the default demo, still lists every demo in its menu.
+        const MENU: &[(&str, &str)] = &[$(($id, $title)),*];
 
-/// Ids of every demo, in menu order.
+        /// Every demo with its factory.
+        #[cfg(not(feature = "first"))]
+        const REGISTRY: &[(&str, Factory)] = &[$(($id, $make)),*];
+    };
+}
+
+registry! {
+    "regimes", "Damping regimes" => || boxed(regimes::Regimes);
+    "quarter-car", "Quarter-car suspension" => || boxed(quarter_car::QuarterCar::new());
+    "rlc", "Series RLC circuit" => || boxed(rlc::Rlc);
+    "analogy", "One equation, two machines" => || boxed(analogy::Analogy);
+    "universality", "One equation, many machines" => || boxed(universality::Universality::default());
+    "resonance", "Forced resonance" => || boxed(resonance::Resonance::default());
+    "integrators", "Numerical integrators and their error" => || boxed(integrators::Integrators::new());
+    "flutter", "Flutter: the Tacoma Narrows bridge" => || boxed(flutter::Flutter::default());
+    "nonlinear", "Beyond the linear model" => || boxed(nonlinear::Nonlinear::default());
+    "quarter-car-2dof", "Quarter car with body and wheel" => || boxed(quarter_car_2dof::QuarterCar2Dof::default());
+    "design", "Design space (k, c)" => || boxed(design::DesignSpace::default());
+    "uncertainty", "Tolerance analysis" => || boxed(uncertainty::Uncertainty::default());
+    "paper", "The paper, checked" => || boxed(paper::Paper);
+}
+
+/// The `first` build (feature `first`): only the default demo is linked, so its module is
+/// small enough to draw the first plot soon on a slow network; the page then switches to
+/// the full module (web/main.js).
+#[cfg(feature = "first")]
+const REGISTRY: &[(&str, Factory)] = &[("regimes", || boxed(regimes::Regimes))];
+
+/// Ids of every demo this build can create, in menu order.
 pub fn ids() -> impl ExactSizeIterator<Item = &'static str> {
     REGISTRY.iter().map(|(id, _)| *id)
 }
 
-/// A new instance of the demo `id`, or `None` if there is no such demo.
+/// Id and English title of every demo, in menu order, including those this build cannot
+/// create (the `first` build).
+pub fn menu() -> impl ExactSizeIterator<Item = (&'static str, &'static str)> {
+    MENU.iter().copied()
+}
+
+/// A new instance of the demo `id`, or `None` if there is no such demo in this build.
 pub fn create(id: &str) -> Option<Box<dyn Demo>> {
     REGISTRY
         .iter()
@@ -261,6 +282,18 @@ pub fn create(id: &str) -> Option<Box<dyn Demo>> {
 mod tests {
     use super::*;
     use std::collections::HashSet;
+
+    #[test]
+    fn the_menu_lists_every_demo_with_its_declared_title() {
+        let declared: Vec<_> = ids()
+            .map(|id| (id, create(id).unwrap().spec().title))
+            .collect();
+        if cfg!(feature = "first") {
+            assert_eq!(declared, [("regimes", "Damping regimes")]);
+        } else {
+            assert_eq!(menu().collect::<Vec<_>>(), declared);
+        }
+    }
 
     #[test]
     fn every_demo_is_consistent_and_draws_finite_figures_from_its_defaults() {

@@ -131,17 +131,23 @@ struct DemoEntry {
     title: String,
 }
 
-/// `[{id, title}]` of every demo, in menu order.
+/// `[{id, title}]` of every demo, in menu order (every demo, even in the `first` build).
 #[wasm_bindgen(js_name = demoList)]
 pub fn demo_list() -> Result<JsValue, JsError> {
-    let list: Vec<DemoEntry> = demos::ids()
-        .filter_map(|id| demos::create(id).map(|d| d.spec()))
-        .map(|s| DemoEntry {
-            id: s.id,
-            title: crate::i18n::declared::tr(&format!("{}-title", s.id), s.title),
+    let list: Vec<DemoEntry> = demos::menu()
+        .map(|(id, title)| DemoEntry {
+            id,
+            title: crate::i18n::declared::tr(&format!("{id}-title"), title),
         })
         .collect();
     to_js(&list)
+}
+
+/// Whether this module can open every demo (`false` for the `first` build, which holds
+/// only the default demo).
+#[wasm_bindgen(js_name = isFull)]
+pub fn is_full() -> bool {
+    !cfg!(feature = "first")
 }
 
 fn theme(dark: bool) -> Theme {

@@ -1,0 +1,154 @@
+// End to end: the default demo starts from the small "first" module (issue 13: bytes
+// before the first plot), then the full module takes over behind the page with nothing
+// the user sees changing: readouts, slider values, URL, pixels and focus stay; a drag in
+// progress is not interrupted; the menu works before, during and after the switch.
+// The full module's wasm is held back by a gate so each test chooses when it arrives.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { open, canvasFingerprint, waitForReadout, waitForReadouts, waitForUrlParam } from './support/browser.mjs';
+import { server, browser, useSession } from './support/session.mjs';
+
+useSession();
+
+const FULL_WASM = '**/zeta-app_bg.wasm';
+
+/** Opens `query` with the full module's wasm held back until `release()`. */
+async function openGated(query) {
+  let release;
+  const gate = new Promise((ok) => {
+    release = ok;
+  });
+  // No service worker: its install would fetch the full wasm behind the route's back.
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
+  await context.route(FULL_WASM, async (route) => {
+    await gate;
+    await route.continue();
+  });
+  const errors = [];
+  const page = await context.newPage();
+  page.on('console', (msg) => {
+    if (msg.type() === 'error') errors.push(msg.text());
+  });
+  page.on('pageerror', (err) => errors.push(String(err)));
+  await page.goto(`${server.url}${query}`);
+  await page.waitForSelector('html[data-ready="true"]', { timeout: 15000 });
+  await waitForReadouts(page);
+  return { page, errors, context, release };
+}
+
+const moduleOf = (page) => page.evaluate(() => window.zetaDiagnostics.module());
+
+/** Everything the user sees of the demo's state. */
+async function shown(page) {
+  return page.evaluate(() => ({
+    readouts: [...document.querySelectorAll('[data-readout]')].map((r) => [r.dataset.readout, r.dataset.value, r.querySelector('dd').textContent]),
+    inputs: [...document.querySelectorAll('#demo input, #demo select')].map((i) => [i.id || i.dataset.key, i.type === 'checkbox' ? i.checked : i.value]),
+    url: location.search,
+    menu: [...document.querySelectorAll('#demo-select option')].map((o) => [o.value, o.textContent]),
+  }));
+}
+
+test('?demo=regimes draws from the first module, then switches to the full one unseen', async () => {
+  const { page, errors, context, release } = await openGated('?demo=regimes&zeta=0.2');
+  assert.equal(await moduleOf(page), 'first');
+  // The first module's menu already lists every demo.
+  const menu = await page.$$eval('#demo-select option', (os) => os.map((o) => o.value));
+  assert.ok(menu.length > 10 && menu.includes('rlc') && menu.includes('paper'), `menu: ${menu}`);
+  await page.focus('#p-zeta');
+  await page.waitForTimeout(300);
+  const before = await shown(page);
+  const pixels = await canvasFingerprint(page, 'response');
+  const poles = await canvasFingerprint(page, 'poles');
+  release();
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  assert.deepEqual(await shown(page), before);
+  assert.deepEqual(await canvasFingerprint(page, 'response'), pixels);
+  assert.deepEqual(await canvasFingerprint(page, 'poles'), poles);
+  assert.equal(await page.evaluate(() => document.activeElement && document.activeElement.id), 'p-zeta');
+  // The full module (glue and wasm) was requested only after the first plot.
+  const order = await page.evaluate(() => ({
+    draw: performance.getEntriesByName('zeta:first-draw')[0].startTime,
+    full: performance.getEntriesByType('resource').filter((e) => /\/zeta-app(_bg\.wasm|\.js)$/.test(e.name)).map((e) => e.startTime),
+  }));
+  assert.equal(order.full.length, 2, JSON.stringify(order));
+  for (const start of order.full) assert.ok(start >= order.draw, JSON.stringify(order));
+  // The slider still drives the (now full) module.
+  for (let i = 0; i < 5; i++) await page.keyboard.press('ArrowRight');
+  await waitForReadout(page, 'zeta', 0.25);
+  await waitForUrlParam(page, 'zeta', '0.25');
+  assert.notDeepEqual(await canvasFingerprint(page, 'response'), pixels);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a drag in progress when the full module arrives is not interrupted', async () => {
+  const { page, errors, context, release } = await openGated('?demo=regimes&zeta=0.2');
+  assert.equal(await moduleOf(page), 'first');
+  const box = await page.locator('#p-zeta').boundingBox();
+  const y = box.y + box.height / 2;
+  await page.mouse.move(box.x + box.width * 0.3, y);
+  await page.mouse.down();
+  release();
+  // Keep dragging while the full module loads: every step must land.
+  let last = null;
+  for (let i = 0; i < 20; i++) {
+    await page.mouse.move(box.x + box.width * (0.3 + i * 0.01), y, { steps: 2 });
+    await page.waitForTimeout(50);
+    const now = await page.getAttribute('[data-readout="zeta"]', 'data-value');
+    assert.notEqual(now, null);
+    last = now;
+  }
+  assert.notEqual(Number(last), 0.2, 'the drag moved ζ');
+  // Held: no switch under the pointer.
+  assert.equal(await moduleOf(page), 'first');
+  assert.equal(await page.inputValue('input[type=number][data-key="zeta"]'), String(Number(last)));
+  await page.mouse.up();
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const after = await shown(page);
+  assert.equal(after.readouts.find(([k]) => k === 'zeta')[1], last);
+  assert.equal(new URLSearchParams(after.url).get('zeta'), String(Number(last)));
+  // And moving the slider after the switch works.
+  await page.focus('#p-zeta');
+  await page.keyboard.press('Home');
+  await waitForReadout(page, 'zeta', -0.5);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('choosing another demo before the full module is ready waits for it, visibly', async () => {
+  const { page, errors, context, release } = await openGated('?demo=regimes');
+  assert.equal(await moduleOf(page), 'first');
+  await page.selectOption('#demo-select', 'rlc');
+  await page.waitForSelector('#demo[aria-busy="true"][data-loading="full"]');
+  assert.equal(await page.locator('#notices .notice-info').count(), 1);
+  release();
+  await waitForUrlParam(page, 'demo', 'rlc');
+  await page.waitForSelector('#demo:not([aria-busy])');
+  await waitForReadouts(page);
+  assert.equal(await moduleOf(page), 'full');
+  assert.ok((await page.locator('[data-readout]').count()) > 0);
+  assert.equal(await page.locator('#notices .notice-info').count(), 0);
+  assert.equal(await page.inputValue('#demo-select'), 'rlc');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('the menu works after the switch, and other demos start with the full module', async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=regimes`);
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
+  await page.selectOption('#demo-select', 'resonance');
+  await waitForUrlParam(page, 'demo', 'resonance');
+  await waitForReadouts(page);
+  await page.selectOption('#demo-select', 'regimes');
+  await waitForUrlParam(page, 'demo', 'regimes');
+  await waitForReadouts(page);
+  assert.equal(await moduleOf(page), 'full');
+  assert.deepEqual(errors, []);
+  await context.close();
+  const other = await open(browser, `${server.url}?demo=quarter-car`);
+  assert.equal(await moduleOf(other.page), 'full');
+  assert.deepEqual(other.errors, []);
+  await other.context.close();
+});
