@@ -126,6 +126,9 @@ test(`soak: ${SOAK_EVENTS} slider events across every demo keep memory flat and 
   let total = 0;
   for (const id of ids) {
     const { page: p, errors, context: c } = await open(browser, `${server.url}?demo=${id}`);
+    // The default demo starts from the first module and moves to the full one once it has
+    // loaded (a one-time switch, tests/first-module.test.mjs): measure the module that stays.
+    await p.waitForFunction(() => window.zetaDiagnostics.module() === 'full');
     // The same seeded sequence twice: the first pass lets buffers reach the sizes this
     // sequence needs (a high-water mark, not a leak); the second must not grow anything.
     const drive = (n) => p.evaluate(async (count) => {
