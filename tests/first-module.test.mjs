@@ -6,6 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { open, canvasFingerprint, waitForReadout, waitForReadouts, waitForUrlParam } from './support/browser.mjs';
+import { assertStillWorks } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
@@ -110,11 +111,7 @@ test('a drag in progress when the full module arrives is not interrupted', async
   assert.equal(after.readouts.find(([k]) => k === 'zeta')[1], last);
   assert.equal(new URLSearchParams(after.url).get('zeta'), String(Number(last)));
   // And moving the slider after the switch works.
-  await page.focus('#p-zeta');
-  await page.keyboard.press('Home');
-  await waitForReadout(page, 'zeta', -0.5);
-  assert.deepEqual(errors, []);
-  await context.close();
+  await assertStillWorks({ page, errors, context });
 });
 
 test('choosing another demo before the full module is ready waits for it, visibly', async () => {

@@ -1,6 +1,6 @@
 // Helpers the end-to-end tests share for reading readouts and moving sliders.
 import assert from 'node:assert/strict';
-import { open, canvasFingerprint, readout, SHOTS } from './browser.mjs';
+import { open, canvasFingerprint, readout, waitForReadout, SHOTS } from './browser.mjs';
 
 /** Waits until readout `key` differs from `old` (a data-value string). */
 export async function waitForChange(page, key, old) {
@@ -48,6 +48,17 @@ export async function assertLinkReproduces(page, what) {
 export async function pressOn(page, key, ...keys) {
   await page.focus(`#p-${key}`);
   for (const k of keys) await page.keyboard.press(k);
+}
+
+/**
+ * The page still answers the keyboard: Home on the regimes demo's ζ slider shows ζ = −0.5.
+ * Then asserts a clean console and closes the context.
+ */
+export async function assertStillWorks({ page, errors, context }) {
+  await pressOn(page, 'zeta', 'Home');
+  await waitForReadout(page, 'zeta', -0.5);
+  assert.deepEqual(errors, []);
+  await context.close();
 }
 
 /** Types `value` into parameter `key`'s number box and presses Enter. */
