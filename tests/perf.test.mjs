@@ -5,7 +5,7 @@
 // natively for the parameters then current.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open } from './support/browser.mjs';
+import { open, canvasFingerprint, readout } from './support/browser.mjs';
 import { goldenState, assertReadoutsMatch } from './support/golden.mjs';
 import { readFileSync } from 'node:fs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -127,6 +127,49 @@ test('uncertainty: a moved tolerance shows the first 1000 draws marked provision
     assert.equal(f.readouts.draws, '10000');
     assert.equal(Number(f.readouts.yield).toPrecision(12), Number(want).toPrecision(12), 'only the run for the current tolerance is shown as final');
   }
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a plot off screen waits while a control is held, and is drawn when it comes into view and when the controls rest', async () => {
+  const phone = { viewport: { width: 360, height: 740 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true };
+  const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&zeta=0.2`, phone);
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
+  const raw = () => canvasFingerprint(page, 'poles', { settled: false });
+  const below = await page.evaluate(() => document.querySelector('canvas[data-plot="poles"]').getBoundingClientRect().top / innerHeight);
+  assert.ok(below > 1.5, `the pole plot starts well below the screen (${below.toFixed(2)} screens down)`);
+  await canvasFingerprint(page, 'poles'); // settled
+  const before = await raw();
+  const response = await canvasFingerprint(page, 'response', { settled: false });
+  // Hold the ζ slider and drag it: the plot in view follows, the one below waits.
+  const box = await page.locator('#p-zeta').boundingBox();
+  const y = box.y + box.height / 2;
+  await page.mouse.move(box.x + box.width * 0.2, y);
+  await page.mouse.down();
+  for (const f of [0.3, 0.4, 0.5]) {
+    const old = await readout(page, 'zeta');
+    await page.mouse.move(box.x + box.width * f, y, { steps: 2 });
+    await page.waitForFunction((o) => document.querySelector('[data-readout="zeta"]').dataset.value !== o, old);
+  }
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  assert.notDeepEqual(await canvasFingerprint(page, 'response', { settled: false }), response, 'the plot in view is redrawn during the drag');
+  assert.deepEqual(await raw(), before, 'the plot off screen is not drawn while the slider is held');
+  // Still held: scrolled into view, it shows the current frame at once.
+  await page.evaluate(() => document.querySelector('canvas[data-plot="poles"]').scrollIntoView());
+  await page.waitForFunction(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r(true)))));
+  const inView = await raw();
+  assert.notDeepEqual(inView, before, 'coming into view draws it');
+  // Back up, drag on, release: once the controls rest, the plot below catches up.
+  await page.evaluate(() => window.scrollTo(0, 0));
+  await page.waitForFunction(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r(true)))));
+  const old = await readout(page, 'zeta');
+  await page.mouse.move(box.x + box.width * 0.8, y, { steps: 2 });
+  await page.waitForFunction((o) => document.querySelector('[data-readout="zeta"]').dataset.value !== o, old);
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  assert.deepEqual(await raw(), inView, 'off screen again, it waits again');
+  await page.mouse.up();
+  await page.waitForFunction(() => window.zetaDiagnostics.drawn(), null, { timeout: 5000 });
+  assert.notDeepEqual(await raw(), inView, 'at rest it is drawn');
   assert.deepEqual(errors, []);
   await context.close();
 });

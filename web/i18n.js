@@ -53,9 +53,20 @@ export function t(key, vars = {}) {
   return s.replace(/\{ \$(\w+) \}/g, (_, k) => String(vars[k] ?? ''));
 }
 
-/** A number in the page language's CLDR rules (pseudo-locales: English's). */
+/** Number formats by `locale|digits`: building one costs far more than using it. */
+const numberFormats = new Map();
+
+/** `value` with exactly `digits` decimals in the page language's CLDR rules (pseudo-locales:
+ * English's). */
 export function num(value, digits) {
-  return new Intl.NumberFormat(active.rules || 'en', { minimumFractionDigits: digits, maximumFractionDigits: digits }).format(value);
+  const locale = active.rules || 'en';
+  const key = `${locale}|${digits}`;
+  let format = numberFormats.get(key);
+  if (!format) {
+    format = new Intl.NumberFormat(locale, { minimumFractionDigits: digits, maximumFractionDigits: digits });
+    numberFormats.set(key, format);
+  }
+  return format.format(value);
 }
 
 /** The locale whose rules format numbers (for Intl elsewhere on the page). */

@@ -58,6 +58,14 @@ const app = {
   fullLoading: null,
   /** When the user last touched a control (the full module takes over between bursts). */
   lastInput: 0,
+  /** Which canvases are on screen (see observeVisibility); plots off screen wait. */
+  visibility: null,
+  schematicVisible: true,
+  /** Whether the schematic, or any plot, shows an older frame than the last update's. */
+  schematicStale: false,
+  staleLeft: false,
+  /** The timer that draws everything once the controls rest (scheduleCatchUp). */
+  catchUp: null,
   /** Message ids the first instance showed in English, kept across the switch. */
   missing: [],
   /** How many times the module has been instantiated afresh (cache-busts the glue's URL). */
@@ -136,6 +144,72 @@ function attachCanvases() {
   app.lastSize.clear();
   for (const key of app.view.shownPlots) app.session.attach(key, app.view.canvases.get(key));
   if (app.view.animation) app.session.attach('schematic', app.view.animation.canvas);
+  observeVisibility();
+}
+
+/** How long the controls rest before plots off screen catch up with the last update (ms). */
+const REST_MS = 200;
+
+/**
+ * Only what is on screen (or within half a screen of it) is drawn while a control moves:
+ * the plots out of view, and the schematic, are drawn from the last update as soon as they
+ * come into view, and all of them once the controls have rested for REST_MS (issue 13).
+ * Without IntersectionObserver everything counts as on screen and is drawn every time.
+ */
+function observeVisibility() {
+  app.visibility?.disconnect();
+  app.schematicVisible = true;
+  if (!('IntersectionObserver' in window)) return;
+  const session = app.session;
+  app.visibility = new IntersectionObserver(
+    (entries) => {
+      if (app.session !== session) return;
+      let stale = false;
+      for (const e of entries) {
+        const key = e.target.dataset.plot;
+        if (key === 'schematic') {
+          app.schematicVisible = e.isIntersecting;
+          stale ||= e.isIntersecting && app.schematicStale;
+        } else {
+          try {
+            stale = session.setVisible(key, e.isIntersecting) || stale;
+          } catch (err) {
+            reportFailure(err);
+          }
+        }
+      }
+      if (stale) requestAnimationFrame(() => drawStale(false));
+    },
+    { rootMargin: '50% 0px' },
+  );
+  for (const key of app.view.shownPlots) app.visibility.observe(app.view.canvases.get(key));
+  if (app.view.animation) app.visibility.observe(app.view.animation.canvas);
+}
+
+/** Draws the plots (and the schematic) showing an older frame: those on screen, or all. */
+function drawStale(all) {
+  if (app.needsRecovery || app.framePending) return; // the next frame draws anyway
+  try {
+    const dpr = window.devicePixelRatio || 1;
+    app.staleLeft = app.session.drawStale(dpr, isDark(), all);
+    if (app.schematicStale && (all || app.schematicVisible)) drawTime(dpr, true);
+  } catch (err) {
+    reportFailure(err);
+  }
+}
+
+/** Once the controls have rested for REST_MS, everything out of view catches up. */
+function scheduleCatchUp() {
+  clearTimeout(app.catchUp);
+  if (!app.staleLeft && !app.schematicStale) return;
+  app.catchUp = setTimeout(() => {
+    const quiet = performance.now() - app.lastInput;
+    if (quiet < REST_MS || app.dragging) {
+      scheduleCatchUp();
+      return;
+    }
+    requestAnimationFrame(() => drawStale(true));
+  }, REST_MS);
 }
 
 function fit(canvas, key, dpr) {
@@ -214,6 +288,7 @@ function drawFrame() {
   try {
     const dpr = sizeCanvases();
     const out = app.session.update(dpr, isDark());
+    app.staleLeft = true; // plots out of view were skipped; drawStale(true) says for sure
     showReadouts(app.view.readouts, out.readouts);
     markProvisional(out.provisional);
     for (const [key, value] of out.derived) {
@@ -239,6 +314,7 @@ function drawFrame() {
     app.timeSpan = out.time_span;
     if (app.timeSpan) app.time = Math.min(Math.max(app.time, app.timeSpan[0]), app.timeSpan[1]);
     drawTime(dpr);
+    scheduleCatchUp();
     if (app.changed) {
       app.changed = false;
       app.host.notify();
@@ -269,11 +345,12 @@ function hostState() {
 }
 
 /** Draws the schematic at the current time and the time cursor on every time plot. */
-function drawTime(dpr = window.devicePixelRatio || 1) {
+function drawTime(dpr = window.devicePixelRatio || 1, schematic = app.schematicVisible) {
   const anim = app.view.animation;
   if (!anim || !app.timeSpan) return;
-  const text = app.session.drawSchematic(app.time, dpr, isDark());
-  anim.caption.textContent = text;
+  // Off screen, the schematic (and its text) waits until it is in view or the page rests.
+  app.schematicStale = !schematic;
+  if (schematic) anim.caption.textContent = app.session.drawSchematic(app.time, dpr, isDark());
   const [t0, t1] = app.timeSpan;
   anim.scrub.value = String(Math.round(((app.time - t0) / (t1 - t0)) * 1000));
   anim.time.textContent = `t = ${num(app.time, 2)} s`;
@@ -865,6 +942,9 @@ async function main() {
       wasmBytes: () => app.exports.memory.buffer.byteLength,
       /** 'first' (the small module the default demo starts with) or 'full'. */
       module: () => app.module,
+      /** Whether every canvas shows the last update (or a control is held: then plots off
+       * screen wait, see observeVisibility). */
+      drawn: () => app.dragging || (!app.framePending && !app.staleLeft && !app.schematicStale),
       /** Message ids shown in English since the last call (the active catalogue lacks them). */
       missingMessages: () => [...new Set([...app.missing.splice(0), ...app.wasm.takeMissingMessages()])],
       language: () => ({ ...activeLanguage() }),

@@ -58,7 +58,10 @@ export function readout(page, key) {
 }
 
 /** A cheap fingerprint of a canvas's pixels: [non-background pixel count, checksum]. */
-export function canvasFingerprint(page, plot) {
+export async function canvasFingerprint(page, plot, { settled = true } = {}) {
+  // Plots out of view are drawn once the controls rest (web/main.js observeVisibility);
+  // `settled: false` reads the canvas as it is now.
+  if (settled) await page.waitForFunction(() => !window.zetaDiagnostics || window.zetaDiagnostics.drawn(), null, { timeout: 5000 });
   return page.evaluate((key) => {
     const c = document.querySelector(`canvas[data-plot="${key}"]`);
     const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;

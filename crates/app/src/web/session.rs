@@ -20,6 +20,11 @@ pub struct Session {
     spec: DemoSpec,
     params: Params,
     canvases: Vec<Option<HtmlCanvasElement>>,
+    /// Whether each plot's canvas is on screen, as the page observes it. An update draws
+    /// only those; the others wait, [`stale`](Self::stale), for [`Session::draw_stale`].
+    visible: Vec<bool>,
+    /// Plots whose canvas shows an older frame than the last update's.
+    stale: Vec<bool>,
     schematic_canvas: Option<HtmlCanvasElement>,
     frame: Option<Frame>,
     geometry: Vec<Option<PlotGeometry>>,
@@ -48,6 +53,8 @@ impl Session {
             spec,
             params,
             canvases: vec![None; n],
+            visible: vec![true; n],
+            stale: vec![false; n],
             schematic_canvas: None,
             frame: None,
             geometry: vec![None; n],
@@ -105,8 +112,9 @@ impl Session {
         }
     }
 
-    /// Recomputes, draws every attached plot canvas (sized by the page at `scale` =
-    /// devicePixelRatio) and returns `{readouts, descriptions, time_span}`.
+    /// Recomputes, draws every attached plot canvas that is on screen (sized by the page
+    /// at `scale` = devicePixelRatio; see [`Session::set_visible`]) and returns
+    /// `{readouts, descriptions, time_span, derived, provisional, tour}`.
     pub fn update(&mut self, scale: f64, dark: bool) -> Result<JsValue, JsError> {
         let mut frame = self.demo.update(&self.params);
         let mut derived = Vec::new();
@@ -115,11 +123,6 @@ impl Session {
                 derived.push((key, v));
             }
         }
-        let scale = if scale.is_finite() {
-            scale.clamp(0.5, 4.0)
-        } else {
-            1.0
-        };
         for (i, fig) in frame.figures.iter_mut().enumerate() {
             if self.dragging {
                 hold_axes(fig, self.shown.get(i).copied().flatten());
@@ -130,16 +133,16 @@ impl Session {
                 *slot = Some((fig.x.range, fig.y.range));
             }
         }
-        for (i, (canvas, fig)) in self.canvases.iter().zip(&frame.figures).enumerate() {
-            let Some(canvas) = canvas else { continue };
-            let Some(backend) = Canvas::new(canvas) else {
-                continue;
-            };
-            let geo = draw_on(backend, fig, dark, scale)?;
-            if let Some(slot) = self.geometry.get_mut(i) {
-                *slot = Some(geo);
-            }
-        }
+        self.stale.fill(true);
+        let frame = self.frame.insert(frame);
+        draw_plots(
+            frame,
+            &self.canvases,
+            &self.visible,
+            &mut self.stale,
+            &mut self.geometry,
+            Drawn { scale, dark },
+        )?;
         let descriptions = self
             .spec
             .plots
@@ -150,16 +153,51 @@ impl Session {
                 text: &f.description,
             })
             .collect();
-        let out = to_js(&UpdateResult {
+        to_js(&UpdateResult {
             readouts: &frame.readouts,
             descriptions,
             time_span: frame.time_span,
             derived,
             provisional: self.demo.provisional(),
             tour: self.demo.tour(),
-        });
-        self.frame = Some(frame);
-        out
+        })
+    }
+
+    /// Tells the session whether plot `key`'s canvas is on screen (the page observes it;
+    /// every plot counts as on screen until told otherwise). Returns whether the plot has
+    /// just come into view showing an older frame: the page then calls
+    /// [`Session::draw_stale`].
+    #[wasm_bindgen(js_name = setVisible)]
+    pub fn set_visible(&mut self, key: &str, on: bool) -> bool {
+        let Some(i) = self.spec.plots.iter().position(|p| p.key == key) else {
+            return false;
+        };
+        if let Some(v) = self.visible.get_mut(i) {
+            *v = on;
+        }
+        on && self.stale.get(i).copied().unwrap_or(false)
+    }
+
+    /// Draws the plots that show an older frame than the last update's, from that update's
+    /// figures (nothing is recomputed): those on screen, or with `all` every one (the page
+    /// does that once the controls rest). Returns whether any plot is still stale.
+    #[wasm_bindgen(js_name = drawStale)]
+    pub fn draw_stale(&mut self, scale: f64, dark: bool, all: bool) -> Result<bool, JsError> {
+        let Some(frame) = &self.frame else {
+            return Ok(false);
+        };
+        let wanted: Vec<bool> = (self.stale.iter().zip(&self.visible))
+            .map(|(stale, on)| *stale && (all || *on))
+            .collect();
+        draw_plots(
+            frame,
+            &self.canvases,
+            &wanted,
+            &mut self.stale,
+            &mut self.geometry,
+            Drawn { scale, dark },
+        )?;
+        Ok(self.stale.iter().any(|s| *s))
     }
 
     /// Continues a pending heavy study (sweep, Monte Carlo) for about `budget_ms`:
@@ -328,6 +366,46 @@ impl Session {
         };
         draw_on(backend, fig, dark, scale).map(|_| ())
     }
+}
+
+/// How plots are drawn: `scale` = devicePixelRatio (clamped to 0.5…4), dark or light theme.
+#[derive(Debug, Clone, Copy)]
+struct Drawn {
+    scale: f64,
+    dark: bool,
+}
+
+/// Draws the figures of `frame` whose `wanted` flag is set on their attached canvases,
+/// clearing their `stale` mark and keeping where each was drawn in `geometry`.
+fn draw_plots(
+    frame: &Frame,
+    canvases: &[Option<HtmlCanvasElement>],
+    wanted: &[bool],
+    stale: &mut [bool],
+    geometry: &mut [Option<PlotGeometry>],
+    how: Drawn,
+) -> Result<(), JsError> {
+    let scale = if how.scale.is_finite() {
+        how.scale.clamp(0.5, 4.0)
+    } else {
+        1.0
+    };
+    for (i, (canvas, fig)) in canvases.iter().zip(&frame.figures).enumerate() {
+        if !wanted.get(i).copied().unwrap_or(false) {
+            continue;
+        }
+        if let Some(slot) = stale.get_mut(i) {
+            *slot = false;
+        }
+        let Some(backend) = canvas.as_ref().and_then(Canvas::new) else {
+            continue;
+        };
+        let geo = draw_on(backend, fig, how.dark, scale)?;
+        if let Some(slot) = geometry.get_mut(i) {
+            *slot = Some(geo);
+        }
+    }
+    Ok(())
 }
 
 /// Draws `fig` on a canvas in the light or dark theme (heatmaps as one bitmap).
