@@ -5,11 +5,11 @@ use super::fit::fit;
 use super::heatmap::{blit_heatmap, draw_heatmap};
 use super::legend::{free_corner, legend_entries, Legend};
 use super::lines::draw_lines_and_markers;
+use super::scale::Scale;
 use super::ticks::axis_tick_label;
 use super::{err, px, Raster, RenderError};
 use crate::figure::Figure;
 use crate::theme::Theme;
-use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -24,26 +24,15 @@ pub(super) enum Placement {
     Below,
 }
 
-/// A chart over the coordinates `X` × `Y` describe.
-pub(super) type Chart<'a, DB, X, Y> = ChartContext<
-    'a,
-    DB,
-    Cartesian2d<<X as AsRangedCoord>::CoordDescType, <Y as AsRangedCoord>::CoordDescType>,
->;
+/// A chart over data values, on linear or log axes (one type for every pairing).
+pub(super) type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<Scale, Scale>>;
 
-pub(super) fn build<'a, DB, X, Y>(
+pub(super) fn build<'a, DB: DrawingBackend>(
     area: &'a DrawingArea<DB, Shift>,
     fig: &Figure,
     theme: &Theme,
     scale: f64,
-    xr: X,
-    yr: Y,
-) -> Result<Chart<'a, DB, X, Y>, RenderError>
-where
-    DB: DrawingBackend,
-    X: AsRangedCoord<Value = f64>,
-    Y: AsRangedCoord<Value = f64>,
-{
+) -> Result<Chart<'a, DB>, RenderError> {
     let right = if fig.heatmap.is_some() {
         COLOUR_BAR_WIDTH
     } else {
@@ -59,26 +48,17 @@ where
         .margin_right(px(right, scale))
         .x_label_area_size(px(42.0, scale))
         .y_label_area_size(px(64.0, scale))
-        .build_cartesian_2d(xr, yr)
+        .build_cartesian_2d(Scale::of(&fig.x), Scale::of(&fig.y))
         .map_err(err)
 }
 
-pub(super) fn draw<DB, X, Y>(
+pub(super) fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     fig: &Figure,
     theme: &Theme,
     scale: f64,
     raster: Raster,
-    xr: impl Fn() -> X,
-    yr: impl Fn() -> Y,
-) -> Result<(f64, f64, f64, f64), RenderError>
-where
-    DB: DrawingBackend,
-    X: AsRangedCoord<Value = f64>,
-    Y: AsRangedCoord<Value = f64>,
-    X::CoordDescType: ValueFormatter<f64>,
-    Y::CoordDescType: ValueFormatter<f64>,
-{
+) -> Result<(f64, f64, f64, f64), RenderError> {
     let fg = theme.foreground;
     let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
     let entries = legend_entries(fig);
@@ -87,7 +67,7 @@ where
     // Where the legend can go without covering data: a trial layout gives the pixels.
     let mut placement = Placement::None;
     if !entries.is_empty() {
-        let trial = build(root, fig, theme, scale, xr(), yr())?;
+        let trial = build(root, fig, theme, scale)?;
         placement = match free_corner(&trial, fig, legend.size, scale) {
             Some((x, y)) => Placement::Inside(x, y),
             None => Placement::Below,
@@ -101,7 +81,7 @@ where
         0
     };
     let (area, band) = root.split_vertically(h.saturating_sub(band_h));
-    let mut chart = build(&area, fig, theme, scale, xr(), yr())?;
+    let mut chart = build(&area, fig, theme, scale)?;
 
     // Axis names as long as the axes: one size for both, each cut only if it must be.
     let (px_w, px_h) = chart.plotting_area().dim_in_pixel();

@@ -1,5 +1,6 @@
 //! Heatmap cells: one rectangle each, or one bitmap on backends that blit fast.
 
+use super::chart::Chart;
 use super::{err, RenderError};
 use crate::theme::Theme;
 use plotters::element::{Drawable, PointCollection};
@@ -7,15 +8,10 @@ use plotters::prelude::*;
 
 /// Fills the heatmap's cells (one rectangle each; blank where the value is not finite).
 /// The caller checks [`Heatmap::has_every_cell`](crate::figure::Heatmap::has_every_cell).
-pub(super) fn draw_heatmap<DB, X, Y>(
-    chart: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
+pub(super) fn draw_heatmap<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
     h: &crate::figure::Heatmap,
-) -> Result<(), RenderError>
-where
-    DB: DrawingBackend,
-    X: Ranged<ValueType = f64>,
-    Y: Ranged<ValueType = f64>,
-{
+) -> Result<(), RenderError> {
     let dx = (h.x_edges.1 - h.x_edges.0) / h.nx as f64;
     let dy = (h.y_edges.1 - h.y_edges.0) / h.ny as f64;
     let (lo, hi) = h.scale;
@@ -69,16 +65,11 @@ impl<C, DB: DrawingBackend> Drawable<DB> for Image<C> {
 /// Draws the heatmap as one bitmap over its pixel rectangle (linear axes), each pixel
 /// taking the colour of the cell under its centre; blank cells show the background.
 /// The caller checks [`Heatmap::has_every_cell`](crate::figure::Heatmap::has_every_cell).
-pub(super) fn blit_heatmap<DB, X, Y>(
-    chart: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
+pub(super) fn blit_heatmap<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
     h: &crate::figure::Heatmap,
     theme: &Theme,
-) -> Result<(), RenderError>
-where
-    DB: DrawingBackend,
-    X: Ranged<ValueType = f64>,
-    Y: Ranged<ValueType = f64>,
-{
+) -> Result<(), RenderError> {
     let area = chart.plotting_area();
     let (xs, ys) = area.get_pixel_range();
     let (ax, ay) = chart.backend_coord(&(h.x_edges.0, h.y_edges.1));

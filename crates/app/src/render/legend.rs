@@ -1,5 +1,6 @@
 //! The legend: measured through the backend, placed over no data or in rows below.
 
+use super::chart::Chart;
 use super::lines::segments;
 use super::{err, px, RenderError};
 use crate::figure::{Dash, Figure, LineStyle};
@@ -20,17 +21,12 @@ pub(super) fn legend_entries(fig: &Figure) -> Vec<(&str, LineStyle)> {
 /// Picks a corner (or the middle of the top or bottom edge) of the plotting area where a
 /// legend box of `size` backend pixels covers no line, marker or heatmap cell; `None` when
 /// every place would cover data. Returns the box's top-left in plotting-area pixels.
-pub(super) fn free_corner<DB, X, Y>(
-    chart: &ChartContext<'_, DB, Cartesian2d<X, Y>>,
+pub(super) fn free_corner<DB: DrawingBackend>(
+    chart: &Chart<'_, DB>,
     fig: &Figure,
     size: (i32, i32),
     scale: f64,
-) -> Option<(i32, i32)>
-where
-    DB: DrawingBackend,
-    X: Ranged<ValueType = f64>,
-    Y: Ranged<ValueType = f64>,
-{
+) -> Option<(i32, i32)> {
     let (xs, ys) = chart.plotting_area().get_pixel_range();
     let (aw, ah) = (xs.end - xs.start, ys.end - ys.start);
     let (bw, bh) = size;

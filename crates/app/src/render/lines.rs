@@ -1,5 +1,6 @@
 //! Series (split where they cannot be drawn, clamped to the axes) and markers.
 
+use super::chart::Chart;
 use super::{err, px, RenderError};
 use crate::figure::{AxisScale, Dash, Figure, FigureKind, LineStyle, MarkerShape, Series};
 use crate::theme::Theme;
@@ -41,17 +42,12 @@ pub(super) fn segments(s: &Series, fig: &Figure) -> (Vec<Vec<(f64, f64)>>, bool)
 }
 
 /// Draws the series and markers of `fig`; returns the legend entries.
-pub(super) fn draw_lines_and_markers<'f, DB, X, Y>(
-    chart: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
+pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
     fig: &'f Figure,
     theme: &Theme,
     scale: f64,
-) -> Result<Vec<(&'f str, LineStyle)>, RenderError>
-where
-    DB: DrawingBackend,
-    X: Ranged<ValueType = f64>,
-    Y: Ranged<ValueType = f64>,
-{
+) -> Result<Vec<(&'f str, LineStyle)>, RenderError> {
     let fg = theme.foreground;
     let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
     let mut legend: Vec<(&str, LineStyle)> = Vec::new();

@@ -13,6 +13,7 @@ mod heatmap;
 mod hold;
 mod legend;
 mod lines;
+mod scale;
 #[cfg(test)]
 mod tests;
 mod ticks;
@@ -26,7 +27,7 @@ use chart::draw;
 use lines::draw_lines_and_markers;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use ticks::log_axis;
+use scale::Scale;
 
 /// The font of every plot text. The variant, not the name `"sans-serif"`: plotters maps a
 /// name to its family by lowercasing it, which links the Unicode case tables into the wasm
@@ -140,27 +141,12 @@ pub fn render_with<DB: DrawingBackend>(
         root.present().map_err(err)?;
         return Ok(g);
     }
-    let (x0, x1) = fig.x.range;
-    let (y0, y1) = fig.y.range;
     // A bitmap needs linear axes; log axes fall back to cells.
     let raster = match (fig.x.scale, fig.y.scale) {
         (AxisScale::Linear, AxisScale::Linear) => raster,
         _ => Raster::Cells,
     };
-    // One call for each pairing of axis types (their coordinate types differ).
-    macro_rules! draw_with_axes {
-        ($x:expr, $y:expr) => {
-            draw(root, fig, theme, scale, raster, $x, $y)
-        };
-    }
-    let area = match (fig.x.scale, fig.y.scale) {
-        (AxisScale::Linear, AxisScale::Linear) => draw_with_axes!(|| x0..x1, || y0..y1),
-        (AxisScale::Log, AxisScale::Linear) => draw_with_axes!(|| log_axis(x0, x1), || y0..y1),
-        (AxisScale::Linear, AxisScale::Log) => draw_with_axes!(|| x0..x1, || log_axis(y0, y1)),
-        (AxisScale::Log, AxisScale::Log) => {
-            draw_with_axes!(|| log_axis(x0, x1), || log_axis(y0, y1))
-        }
-    }?;
+    let area = draw(root, fig, theme, scale, raster)?;
     root.present().map_err(err)?;
     Ok(PlotGeometry {
         area,
@@ -190,7 +176,7 @@ fn draw_schematic<DB: DrawingBackend>(
         x = (x.0 - pad, x.1 + pad);
     }
     let mut chart = ChartBuilder::on(root)
-        .build_cartesian_2d(x.0..x.1, y.0..y.1)
+        .build_cartesian_2d(Scale::linear(x.0, x.1), Scale::linear(y.0, y.1))
         .map_err(err)?;
     let fitted = Figure {
         x: crate::figure::Axis {

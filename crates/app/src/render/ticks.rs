@@ -4,21 +4,16 @@
 #![allow(clippy::disallowed_methods)]
 
 use crate::figure::{Axis, AxisScale};
-use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
-use plotters::prelude::*;
 
-/// A log axis over `lo..hi` (both > 0) with its labelled ticks from [`log_ticks`] and a
-/// minor grid line at every 1…9 × 10ᵏ when the range spans fewer than six decades.
-pub(super) fn log_axis(lo: f64, hi: f64) -> WithKeyPoints<LogCoord<f64>> {
+/// The grid of a log axis over `lo..hi` (both > 0): its labelled ticks from [`log_ticks`],
+/// and a minor grid line at every 1…9 × 10ᵏ when the range spans fewer than six decades.
+pub(super) fn log_axis_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
     let minor = if (hi / lo).log10() < 6.0 {
         decade_multiples(lo, hi, &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0])
     } else {
         Vec::new()
     };
-    (lo..hi)
-        .log_scale()
-        .with_key_points(log_ticks(lo, hi))
-        .with_light_points(minor)
+    (log_ticks(lo, hi), minor)
 }
 
 /// Labelled ticks of a log axis over `lo..hi`: every decade, and between them enough

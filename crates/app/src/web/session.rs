@@ -341,7 +341,7 @@ impl Session {
         let mut buf = String::new();
         {
             let size = (w.clamp(16, 8000), h.clamp(16, 8000));
-            let backend = Measured::with_measure(SVGBackend::with_string(&mut buf, size), &measure)
+            let backend = Measured::svg(SVGBackend::with_string(&mut buf, size), &measure)
                 .ok_or_else(|| js_err("no 2D context to measure text"))?;
             render(&backend.into_drawing_area(), fig, &theme(dark), 1.0).map_err(js_err)?;
         }
