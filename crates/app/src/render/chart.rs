@@ -7,7 +7,7 @@ use super::legend::{free_corner, legend_entries, Legend};
 use super::lines::draw_lines_and_markers;
 use super::scale::Scale;
 use super::ticks::axis_tick_label;
-use super::{err, px, Raster, RenderError};
+use super::{err, px, Output, Raster, RenderError};
 use crate::figure::Figure;
 use crate::theme::Theme;
 use plotters::coord::Shift;
@@ -57,7 +57,7 @@ pub(super) fn draw<DB: DrawingBackend>(
     fig: &Figure,
     theme: &Theme,
     scale: f64,
-    raster: Raster,
+    out: Output<'_>,
 ) -> Result<(f64, f64, f64, f64), RenderError> {
     let fg = theme.foreground;
     let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
@@ -110,7 +110,7 @@ pub(super) fn draw<DB: DrawingBackend>(
 
     if let Some(h) = &fig.heatmap {
         if h.has_every_cell() {
-            match raster {
+            match out.raster {
                 Raster::Cells => draw_heatmap(&mut chart, h)?,
                 Raster::Bitmap => blit_heatmap(&mut chart, h, theme)?,
             }
@@ -141,7 +141,7 @@ pub(super) fn draw<DB: DrawingBackend>(
         }
     }
 
-    draw_lines_and_markers(&mut chart, fig, theme, scale)?;
+    draw_lines_and_markers(&mut chart, fig, theme, scale, out.dash)?;
     match placement {
         Placement::Inside(x, y) => legend.draw_box(
             &chart.plotting_area().strip_coord_spec(),

@@ -41,12 +41,14 @@ pub(super) fn segments(s: &Series, fig: &Figure) -> (Vec<Vec<(f64, f64)>>, bool)
     (out, clipped)
 }
 
-/// Draws the series and markers of `fig`; returns the legend entries.
+/// Draws the series and markers of `fig`; returns the legend entries. With `dash`, the
+/// backend dashes each series as one path (see [`super::Output::dash`]).
 pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     fig: &'f Figure,
     theme: &Theme,
     scale: f64,
+    dash: Option<super::SetDash<'_>>,
 ) -> Result<Vec<(&'f str, LineStyle)>, RenderError> {
     let fg = theme.foreground;
     let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
@@ -57,28 +59,35 @@ pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
         let style = color.stroke_width(px(s.style.width, scale));
         let (segs, cut) = segments(s, fig);
         clipped |= cut;
-        for seg in segs {
-            match s.style.dash {
-                Dash::Solid => chart
-                    .draw_series(LineSeries::new(seg, style))
-                    .map_err(err)?,
-                Dash::Dashed => chart
-                    .draw_series(DashedLineSeries::new(
-                        seg,
-                        px(8.0, scale),
-                        px(5.0, scale),
-                        style,
-                    ))
-                    .map_err(err)?,
-                Dash::Dotted => chart
-                    .draw_series(DashedLineSeries::new(
-                        seg,
-                        px(2.0, scale),
-                        px(4.0, scale),
-                        style,
-                    ))
-                    .map_err(err)?,
-            };
+        // On and off lengths (px) of a dash.
+        let pattern = match s.style.dash {
+            Dash::Solid => None,
+            Dash::Dashed => Some((px(8.0, scale), px(5.0, scale))),
+            Dash::Dotted => Some((px(2.0, scale), px(4.0, scale))),
+        };
+        match (pattern, dash) {
+            (Some((on, off)), Some(set)) => {
+                set(&[f64::from(on), f64::from(off)]);
+                let drawn = segs
+                    .into_iter()
+                    .try_for_each(|seg| chart.draw_series(LineSeries::new(seg, style)).map(|_| ()));
+                set(&[]);
+                drawn.map_err(err)?;
+            }
+            (Some((on, off)), None) => {
+                for seg in segs {
+                    chart
+                        .draw_series(DashedLineSeries::new(seg, on, off, style))
+                        .map_err(err)?;
+                }
+            }
+            (None, _) => {
+                for seg in segs {
+                    chart
+                        .draw_series(LineSeries::new(seg, style))
+                        .map_err(err)?;
+                }
+            }
         }
         if !s.label.is_empty() {
             legend.push((&s.label, s.style));

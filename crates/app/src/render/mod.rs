@@ -113,7 +113,7 @@ pub fn render<DB: DrawingBackend>(
     theme: &Theme,
     scale: f64,
 ) -> Result<PlotGeometry, RenderError> {
-    render_with(root, fig, theme, scale, Raster::Cells)
+    render_with(root, fig, theme, scale, Output::VECTOR)
 }
 
 /// How heatmaps are drawn.
@@ -127,26 +127,49 @@ pub enum Raster {
     Bitmap,
 }
 
-/// [`render`], choosing how heatmaps are drawn.
+/// Sets the dash pattern of a backend's strokes: on, off, … lengths in px; empty: solid.
+pub type SetDash<'a> = &'a dyn Fn(&[f64]);
+
+/// What a backend can do beyond plotters' drawing calls.
+#[derive(Clone, Copy)]
+pub struct Output<'a> {
+    /// How heatmaps are drawn.
+    pub raster: Raster,
+    /// Sets the dash pattern (on, off, … in px; empty for solid) of the backend's own
+    /// strokes, for a backend that dashes a whole path itself (the canvas); `None`: dashed
+    /// lines are drawn as plotters' separate dash segments (SVG, tests). One path per
+    /// series instead of one per dash made dashed curves the costliest part of a frame.
+    pub dash: Option<SetDash<'a>>,
+}
+
+impl Output<'_> {
+    /// Vector output: heatmap cells as rectangles, dashes as segments.
+    pub const VECTOR: Output<'static> = Output {
+        raster: Raster::Cells,
+        dash: None,
+    };
+}
+
+/// [`render`] for a backend that can do more (see [`Output`]).
 pub fn render_with<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     fig: &Figure,
     theme: &Theme,
     scale: f64,
-    raster: Raster,
+    out: Output<'_>,
 ) -> Result<PlotGeometry, RenderError> {
     root.fill(&theme.background).map_err(err)?;
     if fig.kind == FigureKind::Schematic {
-        let g = draw_schematic(root, fig, theme, scale)?;
+        let g = draw_schematic(root, fig, theme, scale, out)?;
         root.present().map_err(err)?;
         return Ok(g);
     }
     // A bitmap needs linear axes; log axes fall back to cells.
     let raster = match (fig.x.scale, fig.y.scale) {
-        (AxisScale::Linear, AxisScale::Linear) => raster,
+        (AxisScale::Linear, AxisScale::Linear) => out.raster,
         _ => Raster::Cells,
     };
-    let area = draw(root, fig, theme, scale, raster)?;
+    let area = draw(root, fig, theme, scale, Output { raster, ..out })?;
     root.present().map_err(err)?;
     Ok(PlotGeometry {
         area,
@@ -163,6 +186,7 @@ fn draw_schematic<DB: DrawingBackend>(
     fig: &Figure,
     theme: &Theme,
     scale: f64,
+    out: Output<'_>,
 ) -> Result<PlotGeometry, RenderError> {
     let (w, h) = root.dim_in_pixel();
     let (w, h) = (f64::from(w.max(1)), f64::from(h.max(1)));
@@ -189,7 +213,7 @@ fn draw_schematic<DB: DrawingBackend>(
         },
         ..fig.clone()
     };
-    draw_lines_and_markers(&mut chart, &fitted, theme, scale)?;
+    draw_lines_and_markers(&mut chart, &fitted, theme, scale, out.dash)?;
     Ok(PlotGeometry {
         area: (0.0, 0.0, w, h),
         x,

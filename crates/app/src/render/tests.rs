@@ -130,7 +130,17 @@ fn bitmap_heatmap_paints_the_same_colours_as_cells() {
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (320, 160)).into_drawing_area();
-        render_with(&root, &fig, &Theme::LIGHT, 1.0, Raster::Bitmap).unwrap();
+        render_with(
+            &root,
+            &fig,
+            &Theme::LIGHT,
+            1.0,
+            Output {
+                raster: Raster::Bitmap,
+                dash: None,
+            },
+        )
+        .unwrap();
     }
     let hex = |c: RGBColor| format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2);
     let (lo, hi) = (

@@ -3,11 +3,13 @@
 use super::result::{Description, SetResult, UpdateResult};
 use super::translate::translate_spec;
 use super::{js_err, theme, to_js};
-use crate::canvas::{Canvas, Measured};
+use crate::canvas::{Canvas, Web};
 use crate::demos::{self, Demo, Frame};
 use crate::export;
 use crate::params::{resolve_query, Params};
-use crate::render::{ease_axes, hold_axes, render, render_with, AxisRanges, PlotGeometry, Raster};
+use crate::render::{
+    ease_axes, hold_axes, render, render_with, AxisRanges, Output, PlotGeometry, Raster,
+};
 use crate::spec::DemoSpec;
 use plotters::prelude::{IntoDrawingArea, SVGBackend};
 use wasm_bindgen::prelude::*;
@@ -341,7 +343,7 @@ impl Session {
         let mut buf = String::new();
         {
             let size = (w.clamp(16, 8000), h.clamp(16, 8000));
-            let backend = Measured::svg(SVGBackend::with_string(&mut buf, size), &measure)
+            let backend = Web::svg(SVGBackend::with_string(&mut buf, size), &measure)
                 .ok_or_else(|| js_err("no 2D context to measure text"))?;
             render(&backend.into_drawing_area(), fig, &theme(dark), 1.0).map_err(js_err)?;
         }
@@ -415,12 +417,10 @@ fn draw_on(
     dark: bool,
     scale: f64,
 ) -> Result<PlotGeometry, JsError> {
-    render_with(
-        &backend.into_drawing_area(),
-        fig,
-        &theme(dark),
-        scale,
-        Raster::Bitmap,
-    )
-    .map_err(js_err)
+    let dasher = backend.dasher();
+    let out = Output {
+        raster: Raster::Bitmap,
+        dash: dasher.as_ref().map(|d| d as &dyn Fn(&[f64])),
+    };
+    render_with(&backend.into_drawing_area(), fig, &theme(dark), scale, out).map_err(js_err)
 }
