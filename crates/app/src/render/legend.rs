@@ -59,12 +59,14 @@ pub(super) fn free_corner<DB: DrawingBackend>(
             }
         }
     }
+    // Marks the spots (x, y) falls in; says whether any spot is still free.
     let mut mark = |x: i32, y: i32| {
         for (k, &(sx, sy)) in spots.iter().enumerate() {
             if x >= sx - m && x <= sx + bw + m && y >= sy - m && y <= sy + bh + m {
                 free[k] = false;
             }
         }
+        free.contains(&true)
     };
     let step = px(3.0, scale).max(1) as i32;
     for s in &fig.series {
@@ -76,10 +78,12 @@ pub(super) fn free_corner<DB: DrawingBackend>(
                     // Sample the segment so a long straight stretch is seen too.
                     let n = ((x - px0).abs().max((y - py0).abs()) / step).clamp(1, 400);
                     for i in 1..=n {
-                        mark(px0 + (x - px0) * i / n, py0 + (y - py0) * i / n);
+                        if !mark(px0 + (x - px0) * i / n, py0 + (y - py0) * i / n) {
+                            return None; // every spot taken: the rest cannot free one
+                        }
                     }
-                } else {
-                    mark(x, y);
+                } else if !mark(x, y) {
+                    return None;
                 }
                 prev = Some((x, y));
             }
@@ -90,14 +94,14 @@ pub(super) fn free_corner<DB: DrawingBackend>(
             continue;
         }
         let (x, y) = to_area(mk.at);
-        mark(x, y);
+        let _ = mark(x, y);
         if !mk.label.is_empty() {
             // The label runs right of the point, above it (see draw_lines_and_markers).
             let w = (mk.label.chars().count() as f64 * 7.0 * scale) as i32;
             let (dx, dy) = (px(8.0, scale) as i32, px(16.0, scale) as i32);
             for i in 0..=4 {
-                mark(x + dx + w * i / 4, y - dy);
-                mark(x + dx + w * i / 4, y - dy / 2);
+                let _ = mark(x + dx + w * i / 4, y - dy);
+                let _ = mark(x + dx + w * i / 4, y - dy / 2);
             }
         }
     }
