@@ -1,10 +1,9 @@
-//! The backends the page draws with, as one type, [`Web`]: an HTML canvas ([`HtmlCanvas`],
-//! this crate's own, which skips repeated state changes) or, for SVG export, plotters' SVG
-//! backend with text measured by a canvas 2D context.
-//!
-//! One type, so the render code is compiled once for the page: a generic drawing function
-//! is a copy of machine code per backend type, and the SVG export's copy of every render
-//! function cost about 10 KB brotli of wasm.
+//! The backends the page draws with: an HTML canvas ([`HtmlCanvas`], this crate's own,
+//! which skips repeated state changes) and, for SVG export, plotters' SVG backend with text
+//! measured by a canvas 2D context; in the full module both as one type, `Web`
+//! (`web.rs`), so the render code is compiled once: a generic drawing function is a copy
+//! of machine code per backend type, and the SVG export's copy of every render function
+//! cost about 10 KB brotli of wasm. The first module has no SVG export.
 //!
 //! Text is measured with `CanvasRenderingContext2d.measureText`: plotters' default on the
 //! web inserts a styled `<span>` into the page and reads its layout, once per label, which
@@ -12,127 +11,44 @@
 //! Content-Security-Policy (`style-src 'self'`).
 
 mod html;
+#[cfg(not(feature = "first"))]
+mod web;
 
 pub use html::{CanvasError, HtmlCanvas};
-use plotters::prelude::SVGBackend;
-use plotters_backend::{
-    BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind,
-};
+use plotters_backend::BackendTextStyle;
 use wasm_bindgen::JsCast;
+#[cfg(not(feature = "first"))]
+pub use web::{Web, WebError};
 use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
 
-/// A plotters backend drawing onto an HTML canvas.
+/// What the page draws its plots on: [`Web`] in the full module; in the first module
+/// (feature `first`), which has no SVG export, the canvas backend itself, so the render
+/// code is still compiled once.
+#[cfg(not(feature = "first"))]
 pub type Canvas = Web<'static>;
+/// What the page draws its plots on (see the full module's alias).
+#[cfg(feature = "first")]
+pub type Canvas = HtmlCanvas;
 
-/// The backends the page draws on, as one type.
-pub enum Web<'a> {
-    /// Drawing onto an HTML canvas.
-    Canvas(HtmlCanvas),
-    /// Writing an SVG document; text measured with `measure`.
-    Svg {
-        /// The SVG being written.
-        svg: SVGBackend<'a>,
-        /// Any 2D context (even of a canvas not in the page), for measuring text.
-        measure: CanvasRenderingContext2d,
-    },
+/// What sets the dash pattern of `backend`'s strokes, when it dashes a path itself (the
+/// canvas; see `render::Output::dash`); an SVG is dashed by plotters.
+pub fn dasher(backend: &Canvas) -> Option<impl Fn(&[f64])> {
+    #[cfg(not(feature = "first"))]
+    return backend.dasher();
+    #[cfg(feature = "first")]
+    return Some(backend.dasher());
 }
 
-/// A drawing error of either [`Web`] backend.
-pub enum WebError {
-    /// From the canvas backend.
-    Canvas(CanvasError),
-    /// From the SVG backend.
-    Svg(std::io::Error),
-}
-
-// Each side's own text, so messages read as they did before the backends were one type.
-impl std::fmt::Debug for WebError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            WebError::Canvas(e) => e.fmt(f),
-            WebError::Svg(e) => e.fmt(f),
-        }
-    }
-}
-
-impl std::fmt::Display for WebError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            WebError::Canvas(e) => e.fmt(f),
-            WebError::Svg(e) => e.fmt(f),
-        }
-    }
-}
-
-impl std::error::Error for WebError {}
-
-/// A backend error as a [`WebError`] (font errors pass through).
-fn lift<E>(wrap: fn(E) -> WebError) -> impl Fn(DrawingErrorKind<E>) -> DrawingErrorKind<WebError>
-where
-    E: std::error::Error + Send + Sync,
-{
-    move |e| match e {
-        DrawingErrorKind::DrawingError(e) => DrawingErrorKind::DrawingError(wrap(e)),
-        DrawingErrorKind::FontError(e) => DrawingErrorKind::FontError(e),
-    }
-}
-
-/// `DrawingBackend` methods of [`Web`] that hand their arguments to the backend it holds.
-macro_rules! forward_to_either {
-    ($(fn $name:ident $(<$($g:ident: $bound:path),+>)? ($($arg:ident: $ty:ty),*);)*) => {$(
-        fn $name $(<$($g: $bound),+>)? (&mut self, $($arg: $ty),*) -> Result<(), WebError> {
-            match self {
-                Web::Canvas(b) => b.$name($($arg),*).map_err(lift(WebError::Canvas)),
-                Web::Svg { svg, .. } => svg.$name($($arg),*).map_err(lift(WebError::Svg)),
-            }
-        }
-    )*};
-}
-
-type Result<T, E> = std::result::Result<T, DrawingErrorKind<E>>;
-
-impl DrawingBackend for Web<'_> {
-    type ErrorType = WebError;
-
-    fn get_size(&self) -> (u32, u32) {
-        match self {
-            Web::Canvas(b) => b.get_size(),
-            Web::Svg { svg, .. } => svg.get_size(),
-        }
-    }
-
-    forward_to_either! {
-        fn ensure_prepared();
-        fn present();
-        fn draw_pixel(point: BackendCoord, color: BackendColor);
-        fn draw_line<S: BackendStyle>(from: BackendCoord, to: BackendCoord, style: &S);
-        fn draw_rect<S: BackendStyle>(upper_left: BackendCoord, bottom_right: BackendCoord, style: &S, fill: bool);
-        fn draw_path<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(path: I, style: &S);
-        fn draw_circle<S: BackendStyle>(center: BackendCoord, radius: u32, style: &S, fill: bool);
-        fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(vert: I, style: &S);
-        fn draw_text<S: BackendTextStyle>(text: &str, style: &S, pos: BackendCoord);
-        fn blit_bitmap(pos: BackendCoord, size: (u32, u32), src: &[u8]);
-    }
-
-    fn estimate_text_size<S: BackendTextStyle>(
-        &self,
-        text: &str,
-        style: &S,
-    ) -> Result<(u32, u32), WebError> {
-        match self {
-            Web::Canvas(b) => b
-                .estimate_text_size(text, style)
-                .map_err(lift(WebError::Canvas)),
-            Web::Svg { measure, .. } => {
-                measure.set_font(&css_font(style));
-                Ok(self::measure(measure, text, style))
-            }
-        }
-    }
+/// Draws on `canvas`; `None` if it has no 2D context.
+pub fn on(canvas: &HtmlCanvasElement) -> Option<Canvas> {
+    let backend = HtmlCanvas::new(canvas)?;
+    #[cfg(not(feature = "first"))]
+    let backend = Web::Canvas(backend);
+    Some(backend)
 }
 
 /// The CSS font shorthand of `style`: `"<style> <size>px <family>"`.
-fn css_font(style: &impl BackendTextStyle) -> String {
+pub(crate) fn css_font(style: &impl BackendTextStyle) -> String {
     format!(
         "{} {}px {}",
         style.style().as_str(),
@@ -142,7 +58,7 @@ fn css_font(style: &impl BackendTextStyle) -> String {
 }
 
 /// Width and height (px) of `text` in the font already set on `context` (`style`'s).
-fn measure(
+pub(crate) fn measure(
     context: &CanvasRenderingContext2d,
     text: &str,
     style: &impl BackendTextStyle,
@@ -154,39 +70,10 @@ fn measure(
     )
 }
 
-fn context_of(canvas: &HtmlCanvasElement) -> Option<CanvasRenderingContext2d> {
+pub(crate) fn context_of(canvas: &HtmlCanvasElement) -> Option<CanvasRenderingContext2d> {
     canvas
         .get_context("2d")
         .ok()??
         .dyn_into::<CanvasRenderingContext2d>()
         .ok()
-}
-
-impl Canvas {
-    /// Draws on `canvas`; `None` if it has no 2D context.
-    pub fn new(canvas: &HtmlCanvasElement) -> Option<Self> {
-        HtmlCanvas::new(canvas).map(Web::Canvas)
-    }
-}
-
-impl Web<'_> {
-    /// For a canvas, what sets the dash pattern of its strokes (see
-    /// `render::Output::dash`); an SVG is dashed by plotters.
-    pub fn dasher(&self) -> Option<impl Fn(&[f64])> {
-        match self {
-            Web::Canvas(b) => Some(b.dasher()),
-            Web::Svg { .. } => None,
-        }
-    }
-}
-
-impl<'a> Web<'a> {
-    /// Writes SVG through `svg`, measuring text with the 2D context of `measure` (any
-    /// canvas, even one that is not in the page).
-    pub fn svg(svg: SVGBackend<'a>, measure: &HtmlCanvasElement) -> Option<Self> {
-        Some(Web::Svg {
-            svg,
-            measure: context_of(measure)?,
-        })
-    }
 }

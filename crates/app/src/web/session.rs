@@ -3,7 +3,7 @@
 use super::result::{Description, SetResult, UpdateResult};
 use super::translate::translate_spec;
 use super::{js_err, theme, to_js};
-use crate::canvas::{Canvas, Web};
+use crate::canvas::Canvas;
 use crate::demos::{self, Demo, Frame};
 use crate::export;
 use crate::params::{resolve_query, Params};
@@ -11,7 +11,7 @@ use crate::render::{
     ease_axes, hold_axes, render, render_with, AxisRanges, Output, PlotGeometry, Raster,
 };
 use crate::spec::DemoSpec;
-use plotters::prelude::{IntoDrawingArea, SVGBackend};
+use plotters::prelude::IntoDrawingArea;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
 
@@ -218,7 +218,7 @@ impl Session {
         ) else {
             return Ok(String::new());
         };
-        if let Some(backend) = Canvas::new(canvas) {
+        if let Some(backend) = crate::canvas::on(canvas) {
             let scale = if scale.is_finite() {
                 scale.clamp(0.5, 4.0)
             } else {
@@ -330,7 +330,9 @@ impl Session {
     }
 
     /// SVG document of plot `key` at `w × h` px. Text is measured with `measure`'s 2D
-    /// context (any canvas), so export works under a strict Content-Security-Policy.
+    /// context (any canvas), so export works under a strict Content-Security-Policy. Not in
+    /// the first module (feature `first`): the page waits for the full one to export SVG.
+    #[cfg(not(feature = "first"))]
     pub fn svg(
         &self,
         key: &str,
@@ -343,7 +345,8 @@ impl Session {
         let mut buf = String::new();
         {
             let size = (w.clamp(16, 8000), h.clamp(16, 8000));
-            let backend = Web::svg(SVGBackend::with_string(&mut buf, size), &measure)
+            let svg = plotters::prelude::SVGBackend::with_string(&mut buf, size);
+            let backend = crate::canvas::Web::svg(svg, &measure)
                 .ok_or_else(|| js_err("no 2D context to measure text"))?;
             render(&backend.into_drawing_area(), fig, &theme(dark), 1.0).map_err(js_err)?;
         }
@@ -360,7 +363,7 @@ impl Session {
         dark: bool,
     ) -> Result<(), JsError> {
         let (_, fig) = self.figure(key).ok_or_else(|| js_err("no such plot"))?;
-        let backend = Canvas::new(&canvas).ok_or_else(|| js_err("no 2D context"))?;
+        let backend = crate::canvas::on(&canvas).ok_or_else(|| js_err("no 2D context"))?;
         let scale = if scale.is_finite() {
             scale.clamp(0.5, 8.0)
         } else {
@@ -399,7 +402,7 @@ fn draw_plots(
         if let Some(slot) = stale.get_mut(i) {
             *slot = false;
         }
-        let Some(backend) = canvas.as_ref().and_then(Canvas::new) else {
+        let Some(backend) = canvas.as_ref().and_then(crate::canvas::on) else {
             continue;
         };
         let geo = draw_on(backend, fig, how.dark, scale)?;
@@ -417,7 +420,7 @@ fn draw_on(
     dark: bool,
     scale: f64,
 ) -> Result<PlotGeometry, JsError> {
-    let dasher = backend.dasher();
+    let dasher = crate::canvas::dasher(&backend);
     let out = Output {
         raster: Raster::Bitmap,
         dash: dasher.as_ref().map(|d| d as &dyn Fn(&[f64])),
