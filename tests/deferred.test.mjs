@@ -135,3 +135,19 @@ test('a state= token that forces a theme is followed once state.js has expanded 
     await again.context.close();
   }
 });
+
+test('the theme is on the page before main.js runs (no flash of the wrong theme)', async () => {
+  for (const [scheme, query, theme, colour] of [['dark', '', 'dark', DARK], ['light', '&theme=dark', 'dark', DARK], ['dark', '&theme=projector', 'projector', LIGHT]]) {
+    const context = await browser.newContext({ viewport: { width: 360, height: 740 }, colorScheme: scheme, serviceWorkers: 'block' });
+    try {
+      await context.route('**/web/main.js', (route) => route.abort()); // only <head>'s preload.js runs
+      const page = await context.newPage();
+      await page.goto(`${server.url}?demo=regimes${query}`);
+      await page.waitForSelector('#loading');
+      assert.equal(await page.getAttribute('html', 'data-theme'), theme);
+      assert.equal(await bg(page), colour, `${scheme}${query}`);
+    } finally {
+      await context.close();
+    }
+  }
+});
