@@ -106,17 +106,32 @@ function prefetchLater() {
   else setTimeout(go, 200);
 }
 
+/**
+ * Runs `use(module)` once `later(name)` has the module. A failed call in it is a wasm
+ * failure (reportFailure recovers); a module that could not be fetched is not: it is
+ * reported on the console and the next use fetches it again.
+ */
+function withModule(name, use) {
+  later(name).then((m) => {
+    try {
+      use(m);
+    } catch (err) {
+      reportFailure(err);
+    }
+  }, (err) => console.warn(`Zeta Lab: ${name}.js could not be loaded:`, err && err.message));
+}
+
 /** Saves a file through download.js (which stamps the view's state token into it). */
 function download(blob, name) {
-  later('download').then((m) => m.download(blob, name), reportFailure);
+  withModule('download', (m) => m.download(blob, name));
 }
 
 /** Lays out the paper's tour (tour.js) once it is loaded, if the same demo is still open. */
 function showTour(tour) {
   const view = app.view;
-  later('tour').then((m) => {
+  withModule('tour', (m) => {
     if (app.view === view) m.renderTour(app.root, tour);
-  }, reportFailure);
+  });
 }
 
 /** Reports an error from a wasm call without breaking the page; the next input recovers. */
@@ -490,13 +505,13 @@ function wireAnimation() {
   if (!anim) return;
   anim.play.addEventListener('click', () => setPlaying(!app.playing));
   anim.sound.addEventListener('click', () => {
-    later('sound').then(({ createSonifier }) => {
+    withModule('sound', ({ createSonifier }) => {
       if (!app.sound.start) app.sound = createSonifier();
       const on = !app.sound.enabled && app.sound.start();
       if (!on) app.sound.stop();
       anim.sound.textContent = on ? t('soundOn') : t('soundOff');
       anim.sound.setAttribute('aria-pressed', String(on));
-    }, reportFailure);
+    });
   });
   anim.scrub.addEventListener('input', () => {
     if (!app.timeSpan) return;
@@ -853,9 +868,9 @@ function wireShare() {
   if (!button) return;
   button.addEventListener('click', () => {
     loadStyles(); // the dialog's range table and presets
-    later('share').then(({ openShareDialog }) => {
+    withModule('share', ({ openShareDialog }) => {
       openShareDialog({ demoId: app.demoId, values: app.session.values(), spec: app.view.spec });
-    }).catch(reportFailure);
+    });
   });
 }
 
@@ -965,7 +980,7 @@ async function main() {
     try {
       app.host = (await hostModule).connectHost(app.embed, handlers);
     } catch (err) {
-      notify(app.notices, t('failed', { text: err && err.message ? err.message : String(err) }), 'error');
+      console.warn('Zeta Lab: the host-page API could not be loaded:', err && err.message);
     }
   }
   root.dataset.ready = 'true';
