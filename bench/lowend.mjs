@@ -4,8 +4,9 @@
 // site served brotli-compressed and a cold cache.
 // For every demo: every slider moved EVENTS times (input handler + the frame that redraws)
 // as p50/p95, the longest main-thread task seen while sliding, the time to the first plot
-// after navigation, the bytes transferred before it, and both again on a second visit (the
-// service worker then answers every file but the page). Prints Markdown tables.
+// after navigation, the bytes of the requests made before it (not what the page fetches at
+// idle just after it), and both again on a second visit (the service worker then answers
+// every file but the page). Prints Markdown tables.
 // Usage: node bench/lowend.mjs [events-per-slider] [demo,demo…]   (after scripts/build.sh)
 import { quantile, installSlider, fraction, benchArgs, withSite, demoIds, run } from './slide.mjs';
 
@@ -39,10 +40,22 @@ async function lowEndPage(browser, { network }) {
   await cdp.send('Network.setCacheDisabled', { cacheDisabled: true });
   if (network) await cdp.send('Network.emulateNetworkConditions', SLOW_4G);
   let bytes = 0;
+  const sent = new Map(); // requestId → wall-clock ms when the page asked for it
+  const finished = []; // {sentAt, bytes}
+  cdp.on('Network.requestWillBeSent', (e) => {
+    if (!sent.has(e.requestId)) sent.set(e.requestId, e.wallTime * 1000);
+  });
   cdp.on('Network.loadingFinished', (e) => {
     bytes += e.encodedDataLength;
+    finished.push({ sentAt: sent.get(e.requestId) ?? -Infinity, bytes: e.encodedDataLength });
   });
-  return { context, page, cdp, bytes: () => bytes };
+  /**
+   * Bytes of the requests the page made before wall-clock time `ms` (its first plot), so
+   * that what it fetches at idle right after the plot is not counted while the benchmark's
+   * poll catches up.
+   */
+  const bytesSentBefore = (ms) => finished.filter((f) => f.sentAt < ms).reduce((n, f) => n + f.bytes, 0);
+  return { context, page, cdp, bytes: () => bytes, bytesSentBefore };
 }
 
 async function main() {
@@ -54,8 +67,11 @@ async function main() {
       const t0 = Date.now();
       await load.page.goto(`${url}?demo=${id}`);
       await load.page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0, null, { timeout: 60000 });
-      const firstPlot = await load.page.evaluate(() => performance.getEntriesByName('zeta:first-draw')[0].startTime);
-      const bytes = load.bytes();
+      const { firstPlot, firstPlotWall } = await load.page.evaluate(() => {
+        const ms = performance.getEntriesByName('zeta:first-draw')[0].startTime;
+        return { firstPlot: ms, firstPlotWall: performance.timeOrigin + ms };
+      });
+      const bytes = load.bytesSentBefore(firstPlotWall);
       // Second visit, same network and CPU: from the service worker's cache once it controls
       // the page (the navigation itself still goes to the network first).
       await load.page.evaluate(() => navigator.serviceWorker?.ready);

@@ -1,8 +1,8 @@
 // Saves a Blob as a file through a temporary object URL. PNG, SVG and CSV files get the
-// view's state token and the app version written in (see embed.js / export.rs), so that
+// view's state token and the app version written in (see view.js, embed.js and export.rs), so that
 // dropping the file back onto the page reopens the same view.
 import { glue } from './glue.js';
-import { tokenNow } from './embed.js';
+import { tokenNow } from './view.js';
 
 function save(blob, name) {
   const url = URL.createObjectURL(blob);

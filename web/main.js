@@ -3,16 +3,15 @@
 // No physics here: every number comes from the Session (Rust).
 // The default demo starts from a small "first" module (only that demo linked, issue 13);
 // the full module loads after the first plot and takes over between two bursts of input.
+// Modules needed only on a user's action (share dialog, downloads, sound, the paper's tour,
+// the host-page API outside a frame) are not imported here: they load when first used, and
+// at idle after the first plot, so a click does not wait on the network (see `later`).
 import './state.js'; // first: expands a state= token in the address before anything reads it
 import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
 import { fillLiveCells } from './live-table.js';
 import { applyConditions } from './conditional.js';
-import { renderTour } from './tour.js';
 import { cancelPendingWrite, currentQuery, demoFromUrl, queryFor, writeState } from './url.js';
-import { download } from './download.js';
-import { applyEmbedView, connectHost, embedOptions } from './embed.js';
-import { createSonifier } from './sound.js';
-import { openShareDialog } from './share.js';
+import { applyEmbedView, connectPage, embedOptions, loadPrediction, loadStyles } from './view.js';
 import { useGlue } from './glue.js';
 import { activeLanguage, adoptInstance, languages, num, remember, requestedLanguages, t, translatePage, useLanguage } from './i18n.js';
 
@@ -24,6 +23,7 @@ const FIRST_WASM_URL = new URL('../zeta-first_bg.wasm', import.meta.url);
 /** How long the controls must rest before the full module takes over from the first. */
 const QUIET_MS = 300;
 const darkQuery = window.matchMedia('(prefers-color-scheme: dark)');
+const root = document.documentElement;
 const reducedMotion = window.matchMedia('(prefers-reduced-motion: reduce)');
 
 /** The one app object: all mutable state of the page. */
@@ -45,7 +45,8 @@ const app = {
   host: { notify() {} },
   changed: true,
   firstDrawn: false,
-  sound: createSonifier(),
+  /** The sonifier (sound.js), silent until the sound button first loads it. */
+  sound: { enabled: false, play() {} },
   dragging: false,
   layoutDirty: true,
   /** The glue of the module instance in use: replaced by a fresh instance after a trap. */
@@ -73,11 +74,72 @@ const app = {
   recovering: null,
 };
 
+/** The theme web/preload.js resolved from the address and the system (data-theme). */
 function isDark() {
-  const forced = new URLSearchParams(window.location.search).get('theme');
-  if (forced === 'dark') return true;
-  if (forced === 'light' || forced === 'projector') return false;
-  return darkQuery.matches;
+  return root.dataset.theme === 'dark';
+}
+
+/**
+ * The modules loaded on demand, each once: `later('share')` is a promise of `./share.js`.
+ * Literal specifiers, so that tools and readers see every module the page can load.
+ */
+const LATER = {
+  share: () => import('./share.js'),
+  download: () => import('./download.js'),
+  sound: () => import('./sound.js'),
+  tour: () => import('./tour.js'),
+  embed: () => import('./embed.js'),
+};
+const loading = new Map();
+function later(name) {
+  if (!loading.has(name)) {
+    loading.set(name, LATER[name]().catch((err) => {
+      loading.delete(name); // the next use tries again
+      throw err;
+    }));
+  }
+  return loading.get(name);
+}
+
+/**
+ * At idle after the first plot: fetches every module a click may need (and the lecturer
+ * styles the share dialog uses), so that on a slow line no click waits on the network.
+ */
+function prefetchLater() {
+  const go = () => {
+    for (const name of Object.keys(LATER)) later(name).catch(() => {});
+    loadStyles();
+  };
+  if ('requestIdleCallback' in window) requestIdleCallback(go, { timeout: 2000 });
+  else setTimeout(go, 200);
+}
+
+/**
+ * Runs `use(module)` once `later(name)` has the module. A failed call in it is a wasm
+ * failure (reportFailure recovers); a module that could not be fetched is not: it is
+ * reported on the console and the next use fetches it again.
+ */
+function withModule(name, use) {
+  later(name).then((m) => {
+    try {
+      use(m);
+    } catch (err) {
+      reportFailure(err);
+    }
+  }, (err) => console.warn(`Zeta Lab: ${name}.js could not be loaded:`, err && err.message));
+}
+
+/** Saves a file through download.js (which stamps the view's state token into it). */
+function download(blob, name) {
+  withModule('download', (m) => m.download(blob, name));
+}
+
+/** Lays out the paper's tour (tour.js) once it is loaded, if the same demo is still open. */
+function showTour(tour) {
+  const view = app.view;
+  withModule('tour', (m) => {
+    if (app.view === view) m.renderTour(app.root, tour);
+  });
 }
 
 /** Reports an error from a wasm call without breaking the page; the next input recovers. */
@@ -297,7 +359,7 @@ function drawFrame() {
     }
     if (out.derived.length) syncUrl();
     applyConditions(app.view.spec, app.root);
-    if (out.tour) renderTour(app.root, out.tour);
+    if (out.tour) showTour(out.tour);
     describeSliders(out.readouts);
     highlightRow(app.view.table, out.readouts);
     fillLiveCells(app.view.table, out.readouts);
@@ -310,6 +372,7 @@ function drawFrame() {
       app.firstDrawn = true;
       performance.mark('zeta:first-draw');
       if (app.module === 'first') setTimeout(upgrade, 0); // after this frame is on screen
+      prefetchLater();
     }
     app.timeSpan = out.time_span;
     if (app.timeSpan) app.time = Math.min(Math.max(app.time, app.timeSpan[0]), app.timeSpan[1]);
@@ -519,10 +582,13 @@ function wireAnimation() {
   if (!anim) return;
   anim.play.addEventListener('click', () => setPlaying(!app.playing));
   anim.sound.addEventListener('click', () => {
-    const on = !app.sound.enabled && app.sound.start();
-    if (!on) app.sound.stop();
-    anim.sound.textContent = on ? t('soundOn') : t('soundOff');
-    anim.sound.setAttribute('aria-pressed', String(on));
+    withModule('sound', ({ createSonifier }) => {
+      if (!app.sound.start) app.sound = createSonifier();
+      const on = !app.sound.enabled && app.sound.start();
+      if (!on) app.sound.stop();
+      anim.sound.textContent = on ? t('soundOn') : t('soundOff');
+      anim.sound.setAttribute('aria-pressed', String(on));
+    });
   });
   anim.scrub.addEventListener('input', () => {
     if (!app.timeSpan) return;
@@ -874,21 +940,14 @@ function wireLanguageMenu() {
   });
 }
 
-function applyForcedTheme() {
-  const forced = new URLSearchParams(window.location.search).get('theme');
-  if (forced === 'dark' || forced === 'light') document.documentElement.dataset.theme = forced;
-  if (app.embed.embed) document.documentElement.dataset.embed = '1';
-}
-
 function wireShare() {
   const button = document.getElementById('share-button');
   if (!button) return;
   button.addEventListener('click', () => {
-    try {
+    loadStyles(); // the dialog's range table and presets
+    withModule('share', ({ openShareDialog }) => {
       openShareDialog({ demoId: app.demoId, values: app.session.values(), spec: app.view.spec });
-    } catch (err) {
-      reportFailure(err);
-    }
+    });
   });
 }
 
@@ -911,14 +970,22 @@ function onKey(ev) {
 }
 
 async function main() {
+  // state.js has expanded a state= token: web/preload.js decides again on the full address
+  // (theme, and which module starts), and records it on <html>.
+  document.dispatchEvent(new Event('zeta:address'));
   translatePage();
-  applyForcedTheme();
+  if (app.embed.embed) root.dataset.embed = '1';
   app.root = document.getElementById('demo');
   app.notices = document.getElementById('notices');
   const wanted = demoFromUrl();
-  // The first module serves the default demo on the main page; an embed (its host may
-  // open any demo at once) and every other demo start with the full module.
-  const first = (wanted === null || wanted === DEFAULT_DEMO) && !app.embed.embed;
+  // Inside a frame the host may talk at once: the host-page API loads beside the wasm. A
+  // `predict=` page needs the prediction form before its first demo opens.
+  const framed = app.embed.embed || window.parent !== window;
+  const hostModule = framed ? later('embed') : null;
+  const prediction = app.embed.predict ? loadPrediction() : null;
+  // The first module serves the default demo on the main page (web/preload.js decides; a
+  // dev page without it starts with the full module).
+  const first = root.dataset.startModule === 'first';
   try {
     if (first) {
       try {
@@ -958,6 +1025,7 @@ async function main() {
     app.root.append(p);
     return;
   }
+  if (prediction) await prediction.catch((err) => console.warn('Zeta Lab: predict.js:', err && err.message));
   const { problem } = await useLanguage(app.wasm, requestedLanguages());
   if (problem) notify(app.notices, t('catalogueFailed', problem), 'warn');
   buildLanguageMenu();
@@ -986,8 +1054,16 @@ async function main() {
   darkQuery.addEventListener('change', () => requestDraw());
   document.addEventListener('keydown', onKey);
   wireShare();
-  app.host = connectHost(app.embed, { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo: openFromHost, isDark });
-  document.documentElement.dataset.ready = 'true';
+  const handlers = { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo: openFromHost, isDark };
+  connectPage(handlers);
+  if (hostModule) {
+    try {
+      app.host = (await hostModule).connectHost(app.embed, handlers);
+    } catch (err) {
+      console.warn('Zeta Lab: the host-page API could not be loaded:', err && err.message);
+    }
+  }
+  root.dataset.ready = 'true';
   registerServiceWorker();
 }
 
