@@ -5,6 +5,7 @@
 // The full module's wasm is held back by a gate so each test chooses when it arrives.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { readFile } from 'node:fs/promises';
 import { open, canvasFingerprint, waitForReadout, waitForReadouts, waitForUrlParam } from './support/browser.mjs';
 import { assertStillWorks } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -148,4 +149,21 @@ test('the menu works after the switch, and other demos start with the full modul
   assert.equal(await moduleOf(other.page), 'full');
   assert.deepEqual(other.errors, []);
   await other.context.close();
+});
+
+test('an SVG export asked for on the first module (which has no SVG backend) waits for the full module', async () => {
+  const { page, errors, context, release } = await openGated('?demo=regimes&zeta=0.2');
+  assert.equal(await moduleOf(page), 'first');
+  const download = page.waitForEvent('download', { timeout: 15000 });
+  await page.click('[data-plot-wrap="response"] button[data-export="svg"]');
+  await page.waitForTimeout(300);
+  assert.equal(await moduleOf(page), 'first', 'still waiting for the full module');
+  release();
+  const dl = await download;
+  assert.match(dl.suggestedFilename(), /^zeta-regimes-response\.svg$/);
+  const text = await readFile(await dl.path(), 'utf8');
+  assert.match(text, /<svg[\s\S]*<\/svg>/);
+  assert.equal(await moduleOf(page), 'full');
+  assert.deepEqual(errors, []);
+  await context.close();
 });

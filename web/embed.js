@@ -50,6 +50,7 @@ export async function exportPlot(h, key, format) {
     return { mime: 'text/csv', bytes: glue().stampExport('csv', bytesOf(app.session.csv(key)), token) };
   }
   if (format === 'svg') {
+    if (h.useFullModule) await h.useFullModule(); // the first module has no SVG export
     const svg = app.session.svg(key, w, hgt, h.isDark(), document.createElement('canvas'));
     return { mime: 'image/svg+xml', bytes: glue().stampExport('svg', bytesOf(svg), token) };
   }

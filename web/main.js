@@ -720,8 +720,7 @@ function wireExports() {
         if (format === 'csv') {
           download(new Blob([app.session.csv(key)], { type: 'text/csv' }), `${name}.csv`);
         } else if (format === 'svg') {
-          const svg = app.session.svg(key, canvas.clientWidth, canvas.clientHeight, isDark(), document.createElement('canvas'));
-          download(new Blob([svg], { type: 'image/svg+xml' }), `${name}.svg`);
+          exportSvg(key, canvas, name);
         } else {
           const big = document.createElement('canvas');
           big.width = canvas.clientWidth * 2;
@@ -733,6 +732,22 @@ function wireExports() {
         reportFailure(err);
       }
     });
+  }
+}
+
+/** SVG export; the first module has no SVG backend, so the full one takes over first. */
+async function exportSvg(key, canvas, name) {
+  try {
+    await useFullModule();
+  } catch (err) {
+    console.warn('Zeta Lab: the full module could not be loaded for the SVG export:', err && err.message);
+    return; // a later click tries again
+  }
+  try {
+    const svg = app.session.svg(key, canvas.clientWidth, canvas.clientHeight, isDark(), document.createElement('canvas'));
+    download(new Blob([svg], { type: 'image/svg+xml' }), `${name}.svg`);
+  } catch (err) {
+    reportFailure(err);
   }
 }
 
@@ -865,6 +880,16 @@ async function upgrade() {
   }
   await betweenBursts();
   if (app.module === 'first') adopt(mod);
+}
+
+/** Resolves once the open demo runs on the full module (switching to it now if needed). */
+async function useFullModule() {
+  if (app.module !== 'first') return;
+  const mod = await loadFull();
+  if (app.module !== 'first') return;
+  adopt(mod);
+  // The new session has figures once the update adopt asked for has run (same frame).
+  await new Promise((resolve) => requestAnimationFrame(resolve));
 }
 
 /** Moves the open demo from the first module's instance to the full module's. */
@@ -1054,7 +1079,7 @@ async function main() {
   darkQuery.addEventListener('change', () => requestDraw());
   document.addEventListener('keydown', onKey);
   wireShare();
-  const handlers = { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo: openFromHost, isDark };
+  const handlers = { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo: openFromHost, isDark, useFullModule };
   connectPage(handlers);
   if (hostModule) {
     try {
