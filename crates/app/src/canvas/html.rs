@@ -107,6 +107,19 @@ impl HtmlCanvas {
         }
     }
 
+    /// Sets the fill colour (`fill`) or the stroke colour and width of `style`; `false`,
+    /// and nothing set, when it is fully transparent (nothing to draw).
+    fn paint(&mut self, style: &impl BackendStyle, fill: bool) -> bool {
+        if style.color().alpha == 0.0 {
+            return false;
+        }
+        match fill {
+            true => self.fill_style(style.color()),
+            false => self.stroke_style(style),
+        }
+        true
+    }
+
     fn fill_style(&mut self, color: BackendColor) {
         let ink = Ink::of(color);
         if self.set.fill != Some(ink) {
@@ -226,10 +239,9 @@ impl DrawingBackend for HtmlCanvas {
         to: BackendCoord,
         style: &S,
     ) -> Result<()> {
-        if style.color().alpha == 0.0 {
+        if !self.paint(style, false) {
             return Ok(());
         }
-        self.stroke_style(style);
         let (a, b) = crisp(from, to);
         self.context.begin_path();
         self.context.move_to(a.0, a.1);
@@ -245,7 +257,7 @@ impl DrawingBackend for HtmlCanvas {
         style: &S,
         fill: bool,
     ) -> Result<()> {
-        if style.color().alpha == 0.0 {
+        if !self.paint(style, fill) {
             return Ok(());
         }
         let (x, y) = (f64::from(upper_left.0), f64::from(upper_left.1));
@@ -253,12 +265,9 @@ impl DrawingBackend for HtmlCanvas {
             f64::from(bottom_right.0 - upper_left.0),
             f64::from(bottom_right.1 - upper_left.1),
         );
-        if fill {
-            self.fill_style(style.color());
-            self.context.fill_rect(x, y, w, h);
-        } else {
-            self.stroke_style(style);
-            self.context.stroke_rect(x, y, w, h);
+        match fill {
+            true => self.context.fill_rect(x, y, w, h),
+            false => self.context.stroke_rect(x, y, w, h),
         }
         Ok(())
     }
@@ -268,11 +277,7 @@ impl DrawingBackend for HtmlCanvas {
         path: I,
         style: &S,
     ) -> Result<()> {
-        if style.color().alpha == 0.0 {
-            return Ok(());
-        }
-        self.stroke_style(style);
-        if self.trace(path) {
+        if self.paint(style, false) && self.trace(path) {
             self.context.stroke();
         }
         Ok(())
@@ -283,11 +288,7 @@ impl DrawingBackend for HtmlCanvas {
         vert: I,
         style: &S,
     ) -> Result<()> {
-        if style.color().alpha == 0.0 {
-            return Ok(());
-        }
-        self.fill_style(style.color());
-        if self.trace(vert) {
+        if self.paint(style, true) && self.trace(vert) {
             self.context.close_path();
             self.context.fill();
         }
@@ -301,13 +302,8 @@ impl DrawingBackend for HtmlCanvas {
         style: &S,
         fill: bool,
     ) -> Result<()> {
-        if style.color().alpha == 0.0 {
+        if !self.paint(style, fill) {
             return Ok(());
-        }
-        if fill {
-            self.fill_style(style.color());
-        } else {
-            self.stroke_style(style);
         }
         self.context.begin_path();
         self.context

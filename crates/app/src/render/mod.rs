@@ -160,7 +160,7 @@ pub fn render_with<DB: DrawingBackend>(
 ) -> Result<PlotGeometry, RenderError> {
     root.fill(&theme.background).map_err(err)?;
     if fig.kind == FigureKind::Schematic {
-        let g = draw_schematic(root, fig, theme, scale, out)?;
+        let g = draw_schematic(root, fig, theme, scale)?;
         root.present().map_err(err)?;
         return Ok(g);
     }
@@ -186,7 +186,6 @@ fn draw_schematic<DB: DrawingBackend>(
     fig: &Figure,
     theme: &Theme,
     scale: f64,
-    out: Output<'_>,
 ) -> Result<PlotGeometry, RenderError> {
     let (w, h) = root.dim_in_pixel();
     let (w, h) = (f64::from(w.max(1)), f64::from(h.max(1)));
@@ -213,7 +212,8 @@ fn draw_schematic<DB: DrawingBackend>(
         },
         ..fig.clone()
     };
-    draw_lines_and_markers(&mut chart, &fitted, theme, scale, out.dash)?;
+    // Dashes as segments: a schematic has few, short ones.
+    draw_lines_and_markers(&mut chart, &fitted, theme, scale, None)?;
     Ok(PlotGeometry {
         area: (0.0, 0.0, w, h),
         x,
