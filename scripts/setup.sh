@@ -69,6 +69,7 @@ install_rust_tools() {
 
 install_node_deps() {
   if [ ! -d node_modules/playwright-core ] || [ ! -d node_modules/axe-core ] || [ ! -d node_modules/binaryen ] \
+     || [ ! -d node_modules/esbuild ] \
      || [ package-lock.json -nt node_modules/.package-lock.json ]; then
     log "npm ci"
     npm ci --no-audit --no-fund --loglevel=error

@@ -51,12 +51,41 @@ if [ "${TRUNK_PROFILE:-}" = "release" ]; then
     exit 1
   fi
 fi
+# Release builds: minify the page's JavaScript and CSS with esbuild from npm
+# (package-lock.json), file by file: no bundling, so each module keeps its imports and the
+# ones loaded on first use stay separate files. About 11 KB brotli less before the first
+# plot (docs/wasm-size.md). Before the hashes below, which are over the final files;
+# preload.js, which receives them, after.
+esbuild="$src/node_modules/.bin/esbuild"
+minify() {
+  for f in "$@"; do
+    "$esbuild" "$f" --minify --log-level=warning --allow-overwrite --outfile="$f"
+  done
+}
+if [ "${TRUNK_PROFILE:-}" = "release" ]; then
+  if [ ! -x "$esbuild" ]; then
+    echo "post-build: $esbuild is missing; run scripts/setup.sh" >&2
+    exit 1
+  fi
+  minify "$stage"/zeta-*.js "$stage"/web/*.css
+  for f in "$stage"/web/*.js; do
+    [ "$(basename "$f")" = preload.js ] || minify "$f"
+  done
+fi
 for f in zeta-app_bg.wasm zeta-app.js zeta-first_bg.wasm zeta-first.js; do
   [ -f "$stage/$f" ] || continue
   hash="sha384-$(openssl dgst -sha384 -binary "$stage/$f" | openssl base64 -A)"
   perl -pi -e "s#(href=\"\\./\Q$f\E\"[^>]*?integrity=\")[^\"]*#\${1}$hash#g" "$html"
   perl -pi -e "s#('\Q$f\E': ')__HASH__#\${1}$hash#" "$stage/web/preload.js"
 done
+
+if [ "${TRUNK_PROFILE:-}" = "release" ]; then
+  if grep -q "__HASH__" "$stage/web/preload.js"; then
+    echo "post-build: preload.js did not receive every integrity hash" >&2
+    exit 1
+  fi
+  minify "$stage/web/preload.js"
+fi
 
 # Version the service worker's cache by the build and list every file it must cache.
 build="$(cat "$stage"/zeta-*.wasm "$stage"/zeta-*.js "$stage"/web/* | openssl dgst -sha256 | awk '{print substr($NF, 1, 16)}')"
