@@ -161,9 +161,11 @@ impl Cache {
                 true => progressive::COARSE,
                 false => FULL,
             };
-            self.study = Some(compute_study(&sys, &lin, &resp, p, key, budget)?);
-            if progress.is_provisional() {
-                progress.job = StudyJob::start(sys, p, key);
+            // No study at all (no grids for these inputs) leaves nothing to refine either.
+            self.study = compute_study(&sys, &lin, &resp, p, key, budget);
+            match self.study.is_some() && progress.is_provisional() {
+                true => progress.job = StudyJob::start(sys, p, key),
+                false => progress.finished(),
             }
         }
         if self.regions.is_none() {
