@@ -4,7 +4,7 @@
 
 use super::axes::log_axis;
 use super::figures::{mark, ERROR_CLIP, LOOKS};
-use super::model::{EULER_BUDGET, FIT_CEILING, FIT_FLOOR, LEVELS, SPREAD, STUDY_BUDGET};
+use super::model::{FIT_CEILING, FIT_FLOOR, LEVELS, SPREAD};
 use super::{text, Results, P};
 use crate::figure::{Figure, LineStyle, Marker, MarkerShape, Series};
 use crate::format::{si, significant};
@@ -187,8 +187,8 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
         points = study.grids.intervals() + 1,
         levels = LEVELS,
         from = si(study.grids.step(0), "s", 3),
-        budget = STUDY_BUDGET,
-        euler_budget = EULER_BUDGET,
+        budget = study.budget.steps,
+        euler_budget = study.budget.euler,
         methods = text::join(&c.words),
         spread = significant(SPREAD, 1),
         ceiling = si(FIT_CEILING * 100.0, "%", 2)

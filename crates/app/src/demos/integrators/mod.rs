@@ -24,8 +24,11 @@
 //! - Symplectic Euler is not a scalar map `R(z)`: its stability comes from the spectral
 //!   radius of its 2×2 step matrix and is described in words, not drawn as a region.
 //!
+//! - On a page the study is progressive (`progressive.rs`): a coarse study at once, marked
+//!   provisional, and the full one in short slices; off (tests, snapshots) it runs in the step.
+//!
 //! `declaration.rs` declares the demo; `model.rs` is its step (solver calls only),
-//! `figures.rs`, `convergence.rs`, `work.rs` and `stability.rs` build the plots, `text.rs`
+//! `progressive.rs` runs the full study in slices on a page, `figures.rs`, `convergence.rs`, `work.rs` and `stability.rs` build the plots, `text.rs`
 //! holds the prose.
 
 mod axes;
@@ -33,10 +36,12 @@ mod convergence;
 mod declaration;
 mod figures;
 mod model;
+mod progressive;
 mod stability;
 mod text;
 mod work;
 
+use super::progressive::{progressive_hooks, Progressive};
 use super::Model;
 use crate::declare::Declaration;
 use crate::figure::Figure;
@@ -45,9 +50,12 @@ use zeta_solver::Complex;
 
 /// The integrators demo. Caches the convergence study (it depends on ζ, ωₙ, T and x₀
 /// only) and the parameter-free stability-region boundaries.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Default)]
 pub struct Integrators {
     cache: model::Cache,
+    /// The progressive study: a coarse one at once on a page, the full one left to
+    /// `refine` (see `progressive.rs`).
+    progress: Progressive<progressive::StudyJob>,
 }
 
 impl Integrators {
@@ -81,15 +89,23 @@ impl Model for Integrators {
     type Results = Results;
 
     fn step(&mut self, p: &P) -> Option<Results> {
-        self.cache.step(p)
+        self.cache.step(p, &mut self.progress)
     }
 
+    progressive_hooks!(progressive::PROVISIONAL, refine_study);
+
     fn figures(&self, p: &P, r: &Results) -> Vec<Figure> {
+        let studied = [convergence::figure(p, r), work::figure(p, r)];
+        let studied = studied.map(|f| match r.provisional {
+            true => text::provisional(f, &r.study.budget),
+            false => f,
+        });
+        let [convergence, work] = studied;
         vec![
             figures::response(p, r),
             figures::error(p, r),
-            convergence::figure(p, r),
-            work::figure(p, r),
+            convergence,
+            work,
             stability::figure(p, r, self.cache.regions()),
         ]
     }

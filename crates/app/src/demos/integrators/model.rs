@@ -1,7 +1,10 @@
 //! The integrators demo's model step: solver calls only. Runs each fixed-step method at
-//! `h`, DP45 at `tol`, the (cached) convergence study and the stability analysis.
+//! `h`, DP45 at `tol`, the (cached) convergence study and the stability analysis. On a page
+//! the study is progressive (`progressive.rs`): a coarse one at once, the full one in slices.
 
+use super::progressive::{self, StudyJob};
 use super::P;
+use crate::demos::progressive::Progressive;
 use zeta_solver::integrate::analysis::{error_norms, FitWindow, StepLimit};
 use zeta_solver::integrate::convergence::{nested_study, NestedGrids, NestedStudy};
 use zeta_solver::integrate::stability::{region_boundary, Stability, REGION_RAYS};
@@ -44,11 +47,35 @@ pub(super) const FIT_FLOOR: f64 = 1e-10;
 /// the smaller ones are asymptotic is decided by their local orders ([`SPREAD`]).
 pub(super) const FIT_CEILING: f64 = 0.5;
 
+/// How much work a convergence study may spend: the full study's [`FULL`], or the coarse
+/// stand-in shown at once on a page while the full one runs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Budget {
+    /// Steps each fixed-step method but forward Euler may spend on the whole study.
+    pub(super) steps: usize,
+    /// Forward Euler's step budget.
+    pub(super) euler: usize,
+    /// Tolerances of the DP45 sweep, loosest first.
+    pub(super) tols: &'static [f64],
+}
+
+/// The full study's budget.
+pub(super) const FULL: Budget = Budget {
+    steps: STUDY_BUDGET,
+    euler: EULER_BUDGET,
+    tols: &DP45_TOLS,
+};
+
+/// `(ζ, ωₙ, T, x₀)`: everything the convergence study depends on.
+pub(super) type StudyKey = [f64; 4];
+
 /// The cached convergence studies.
 #[derive(Debug, Clone)]
 pub(super) struct Study {
     /// `(ζ, ωₙ, T, x₀)` it was computed for.
-    key: [f64; 4],
+    pub(super) key: StudyKey,
+    /// The budget it was computed with.
+    pub(super) budget: Budget,
     /// The nested grids of the fixed-step studies.
     pub(super) grids: NestedGrids,
     /// One study per fixed-step method, in [`FIXED`] order.
@@ -93,12 +120,14 @@ pub struct Results {
     pub(super) dp45: Result<Dopri5Solution<2>, IntegrationError>,
     pub(super) dp45_err: Option<f64>,
     pub(super) study: Study,
+    /// Whether `study` is the coarse stand-in while the full study runs.
+    pub(super) provisional: bool,
 }
 
 /// What the demo keeps between steps.
 #[derive(Debug, Clone, Default)]
 pub(super) struct Cache {
-    study: Option<Study>,
+    pub(super) study: Option<Study>,
     regions: Option<[Vec<(f64, f64)>; 3]>,
 }
 
@@ -108,7 +137,9 @@ impl Cache {
         self.regions.as_ref().map_or(&[], |r| r.as_slice())
     }
 
-    pub fn step(&mut self, p: &P) -> Option<Results> {
+    /// One step for `p`; `progress` decides whether a new study is the full one or a
+    /// coarse one now with the full one left to `refine`.
+    pub fn step(&mut self, p: &P, progress: &mut Progressive<StudyJob>) -> Option<Results> {
         let sys = SecondOrder::from_natural(p.wn, p.zeta).ok()?;
         if !(p.x0.is_finite() && p.x0 > 0.0 && p.t_end.is_finite() && p.t_end > 0.0 && p.tol > 0.0)
         {
@@ -123,7 +154,19 @@ impl Cache {
         let resp = FreeResponse::new(sys, p.x0, 0.0);
         let lin = Linear2::free(sys);
         if self.study.as_ref().map(|st| st.key) != Some(key) {
-            self.study = Some(compute_study(&sys, &lin, &resp, p, key)?);
+            // Inputs moved on: a full study under way for other inputs is dropped unseen.
+            progress.job = None;
+            progress.size_now(FULL.steps, progressive::COARSE.steps);
+            let budget = match progress.is_provisional() {
+                true => progressive::COARSE,
+                false => FULL,
+            };
+            // No study at all (no grids for these inputs) leaves nothing to refine either.
+            self.study = compute_study(&sys, &lin, &resp, p, key, budget);
+            match self.study.is_some() && progress.is_provisional() {
+                true => progress.job = StudyJob::start(sys, p, key),
+                false => progress.finished(),
+            }
         }
         if self.regions.is_none() {
             let outline =
@@ -135,7 +178,7 @@ impl Cache {
             ]);
         }
         let study = self.study.clone()?;
-        run_current(sys, resp, &lin, p, study)
+        run_current(sys, resp, &lin, p, study, progress.is_provisional())
     }
 }
 
@@ -168,15 +211,11 @@ pub(super) fn fit_window(x0: f64) -> FitWindow {
     }
 }
 
-fn compute_study(
-    sys: &SecondOrder,
-    lin: &Linear2<fn(f64) -> f64>,
-    resp: &FreeResponse,
-    p: &P,
-    key: [f64; 4],
-) -> Option<Study> {
+/// The nested grids of the full study for `p` on `sys` (the coarse study uses the same
+/// grids with a smaller budget, so its step sizes are the full study's coarsest ones).
+pub(super) fn study_grids(sys: &SecondOrder, p: &P) -> Option<NestedGrids> {
     let rho = sys.poles().iter().map(|q| q.abs()).fold(0.0f64, f64::max);
-    let grids = NestedGrids::for_rate(
+    NestedGrids::for_rate(
         p.t_end,
         rho,
         COARSEST_H_LAMBDA,
@@ -184,36 +223,68 @@ fn compute_study(
         LEVELS,
         STUDY_BUDGET,
     )
-    .ok()?;
-    let window = fit_window(p.x0);
-    let y0 = [p.x0, 0.0];
+    .ok()
+}
+
+/// The convergence study of fixed-step method `FIXED[k]` on `grids` within `budget`.
+pub(super) fn fixed_study(
+    k: usize,
+    lin: &Linear2<fn(f64) -> f64>,
+    resp: &FreeResponse,
+    p: &P,
+    grids: NestedGrids,
+    budget: Budget,
+) -> Option<NestedStudy> {
+    let m = FIXED.get(k)?;
+    let grids = match m {
+        Method::Euler => grids.with_budget(budget.euler),
+        _ => grids.with_budget(budget.steps),
+    };
     let exact = |t: f64| resp.displacement(t);
-    let fixed = FIXED
-        .iter()
-        .map(|m| {
-            let grids = match m {
-                Method::Euler => grids.with_budget(EULER_BUDGET),
-                _ => grids,
-            };
-            let mut out = nested_study(m, lin, y0, 0, exact, &grids, window);
-            out.study.restrict_to_asymptotic(SPREAD);
-            out
-        })
-        .collect();
-    let dp45 = dopri5_sweep(
+    let mut out = nested_study(m, lin, [p.x0, 0.0], 0, exact, &grids, fit_window(p.x0));
+    out.study.restrict_to_asymptotic(SPREAD);
+    Some(out)
+}
+
+/// DP45 over the tolerances `tols`: error against f-evaluations.
+pub(super) fn dp45_study(
+    sys: &SecondOrder,
+    lin: &Linear2<fn(f64) -> f64>,
+    resp: &FreeResponse,
+    p: &P,
+    tols: &[f64],
+) -> Option<WorkPrecision> {
+    Some(dopri5_sweep(
         lin,
-        y0,
+        [p.x0, 0.0],
         p.t_end,
-        &DP45_TOLS,
+        tols,
         |tol| dp45_config(tol, p.x0),
         |sol| dp45_error(resp, sol),
         Dopri5::new(Dopri5Config::default()).ok()?.stable_steps(sys),
-        window,
+        fit_window(p.x0),
         SPREAD,
-    );
+    ))
+}
+
+/// The whole convergence study of `key` within `budget`, at once.
+fn compute_study(
+    sys: &SecondOrder,
+    lin: &Linear2<fn(f64) -> f64>,
+    resp: &FreeResponse,
+    p: &P,
+    key: StudyKey,
+    budget: Budget,
+) -> Option<Study> {
+    let grids = study_grids(sys, p)?;
+    let fixed = (0..FIXED.len())
+        .map(|k| fixed_study(k, lin, resp, p, grids, budget))
+        .collect::<Option<Vec<_>>>()?;
+    let dp45 = dp45_study(sys, lin, resp, p, budget.tols)?;
     Some(Study {
         key,
-        grids,
+        budget,
+        grids: grids.with_budget(budget.steps),
         fixed,
         dp45,
     })
@@ -225,6 +296,7 @@ fn run_current(
     lin: &Linear2<fn(f64) -> f64>,
     p: &P,
     study: Study,
+    provisional: bool,
 ) -> Option<Results> {
     // h ≥ 1e−3 s and T ≤ 60 s keep this within 60 000 steps.
     let grid = ExactStepGrid::new(0.0, p.t_end, p.h).ok()?;
@@ -283,5 +355,6 @@ fn run_current(
         dp45,
         dp45_err,
         study,
+        provisional,
     })
 }

@@ -2,6 +2,7 @@
 //! snapshot tests (`crates/app/tests/snapshots.rs`).
 
 use super::Integrators;
+use crate::demos::progressive::shown;
 use crate::demos::testing::{number, value, Tested};
 
 #[test]
@@ -93,4 +94,87 @@ fn an_overflowing_run_says_so_without_a_number() {
     assert_eq!(value(&f, "max_err_rk4"), "");
     let text = crate::demos::testing::text(&f, "max_err_rk4");
     assert!(text.starts_with("overflow at t = "), "{text}");
+}
+
+#[test]
+fn progressive_updates_show_a_coarse_study_marked_then_exactly_the_full_one() {
+    let spec = crate::demos::create("integrators").unwrap().spec();
+    let params = |q| crate::params::resolve_query(&spec, q).0;
+    let mut reference = crate::demos::create("integrators").unwrap();
+    let want = reference.update(&params("zeta=0.1"));
+    let mut demo = crate::demos::create("integrators").unwrap();
+    demo.set_progressive(true);
+    demo.update(&params("zeta=0.3"));
+    // Part of the full study for ζ = 0.3, then ζ moves on: that study is never shown.
+    assert!(matches!(demo.refine(0.0), Some(f) if f < 1.0));
+    let coarse = demo.update(&params("zeta=0.1"));
+    for key in [
+        "order_euler",
+        "order_rk4",
+        "order_dp45",
+        "convergence",
+        "work",
+    ] {
+        assert!(demo.provisional().contains(&key), "{key} marked");
+    }
+    // What does not come from the study is final at once.
+    for key in ["max_err_rk4", "h_used", "stable_euler"] {
+        assert!(!demo.provisional().contains(&key), "{key} not marked");
+        assert_eq!(value(&coarse, key), value(&want, key), "{key}");
+    }
+    assert!(!demo.provisional().contains(&"response") && !demo.provisional().contains(&"error"));
+    assert_eq!(
+        format!("{:?}", &coarse.figures[..2]),
+        format!("{:?}", &want.figures[..2])
+    );
+    for (fig, final_fig) in coarse.figures[2..4].iter().zip(&want.figures[2..4]) {
+        assert!(
+            fig.description.starts_with(
+                "Provisional: from a coarse study (at most 3000 steps per method, 6000 for \
+                 forward Euler; DP45 down to 1e-6) while the full one (24000 and 48000 steps; \
+                 DP45 down to 1e-10) runs."
+            ),
+            "{}",
+            fig.description
+        );
+        assert_eq!(fig.title, final_fig.title);
+    }
+    // The coarse study has fewer step sizes, but still about the textbook orders.
+    let (o, full) = (number(&coarse, "order_rk4"), number(&want, "order_rk4"));
+    assert!((o - 4.0).abs() < 0.3 && o != full, "{o} vs {full}");
+    let mut slices = 0;
+    while demo.refine(0.0) != Some(1.0) {
+        slices += 1;
+        assert!(slices < 5, "one method per slice at least");
+    }
+    assert!(demo.provisional().is_empty() && demo.refine(5.0).is_none());
+    let full = demo.update(&params("zeta=0.1"));
+    // Debug text: the figures may hold NaN gaps, which `==` never equates.
+    assert!(format!("{:?}", shown(&full)) == format!("{:?}", shown(&want)));
+}
+
+#[test]
+fn progressive_updates_keep_h_tol_and_toggles_immediate() {
+    let spec = crate::demos::create("integrators").unwrap().spec();
+    let params = |q| crate::params::resolve_query(&spec, q).0;
+    let mut reference = crate::demos::create("integrators").unwrap();
+    let mut demo = crate::demos::create("integrators").unwrap();
+    demo.set_progressive(true);
+    demo.update(&params(""));
+    while demo.refine(5.0).is_some_and(|f| f < 1.0) {}
+    assert!(demo.provisional().is_empty());
+    // Moving h, tol or a toggle reuses the study: nothing to refine, and the same frame as
+    // the step without progressive studies.
+    for q in ["h=0.05", "h=0.05&tol=1e-8", "h=0.05&tol=1e-8&rk4=0"] {
+        let got = demo.update(&params(q));
+        assert!(
+            demo.provisional().is_empty() && demo.refine(5.0).is_none(),
+            "{q}"
+        );
+        let want = reference.update(&params(q));
+        assert!(
+            format!("{:?}", shown(&got)) == format!("{:?}", shown(&want)),
+            "{q}"
+        );
+    }
 }

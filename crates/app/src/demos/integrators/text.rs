@@ -1,7 +1,7 @@
 //! The integrators demo's prose: summary, equation, the table of methods and the figures'
 //! text alternatives.
 
-use super::model::Run;
+use super::model::{Budget, Run, FULL};
 use super::{Results, P};
 use crate::format::{si, significant};
 use crate::spec::Table;
@@ -261,4 +261,25 @@ pub(super) fn describe_error(r: &Results, parts: &[String], clipped: bool, clip:
             methods = join(parts)
         )
     }
+}
+
+/// A figure drawn from the coarse study (`coarse`) while the full one runs, marked as
+/// provisional in its description (its title is left as it is: it already fills a phone's
+/// width).
+pub(super) fn provisional(
+    mut fig: crate::figure::Figure,
+    coarse: &Budget,
+) -> crate::figure::Figure {
+    let last = |b: &Budget| b.tols.last().map_or_else(String::new, |&t| sci(t));
+    fig.description = t!(
+        "integrators-provisional",
+        budget = coarse.steps,
+        euler_budget = coarse.euler,
+        tol = last(coarse),
+        full_budget = FULL.steps,
+        full_euler_budget = FULL.euler,
+        full_tol = last(&FULL),
+        description = std::mem::take(&mut fig.description)
+    );
+    fig
 }

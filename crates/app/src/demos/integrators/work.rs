@@ -3,7 +3,7 @@
 
 use super::axes::log_axis;
 use super::figures::{mark, DP45_MARK, DP45_STYLE, ERROR_CLIP, LOOKS};
-use super::model::{DP45_TOLS, FIT_FLOOR};
+use super::model::FIT_FLOOR;
 use super::text::sci;
 use super::{text, Results, P};
 use crate::figure::{finite_extent, Figure, LineStyle, Marker, Series};
@@ -80,6 +80,7 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
         series.push(Series::new(label, pts, DP45_STYLE));
     }
     let floor = FIT_FLOOR * p.x0 * 1e-3;
+    let tols = r.study.budget.tols;
     let (xlo, xhi) = finite_extent(drawn.iter().map(|q| q.0)).unwrap_or((10.0, 1e5));
     let (ylo, yhi) = finite_extent(drawn.iter().map(|q| q.1)).unwrap_or((floor, p.x0));
     Figure {
@@ -101,8 +102,8 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
     }
     .described(t!(
         "integrators-describe-work",
-        from = sci(DP45_TOLS[0]),
-        to = sci(DP45_TOLS[DP45_TOLS.len() - 1]),
+        from = tols.first().map_or_else(String::new, |&t| sci(t)),
+        to = tols.last().map_or_else(String::new, |&t| sci(t)),
         methods = text::join(&words)
     ))
 }

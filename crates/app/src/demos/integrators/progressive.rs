@@ -1,0 +1,131 @@
+//! Progressive convergence study (issue 13): on a page, a moved ζ, ωₙ, T or x₀ gets a
+//! coarse study at once ([`COARSE`]: the same nested grids with an eighth of the step
+//! budgets, so the finest three step sizes are left out, and DP45 down to 10⁻⁶ only) and the
+//! full study one method per slice in later short tasks ([`Integrators::refine_study`]):
+//! the four fixed-step methods, then the DP45 tolerance sweep. The full study replaces the
+//! coarse one only if it was computed for the inputs still current. Off (native tests,
+//! snapshots) the full study runs in the step, as before. The flags and the job live in the
+//! state every progressive demo shares, `demos/progressive.rs`.
+
+use super::model::{
+    dp45_study, fixed_study, study_grids, Budget, Study, StudyKey, EULER_BUDGET, FIXED, FULL,
+    STUDY_BUDGET,
+};
+use super::{Integrators, P};
+use crate::demos::design::Stopwatch;
+use zeta_solver::integrate::convergence::{NestedGrids, NestedStudy};
+use zeta_solver::integrate::work_precision::WorkPrecision;
+use zeta_solver::integrate::Linear2;
+use zeta_solver::{FreeResponse, SecondOrder};
+
+/// DP45 tolerances of the coarse study: the full sweep's, down to 10⁻⁶.
+const COARSE_TOLS: [f64; 5] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6];
+
+/// The coarse study shown at once while the full one runs.
+pub(super) const COARSE: Budget = Budget {
+    steps: STUDY_BUDGET / 8,
+    euler: EULER_BUDGET / 8,
+    tols: &COARSE_TOLS,
+};
+
+/// Readouts and plots drawn from the coarse study while the full one runs.
+pub(super) const PROVISIONAL: [&str; 7] = [
+    "order_euler",
+    "order_symplectic_euler",
+    "order_heun",
+    "order_rk4",
+    "order_dp45",
+    "convergence",
+    "work",
+];
+
+/// Slices of the full study: one per fixed-step method, then the DP45 sweep.
+const SLICES: usize = FIXED.len() + 1;
+
+/// A full study under way: its inputs, the fixed-step studies so far and the next slice.
+#[derive(Debug)]
+pub(super) struct StudyJob {
+    key: StudyKey,
+    sys: SecondOrder,
+    p: P,
+    grids: NestedGrids,
+    fixed: Vec<NestedStudy>,
+    dp45: Option<WorkPrecision>,
+    next: usize,
+}
+
+impl StudyJob {
+    /// The full study of `key` (for `sys` and `p`), nothing computed yet.
+    pub(super) fn start(sys: SecondOrder, p: &P, key: StudyKey) -> Option<Self> {
+        Some(Self {
+            key,
+            sys,
+            p: *p,
+            grids: study_grids(&sys, p)?,
+            fixed: Vec::with_capacity(FIXED.len()),
+            dp45: None,
+            next: 0,
+        })
+    }
+
+    fn finished(&self) -> bool {
+        self.next >= SLICES
+    }
+
+    /// Computes the next slice: one fixed-step method's study, or the DP45 sweep.
+    fn advance(&mut self) {
+        let (sys, p) = (&self.sys, &self.p);
+        let resp = FreeResponse::new(*sys, p.x0, 0.0);
+        let lin = Linear2::free(*sys);
+        if self.next < FIXED.len() {
+            if let Some(s) = fixed_study(self.next, &lin, &resp, p, self.grids, FULL) {
+                self.fixed.push(s);
+            }
+        } else {
+            self.dp45 = dp45_study(sys, &lin, &resp, p, FULL.tols);
+        }
+        self.next += 1;
+    }
+
+    /// The finished full study, exactly as the step computes it when not progressive.
+    fn into_study(self) -> Option<Study> {
+        if self.fixed.len() != FIXED.len() {
+            return None;
+        }
+        Some(Study {
+            key: self.key,
+            budget: FULL,
+            grids: self.grids.with_budget(FULL.steps),
+            fixed: self.fixed,
+            dp45: self.dp45?,
+        })
+    }
+}
+
+impl Integrators {
+    /// Continues the pending full study for about `budget_ms` (at least one slice). Returns
+    /// the fraction done, or `None` when no study is pending; at 1 the full study has
+    /// replaced the coarse one.
+    pub(super) fn refine_study(&mut self, budget_ms: f64) -> Option<f64> {
+        let job = self.progress.job.as_mut()?;
+        let watch = Stopwatch::start();
+        while !job.finished() {
+            job.advance();
+            if watch.elapsed_ms() >= budget_ms {
+                break;
+            }
+        }
+        if !job.finished() {
+            return Some(job.next as f64 / SLICES as f64);
+        }
+        let study = self.progress.job.take()?.into_study()?;
+        // Shown only if computed for the inputs still current (a step with other inputs
+        // drops the job), never as the answer to other inputs.
+        if self.cache.study.as_ref().map(|s| s.key) != Some(study.key) {
+            return None;
+        }
+        self.cache.study = Some(study);
+        self.progress.finished();
+        Some(1.0)
+    }
+}
