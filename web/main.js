@@ -260,8 +260,9 @@ function drawStale(all) {
   }
 }
 
-/** Once the controls have rested for REST_MS, everything out of view catches up. */
-function scheduleCatchUp() {
+/** Once the controls have rested for REST_MS, everything out of view catches up: one plot
+ * a frame, so no task grows long. */
+function scheduleCatchUp(delay = REST_MS) {
   clearTimeout(app.catchUp);
   if (!app.staleLeft && !app.schematicStale) return;
   app.catchUp = setTimeout(() => {
@@ -270,8 +271,11 @@ function scheduleCatchUp() {
       scheduleCatchUp();
       return;
     }
-    requestAnimationFrame(() => drawStale(true));
-  }, REST_MS);
+    requestAnimationFrame(() => {
+      drawStale(true);
+      scheduleCatchUp(0);
+    });
+  }, delay);
 }
 
 function fit(canvas, key, dpr) {

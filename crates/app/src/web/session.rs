@@ -181,15 +181,17 @@ impl Session {
     }
 
     /// Draws the plots that show an older frame than the last update's, from that update's
-    /// figures (nothing is recomputed): those on screen, or with `all` every one (the page
-    /// does that once the controls rest). Returns whether any plot is still stale.
+    /// figures (nothing is recomputed): those on screen, or with `all` the first one of any
+    /// (the page calls that once per task while the controls rest, so no task grows long).
+    /// Returns whether any plot is still stale.
     #[wasm_bindgen(js_name = drawStale)]
     pub fn draw_stale(&mut self, scale: f64, dark: bool, all: bool) -> Result<bool, JsError> {
         let Some(frame) = &self.frame else {
             return Ok(false);
         };
-        let wanted: Vec<bool> = (self.stale.iter().zip(&self.visible))
-            .map(|(stale, on)| *stale && (all || *on))
+        let next = self.stale.iter().position(|s| *s);
+        let wanted: Vec<bool> = (self.stale.iter().zip(&self.visible).enumerate())
+            .map(|(i, (stale, on))| *stale && if all { Some(i) == next } else { *on })
             .collect();
         draw_plots(
             frame,
