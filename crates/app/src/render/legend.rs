@@ -1,7 +1,7 @@
 //! The legend: measured through the backend, placed over no data or in rows below.
 
 use super::chart::Chart;
-use super::lines::segments;
+use super::lines::{label_offset, segments};
 use super::{err, px, RenderError};
 use crate::figure::{Dash, Figure, LineStyle};
 use crate::theme::Theme;
@@ -96,12 +96,12 @@ pub(super) fn free_corner<DB: DrawingBackend>(
         let (x, y) = to_area(mk.at);
         let _ = mark(x, y);
         if !mk.label.is_empty() {
-            // The label runs right of the point, above it (see draw_lines_and_markers).
+            // Where draw_lines_and_markers puts the label (its width estimated here).
             let w = (mk.label.chars().count() as f64 * 7.0 * scale) as i32;
-            let (dx, dy) = (px(8.0, scale) as i32, px(16.0, scale) as i32);
+            let (dx, dy) = label_offset(x + xs.start, w, xs.end, scale);
             for i in 0..=4 {
-                let _ = mark(x + dx + w * i / 4, y - dy);
-                let _ = mark(x + dx + w * i / 4, y - dy / 2);
+                let _ = mark(x + dx + w * i / 4, y + dy);
+                let _ = mark(x + dx + w * i / 4, y + dy / 2);
             }
         }
     }

@@ -41,6 +41,18 @@ pub(super) fn segments(s: &Series, fig: &Figure) -> (Vec<Vec<(f64, f64)>>, bool)
     (out, clipped)
 }
 
+/// Where a marker's label of `width` px goes, relative to its point at backend pixel `x`:
+/// right of the point and above it, or left of it when it would run past `right`, the
+/// plotting area's right edge (px).
+pub(super) fn label_offset(x: i32, width: i32, right: i32, scale: f64) -> (i32, i32) {
+    let gap = px(8.0, scale) as i32;
+    let dx = match x + gap + width > right {
+        true => -gap - width,
+        false => gap,
+    };
+    (dx, -(px(16.0, scale) as i32))
+}
+
 /// Draws the series and markers of `fig`; returns the legend entries. With `dash`, the
 /// backend dashes each series as one path (see [`super::Output::dash`]).
 pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
@@ -127,10 +139,16 @@ pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
             }
         }
         if !m.label.is_empty() {
-            let off = (px(8.0, scale) as i32, -(px(16.0, scale) as i32));
+            let style = font(12.0);
+            let area = chart.plotting_area();
+            let right = area.get_pixel_range().0.end;
+            let width = area
+                .estimate_text_size(&m.label, &style)
+                .map_or(0, |(w, _)| w as i32);
+            let off = label_offset(chart.backend_coord(&(x, y)).0, width, right, scale);
             chart
                 .draw_series(std::iter::once(
-                    EmptyElement::at((x, y)) + Text::new(m.label.clone(), off, font(12.0)),
+                    EmptyElement::at((x, y)) + Text::new(m.label.clone(), off, style),
                 ))
                 .map_err(err)?;
         }

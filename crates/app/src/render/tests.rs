@@ -379,3 +379,14 @@ fn titles_and_axis_names_longer_than_their_room_shrink_then_cut() {
     let svg = draw(&fig, 360);
     assert!(svg.matches('…').count() >= 2, "title and y name cut: {svg}");
 }
+
+#[test]
+fn a_marker_label_near_the_right_edge_goes_left_of_its_point() {
+    use super::lines::label_offset;
+    // 100 px of label right of a point at x = 500 fits before an edge at 640 …
+    assert_eq!(label_offset(500, 100, 640, 1.0), (8, -16));
+    // … but not before one at 560: it goes left, ending a gap before the point.
+    assert_eq!(label_offset(500, 100, 560, 1.0), (-108, -16));
+    // The gap and the rise scale with the device pixel ratio.
+    assert_eq!(label_offset(100, 10, 640, 2.0), (16, -32));
+}
