@@ -103,12 +103,14 @@ function later(name) {
 
 /**
  * At idle after the first plot: fetches every module a click may need (and the lecturer
- * styles the share dialog uses), so that on a slow line no click waits on the network.
+ * styles the share dialog uses), so that on a slow line no click waits on the network, and
+ * registers the service worker (its install downloads every file of the site).
  */
 function prefetchLater() {
   const go = () => {
     for (const name of Object.keys(LATER)) later(name).catch(() => {});
     loadStyles();
+    registerServiceWorker();
   };
   if ('requestIdleCallback' in window) requestIdleCallback(go, { timeout: 2000 });
   else setTimeout(go, 200);
@@ -375,8 +377,11 @@ function drawFrame() {
     if (!app.firstDrawn) {
       app.firstDrawn = true;
       performance.mark('zeta:first-draw');
-      if (app.module === 'first') setTimeout(upgrade, 0); // after this frame is on screen
-      prefetchLater();
+      // After this frame is on screen: the full module (if the first one drew), then at
+      // idle what a click may need and the offline cache, so that on a slow line none of
+      // them takes bandwidth from another.
+      const started = app.module === 'first' ? new Promise((done) => setTimeout(() => upgrade().finally(done), 0)) : Promise.resolve();
+      started.then(prefetchLater);
     }
     app.timeSpan = out.time_span;
     if (app.timeSpan) app.time = Math.min(Math.max(app.time, app.timeSpan[0]), app.timeSpan[1]);
@@ -1093,7 +1098,6 @@ async function main() {
     }
   }
   root.dataset.ready = 'true';
-  registerServiceWorker();
 }
 
 /** Offline use after the first visit (not for file:// pages, where it cannot work). */
