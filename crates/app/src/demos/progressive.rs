@@ -93,3 +93,31 @@ pub(super) fn shown(f: &super::Frame) -> (Vec<(&str, &str)>, &[crate::figure::Fi
     let readouts = readouts.map(|r| (r.key, r.data_value.as_str())).collect();
     (readouts, &f.figures)
 }
+
+/// For tests, the page's sequence with a progressive demo: what the full study shows for
+/// the query `then` (`want`, progressive off), and a progressive instance (`demo`) that
+/// started the study for `first`, got part of the way and then moved to `then`, with the
+/// frame it showed for `then` (`coarse`). The overtaken study must never be shown.
+#[cfg(test)]
+pub(super) struct Overtaken {
+    pub(super) want: super::Frame,
+    pub(super) demo: Box<dyn super::Demo>,
+    pub(super) coarse: super::Frame,
+}
+
+/// See [`Overtaken`]; demo `id`, queries `first` then `then` (e.g. `"zeta=0.3"`).
+#[cfg(test)]
+pub(super) fn overtaken(id: &str, first: &str, then: &str) -> Overtaken {
+    let create = || super::create(id).expect("registered demo");
+    let params = |q| super::testing::params(id, q);
+    let want = create().update(&params(then));
+    let mut demo = create();
+    demo.set_progressive(true);
+    demo.update(&params(first));
+    assert!(
+        matches!(demo.refine(0.0), Some(f) if f < 1.0),
+        "{id}: the study for {first} is under way"
+    );
+    let coarse = demo.update(&params(then));
+    Overtaken { want, demo, coarse }
+}

@@ -57,14 +57,21 @@ impl Live {
 /// Demo `id` updated once for `query`, as [`run`] does, with its schematic to draw.
 pub fn live(id: &str, query: &str) -> Live {
     let mut demo = create(id).unwrap_or_else(|| panic!("no demo {id}"));
-    let (params, notices) = resolve_query(&demo.spec(), query);
-    assert!(notices.is_empty(), "{id}?{query}: {notices:?}");
+    let params = params(id, query);
     let frame = demo.update(&params);
     Live {
         frame,
         demo,
         params,
     }
+}
+
+/// The parameter values of `query` for demo `id` (every value in range and well formed).
+pub fn params(id: &str, query: &str) -> Params {
+    let demo = create(id).unwrap_or_else(|| panic!("no demo {id}"));
+    let (params, notices) = resolve_query(&demo.spec(), query);
+    assert!(notices.is_empty(), "{id}?{query}: {notices:?}");
+    params
 }
 
 /// Demo `id` at its preset `label`: the query that preset writes (its values on top of

@@ -151,8 +151,7 @@ impl Cache {
             p.t_end,
             p.x0,
         ];
-        let resp = FreeResponse::new(sys, p.x0, 0.0);
-        let lin = Linear2::free(sys);
+        let problem = Problem::new(sys, p);
         if self.study.as_ref().map(|st| st.key) != Some(key) {
             // Inputs moved on: a full study under way for other inputs is dropped unseen.
             progress.job = None;
@@ -162,7 +161,7 @@ impl Cache {
                 false => FULL,
             };
             // No study at all (no grids for these inputs) leaves nothing to refine either.
-            self.study = compute_study(&sys, &lin, &resp, p, key, budget);
+            self.study = compute_study(&problem, key, budget);
             match self.study.is_some() && progress.is_provisional() {
                 true => progress.job = StudyJob::start(sys, p, key),
                 false => progress.finished(),
@@ -178,7 +177,14 @@ impl Cache {
             ]);
         }
         let study = self.study.clone()?;
-        run_current(sys, resp, &lin, p, study, progress.is_provisional())
+        run_current(
+            sys,
+            problem.resp,
+            &problem.lin,
+            p,
+            study,
+            progress.is_provisional(),
+        )
     }
 }
 
@@ -226,15 +232,34 @@ pub(super) fn study_grids(sys: &SecondOrder, p: &P) -> Option<NestedGrids> {
     .ok()
 }
 
+/// What the convergence studies are of: the oscillator of `p`, as a system, as the linear
+/// right-hand side the integrators step, and as its exact free response.
+pub(super) struct Problem<'p> {
+    sys: SecondOrder,
+    lin: Linear2<fn(f64) -> f64>,
+    resp: FreeResponse,
+    p: &'p P,
+}
+
+impl<'p> Problem<'p> {
+    pub(super) fn new(sys: SecondOrder, p: &'p P) -> Self {
+        Self {
+            sys,
+            lin: Linear2::free(sys),
+            resp: FreeResponse::new(sys, p.x0, 0.0),
+            p,
+        }
+    }
+}
+
 /// The convergence study of fixed-step method `FIXED[k]` on `grids` within `budget`.
 pub(super) fn fixed_study(
     k: usize,
-    lin: &Linear2<fn(f64) -> f64>,
-    resp: &FreeResponse,
-    p: &P,
+    problem: &Problem<'_>,
     grids: NestedGrids,
     budget: Budget,
 ) -> Option<NestedStudy> {
+    let Problem { lin, resp, p, .. } = problem;
     let m = FIXED.get(k)?;
     let grids = match m {
         Method::Euler => grids.with_budget(budget.euler),
@@ -247,13 +272,8 @@ pub(super) fn fixed_study(
 }
 
 /// DP45 over the tolerances `tols`: error against f-evaluations.
-pub(super) fn dp45_study(
-    sys: &SecondOrder,
-    lin: &Linear2<fn(f64) -> f64>,
-    resp: &FreeResponse,
-    p: &P,
-    tols: &[f64],
-) -> Option<WorkPrecision> {
+pub(super) fn dp45_study(problem: &Problem<'_>, tols: &[f64]) -> Option<WorkPrecision> {
+    let Problem { sys, lin, resp, p } = problem;
     Some(dopri5_sweep(
         lin,
         [p.x0, 0.0],
@@ -268,19 +288,12 @@ pub(super) fn dp45_study(
 }
 
 /// The whole convergence study of `key` within `budget`, at once.
-fn compute_study(
-    sys: &SecondOrder,
-    lin: &Linear2<fn(f64) -> f64>,
-    resp: &FreeResponse,
-    p: &P,
-    key: StudyKey,
-    budget: Budget,
-) -> Option<Study> {
-    let grids = study_grids(sys, p)?;
+fn compute_study(problem: &Problem<'_>, key: StudyKey, budget: Budget) -> Option<Study> {
+    let grids = study_grids(&problem.sys, problem.p)?;
     let fixed = (0..FIXED.len())
-        .map(|k| fixed_study(k, lin, resp, p, grids, budget))
+        .map(|k| fixed_study(k, problem, grids, budget))
         .collect::<Option<Vec<_>>>()?;
-    let dp45 = dp45_study(sys, lin, resp, p, budget.tols)?;
+    let dp45 = dp45_study(problem, budget.tols)?;
     Some(Study {
         key,
         budget,

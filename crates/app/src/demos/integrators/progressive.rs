@@ -8,15 +8,14 @@
 //! state every progressive demo shares, `demos/progressive.rs`.
 
 use super::model::{
-    dp45_study, fixed_study, study_grids, Budget, Study, StudyKey, EULER_BUDGET, FIXED, FULL,
-    STUDY_BUDGET,
+    dp45_study, fixed_study, study_grids, Budget, Problem, Study, StudyKey, EULER_BUDGET, FIXED,
+    FULL, STUDY_BUDGET,
 };
 use super::{Integrators, P};
 use crate::demos::design::Stopwatch;
 use zeta_solver::integrate::convergence::{NestedGrids, NestedStudy};
 use zeta_solver::integrate::work_precision::WorkPrecision;
-use zeta_solver::integrate::Linear2;
-use zeta_solver::{FreeResponse, SecondOrder};
+use zeta_solver::SecondOrder;
 
 /// DP45 tolerances of the coarse study: the full sweep's, down to 10⁻⁶.
 const COARSE_TOLS: [f64; 5] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6];
@@ -74,15 +73,13 @@ impl StudyJob {
 
     /// Computes the next slice: one fixed-step method's study, or the DP45 sweep.
     fn advance(&mut self) {
-        let (sys, p) = (&self.sys, &self.p);
-        let resp = FreeResponse::new(*sys, p.x0, 0.0);
-        let lin = Linear2::free(*sys);
+        let problem = Problem::new(self.sys, &self.p);
         if self.next < FIXED.len() {
-            if let Some(s) = fixed_study(self.next, &lin, &resp, p, self.grids, FULL) {
+            if let Some(s) = fixed_study(self.next, &problem, self.grids, FULL) {
                 self.fixed.push(s);
             }
         } else {
-            self.dp45 = dp45_study(sys, &lin, &resp, p, FULL.tols);
+            self.dp45 = dp45_study(&problem, FULL.tols);
         }
         self.next += 1;
     }

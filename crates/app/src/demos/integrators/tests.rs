@@ -2,7 +2,7 @@
 //! snapshot tests (`crates/app/tests/snapshots.rs`).
 
 use super::Integrators;
-use crate::demos::progressive::shown;
+use crate::demos::progressive::{overtaken, shown, Overtaken};
 use crate::demos::testing::{number, value, Tested};
 
 #[test]
@@ -98,16 +98,13 @@ fn an_overflowing_run_says_so_without_a_number() {
 
 #[test]
 fn progressive_updates_show_a_coarse_study_marked_then_exactly_the_full_one() {
-    let spec = crate::demos::create("integrators").unwrap().spec();
-    let params = |q| crate::params::resolve_query(&spec, q).0;
-    let mut reference = crate::demos::create("integrators").unwrap();
-    let want = reference.update(&params("zeta=0.1"));
-    let mut demo = crate::demos::create("integrators").unwrap();
-    demo.set_progressive(true);
-    demo.update(&params("zeta=0.3"));
     // Part of the full study for ζ = 0.3, then ζ moves on: that study is never shown.
-    assert!(matches!(demo.refine(0.0), Some(f) if f < 1.0));
-    let coarse = demo.update(&params("zeta=0.1"));
+    let Overtaken {
+        want,
+        mut demo,
+        coarse,
+    } = overtaken("integrators", "zeta=0.3", "zeta=0.1");
+    let params = |q| crate::demos::testing::params("integrators", q);
     for key in [
         "order_euler",
         "order_rk4",

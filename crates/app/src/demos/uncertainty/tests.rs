@@ -5,8 +5,8 @@
 #![allow(clippy::disallowed_methods)]
 
 use super::*;
-use crate::demos::progressive::shown;
-use crate::demos::testing::{number, text, value, Tested};
+use crate::demos::progressive::{overtaken, shown, Overtaken};
+use crate::demos::testing::{number, run, text, value, Tested};
 use crate::params::resolve_query;
 
 /// One model step of `d` for `query`, as the page would run it.
@@ -128,17 +128,14 @@ fn percentiles_and_yield_follow_the_distribution_of_the_parts() {
 
 #[test]
 fn progressive_updates_show_the_first_draws_marked_then_exactly_the_full_run() {
-    let spec = Uncertainty::declare().spec();
-    let params = |q| crate::params::resolve_query(&spec, q).0;
-    let mut reference = crate::demos::create("uncertainty").unwrap();
-    let want = reference.update(&params("dm=12"));
-    let first_draws = reference.update(&params("dm=12&N=1000"));
-    let mut demo = crate::demos::create("uncertainty").unwrap();
-    demo.set_progressive(true);
-    demo.update(&params("dm=15"));
     // Part of the run for ±15 %, then the tolerance moves on: that run is never shown.
-    assert!(matches!(demo.refine(0.0), Some(f) if f < 1.0));
-    let coarse = demo.update(&params("dm=12"));
+    let Overtaken {
+        want,
+        mut demo,
+        coarse,
+    } = overtaken("uncertainty", "dm=15", "dm=12");
+    let params = |q| crate::demos::testing::params("uncertainty", q);
+    let first_draws = run("uncertainty", "dm=12&N=1000");
     assert!(demo.provisional().contains(&"yield") && demo.provisional().contains(&"hist"));
     assert_eq!(text(&coarse, "draws"), "1000 (10000 on the way)");
     assert!(coarse.figures[1].title.ends_with("(provisional)"));
