@@ -2,7 +2,7 @@
 //! snapshot tests (`crates/app/tests/snapshots.rs`).
 
 use super::Integrators;
-use crate::demos::progressive::{overtaken, shown, Overtaken};
+use crate::demos::progressive::{overtaken, shown};
 use crate::demos::testing::{number, value, Tested};
 
 #[test]
@@ -99,11 +99,7 @@ fn an_overflowing_run_says_so_without_a_number() {
 #[test]
 fn progressive_updates_show_a_coarse_study_marked_then_exactly_the_full_one() {
     // Part of the full study for ζ = 0.3, then ζ moves on: that study is never shown.
-    let Overtaken {
-        want,
-        mut demo,
-        coarse,
-    } = overtaken("integrators", "zeta=0.3", "zeta=0.1");
+    let mut ov = overtaken("integrators", "zeta=0.3", "zeta=0.1");
     let params = |q| crate::demos::testing::params("integrators", q);
     for key in [
         "order_euler",
@@ -112,19 +108,21 @@ fn progressive_updates_show_a_coarse_study_marked_then_exactly_the_full_one() {
         "convergence",
         "work",
     ] {
-        assert!(demo.provisional().contains(&key), "{key} marked");
+        assert!(ov.demo.provisional().contains(&key), "{key} marked");
     }
     // What does not come from the study is final at once.
     for key in ["max_err_rk4", "h_used", "stable_euler"] {
-        assert!(!demo.provisional().contains(&key), "{key} not marked");
-        assert_eq!(value(&coarse, key), value(&want, key), "{key}");
+        assert!(!ov.demo.provisional().contains(&key), "{key} not marked");
+        assert_eq!(value(&ov.coarse, key), value(&ov.want, key), "{key}");
     }
-    assert!(!demo.provisional().contains(&"response") && !demo.provisional().contains(&"error"));
-    assert_eq!(
-        format!("{:?}", &coarse.figures[..2]),
-        format!("{:?}", &want.figures[..2])
+    assert!(
+        !ov.demo.provisional().contains(&"response") && !ov.demo.provisional().contains(&"error")
     );
-    for (fig, final_fig) in coarse.figures[2..4].iter().zip(&want.figures[2..4]) {
+    assert_eq!(
+        format!("{:?}", &ov.coarse.figures[..2]),
+        format!("{:?}", &ov.want.figures[..2])
+    );
+    for (fig, final_fig) in ov.coarse.figures[2..4].iter().zip(&ov.want.figures[2..4]) {
         assert!(
             fig.description.starts_with(
                 "Provisional: from a coarse study (at most 3000 steps per method, 6000 for \
@@ -136,18 +134,21 @@ fn progressive_updates_show_a_coarse_study_marked_then_exactly_the_full_one() {
         );
         assert_eq!(fig.title, final_fig.title);
     }
-    // The coarse study has fewer step sizes, but still about the textbook orders.
-    let (o, full) = (number(&coarse, "order_rk4"), number(&want, "order_rk4"));
+    // The ov.coarse study has fewer step sizes, but still about the textbook orders.
+    let (o, full) = (
+        number(&ov.coarse, "order_rk4"),
+        number(&ov.want, "order_rk4"),
+    );
     assert!((o - 4.0).abs() < 0.3 && o != full, "{o} vs {full}");
     let mut slices = 0;
-    while demo.refine(0.0) != Some(1.0) {
+    while ov.demo.refine(0.0) != Some(1.0) {
         slices += 1;
         assert!(slices < 5, "one method per slice at least");
     }
-    assert!(demo.provisional().is_empty() && demo.refine(5.0).is_none());
-    let full = demo.update(&params("zeta=0.1"));
+    assert!(ov.demo.provisional().is_empty() && ov.demo.refine(5.0).is_none());
+    let full = ov.demo.update(&params("zeta=0.1"));
     // Debug text: the figures may hold NaN gaps, which `==` never equates.
-    assert!(format!("{:?}", shown(&full)) == format!("{:?}", shown(&want)));
+    assert!(format!("{:?}", shown(&full)) == format!("{:?}", shown(&ov.want)));
 }
 
 #[test]

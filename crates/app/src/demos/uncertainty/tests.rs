@@ -5,7 +5,7 @@
 #![allow(clippy::disallowed_methods)]
 
 use super::*;
-use crate::demos::progressive::{overtaken, shown, Overtaken};
+use crate::demos::progressive::{overtaken, shown};
 use crate::demos::testing::{number, run, text, value, Tested};
 use crate::params::resolve_query;
 
@@ -129,28 +129,24 @@ fn percentiles_and_yield_follow_the_distribution_of_the_parts() {
 #[test]
 fn progressive_updates_show_the_first_draws_marked_then_exactly_the_full_run() {
     // Part of the run for ±15 %, then the tolerance moves on: that run is never shown.
-    let Overtaken {
-        want,
-        mut demo,
-        coarse,
-    } = overtaken("uncertainty", "dm=15", "dm=12");
+    let mut ov = overtaken("uncertainty", "dm=15", "dm=12");
     let params = |q| crate::demos::testing::params("uncertainty", q);
     let first_draws = run("uncertainty", "dm=12&N=1000");
-    assert!(demo.provisional().contains(&"yield") && demo.provisional().contains(&"hist"));
-    assert_eq!(text(&coarse, "draws"), "1000 (10000 on the way)");
-    assert!(coarse.figures[1].title.ends_with("(provisional)"));
-    // The coarse run is exactly the first 1000 draws of the full one.
-    assert_eq!(value(&coarse, "yield"), value(&first_draws, "yield"));
-    assert_eq!(value(&coarse, "zeta_min"), value(&want, "zeta_min"));
+    assert!(ov.demo.provisional().contains(&"yield") && ov.demo.provisional().contains(&"hist"));
+    assert_eq!(text(&ov.coarse, "draws"), "1000 (10000 on the way)");
+    assert!(ov.coarse.figures[1].title.ends_with("(provisional)"));
+    // The ov.coarse run is exactly the first 1000 draws of the full one.
+    assert_eq!(value(&ov.coarse, "yield"), value(&first_draws, "yield"));
+    assert_eq!(value(&ov.coarse, "zeta_min"), value(&ov.want, "zeta_min"));
     let mut slices = 0;
-    while demo.refine(0.0) != Some(1.0) {
+    while ov.demo.refine(0.0) != Some(1.0) {
         slices += 1;
         assert!(slices <= 200, "a slice of draws each time at least");
     }
-    assert!(demo.provisional().is_empty() && demo.refine(5.0).is_none());
-    let full = demo.update(&params("dm=12"));
+    assert!(ov.demo.provisional().is_empty() && ov.demo.refine(5.0).is_none());
+    let full = ov.demo.update(&params("dm=12"));
     // Debug text: the figures may hold NaN gaps, which `==` never equates.
-    assert!(format!("{:?}", shown(&full)) == format!("{:?}", shown(&want)));
+    assert!(format!("{:?}", shown(&full)) == format!("{:?}", shown(&ov.want)));
 }
 
 #[test]
