@@ -19,7 +19,7 @@ const query = (values) => Object.entries(values).map(([k, v]) => `${k}=${v}`).jo
 /** What the page shows whatever the physics: the selection, and the grid it was swept on. */
 async function checkEchoes(page, p) {
   // The grid is the full one once the coarse stand-in has been refined (a busy machine can
-  // still be showing the coarse 25 × 25 sweep here).
+  // still be showing the coarse sweep here).
   await page.waitForFunction(() => !document.querySelector('[data-provisional]'));
   assert.equal(await num(page, 'k'), p.k);
   assert.equal(await num(page, 'c'), p.c);

@@ -88,9 +88,9 @@ test('design: a moved mass shows a coarse map marked provisional, then the full 
   const { page, errors, context, now } = await overtake('design', 'map', ['m', 420], preset);
   assert.ok(now.readouts.includes('grid_size') && now.plots.includes('map') && now.plots.includes('pareto'), JSON.stringify(now));
   assert.ok(Object.values(now.texts).every((t) => t.endsWith(' (provisional)')), JSON.stringify(now.texts));
-  assert.equal(now.texts.grid_size, '25 × 25 = 625 (100 × 100 on the way) (provisional)');
+  assert.equal(now.texts.grid_size, '12 × 12 = 144 (100 × 100 on the way) (provisional)');
   assert.equal(now.busy, 'true');
-  assert.match(now.caption, /^Provisional: from a coarse 25 × 25 grid while the 100 × 100 sweep runs\. .*m = 420 kg/);
+  assert.match(now.caption, /^Provisional: from a coarse 12 × 12 grid while the 100 × 100 sweep runs\. .*m = 420 kg/);
   // The selected design's own readouts do not wait for the sweep.
   assert.ok(!now.readouts.includes('zeta') && !now.readouts.includes('settling_time'));
 

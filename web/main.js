@@ -457,11 +457,23 @@ function markProvisional(keys) {
   if (now.size) scheduleRefine();
 }
 
+/**
+ * How long the controls rest before the pending full study goes on (ms): while they move,
+ * the next event drops the study anyway, and a slice between an input and its frame
+ * would only delay the frame.
+ */
+const REFINE_REST_MS = 100;
+
 /** Runs the pending full study in short slices between frames; redraws when it is done. */
 function scheduleRefine() {
   if (app.refineTimer) return;
   const slice = () => {
     app.refineTimer = 0;
+    const wait = REFINE_REST_MS - (performance.now() - app.lastInput);
+    if (wait > 0 || app.framePending) {
+      app.refineTimer = setTimeout(slice, Math.max(wait, 16));
+      return;
+    }
     const done = app.session.refine(REFINE_SLICE_MS);
     if (done === undefined) return;
     if (done >= 1) requestDraw();

@@ -11,6 +11,7 @@
 //! A backend is made per drawing (`Session::update` makes one per plot per frame), and
 //! resizing a canvas resets its context, so the memory starts empty each time.
 
+use crate::render::{Direct, Stretched};
 use plotters_backend::text_anchor::{HPos, VPos};
 use plotters_backend::{
     BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind,
@@ -160,11 +161,12 @@ impl HtmlCanvas {
         }
     }
 
-    /// Sets the dash pattern (on, off, … in px; empty: solid) of the strokes that follow,
-    /// through a handle that lives beside the backend while plotters holds it.
-    pub fn dasher(&self) -> impl Fn(&[f64]) {
-        let context = self.context.clone();
-        move |pattern| set_line_dash(&context, pattern)
+    /// What this canvas draws itself (dashes, stretched images), through a handle that
+    /// lives beside the backend while plotters holds it.
+    pub fn direct(&self) -> CanvasDirect {
+        CanvasDirect {
+            context: self.context.clone(),
+        }
     }
 
     /// Traces `points` as one open path.
@@ -179,6 +181,67 @@ impl HtmlCanvas {
             self.context.line_to(f64::from(x), f64::from(y));
         }
         true
+    }
+}
+
+/// The canvas's [`Direct`] drawing (see [`HtmlCanvas::direct`]).
+pub struct CanvasDirect {
+    context: CanvasRenderingContext2d,
+}
+
+thread_local! {
+    /// A canvas outside the page that holds an image before it is stretched.
+    static SCRATCH: Option<(HtmlCanvasElement, CanvasRenderingContext2d)> = web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.create_element("canvas").ok())
+        .and_then(|e| e.dyn_into::<HtmlCanvasElement>().ok())
+        .and_then(|c| Some((c.clone(), super::context_of(&c)?)));
+}
+
+impl Direct for CanvasDirect {
+    fn dash(&self, pattern: &[f64]) {
+        set_line_dash(&self.context, pattern);
+    }
+
+    fn stretch(&self, image: &Stretched<'_>) {
+        let (w, h) = image.size;
+        let n = (w as usize) * (h as usize);
+        if image.rgb.len() < n * 3 || n == 0 {
+            return;
+        }
+        let mut rgba = Vec::with_capacity(n * 4);
+        for px in image.rgb.chunks_exact(3).take(n) {
+            rgba.extend_from_slice(&[px[0], px[1], px[2], 255]);
+        }
+        let Ok(data) = web_sys::ImageData::new_with_u8_clamped_array_and_sh(
+            wasm_bindgen::Clamped(&rgba),
+            w,
+            h,
+        ) else {
+            return;
+        };
+        SCRATCH.with(|scratch| {
+            let Some((canvas, scratch)) = scratch else {
+                return;
+            };
+            // Resizing also clears it.
+            canvas.set_width(w);
+            canvas.set_height(h);
+            if scratch.put_image_data(&data, 0.0, 0.0).is_err() {
+                return;
+            }
+            let [l, t, r, b] = image.to.map(f64::from);
+            let [cl, ct, cr, cb] = image.clip.map(f64::from);
+            let c = &self.context;
+            // Saved and restored, so the state the backend caches stays true.
+            c.save();
+            c.begin_path();
+            c.rect(cl, ct, cr - cl, cb - ct);
+            c.clip();
+            c.set_image_smoothing_enabled(false);
+            let _ = c.draw_image_with_html_canvas_element_and_dw_and_dh(canvas, l, t, r - l, b - t);
+            c.restore();
+        });
     }
 }
 
@@ -363,26 +426,5 @@ impl DrawingBackend for HtmlCanvas {
     fn estimate_text_size<S: BackendTextStyle>(&self, text: &str, style: &S) -> Result<(u32, u32)> {
         self.font(style);
         Ok(super::measure(&self.context, text, style))
-    }
-
-    fn blit_bitmap(&mut self, pos: BackendCoord, (w, h): (u32, u32), src: &[u8]) -> Result<()> {
-        // One putImageData instead of a fillRect per pixel (the trait's default).
-        let n = (w as usize) * (h as usize);
-        if src.len() < n * 3 || n == 0 {
-            return Ok(());
-        }
-        let mut rgba = Vec::with_capacity(n * 4);
-        for px in src.chunks_exact(3).take(n) {
-            rgba.extend_from_slice(&[px[0], px[1], px[2], 255]);
-        }
-        let image = web_sys::ImageData::new_with_u8_clamped_array_and_sh(
-            wasm_bindgen::Clamped(&rgba),
-            w,
-            h,
-        )
-        .map_err(failed)?;
-        self.context
-            .put_image_data(&image, f64::from(pos.0), f64::from(pos.1))
-            .map_err(failed)
     }
 }

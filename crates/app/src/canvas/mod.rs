@@ -14,7 +14,7 @@ mod html;
 #[cfg(not(feature = "first"))]
 mod web;
 
-pub use html::{CanvasError, HtmlCanvas};
+pub use html::{CanvasDirect, CanvasError, HtmlCanvas};
 use plotters_backend::BackendTextStyle;
 use wasm_bindgen::JsCast;
 #[cfg(not(feature = "first"))]
@@ -30,13 +30,13 @@ pub type Canvas = Web<'static>;
 #[cfg(feature = "first")]
 pub type Canvas = HtmlCanvas;
 
-/// What sets the dash pattern of `backend`'s strokes, when it dashes a path itself (the
-/// canvas; see `render::Output::dash`); an SVG is dashed by plotters.
-pub fn dasher(backend: &Canvas) -> Option<impl Fn(&[f64])> {
+/// What `backend` draws itself, beside plotters' calls (the canvas; see `render::Direct`);
+/// an SVG is drawn through plotters alone.
+pub fn direct(backend: &Canvas) -> Option<CanvasDirect> {
     #[cfg(not(feature = "first"))]
-    return backend.dasher();
+    return backend.direct();
     #[cfg(feature = "first")]
-    return Some(backend.dasher());
+    return Some(backend.direct());
 }
 
 /// Draws on `canvas`; `None` if it has no 2D context.

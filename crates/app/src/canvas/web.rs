@@ -94,7 +94,6 @@ impl DrawingBackend for Web<'_> {
         fn draw_circle<S: BackendStyle>(center: BackendCoord, radius: u32, style: &S, fill: bool);
         fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(vert: I, style: &S);
         fn draw_text<S: BackendTextStyle>(text: &str, style: &S, pos: BackendCoord);
-        fn blit_bitmap(pos: BackendCoord, size: (u32, u32), src: &[u8]);
     }
 
     fn estimate_text_size<S: BackendTextStyle>(
@@ -115,11 +114,11 @@ impl DrawingBackend for Web<'_> {
 }
 
 impl Web<'_> {
-    /// For a canvas, what sets the dash pattern of its strokes (see
-    /// `render::Output::dash`); an SVG is dashed by plotters.
-    pub fn dasher(&self) -> Option<impl Fn(&[f64])> {
+    /// For a canvas, what it draws itself (see `render::Direct`); an SVG is drawn
+    /// through plotters alone.
+    pub fn direct(&self) -> Option<super::html::CanvasDirect> {
         match self {
-            Web::Canvas(b) => Some(b.dasher()),
+            Web::Canvas(b) => Some(b.direct()),
             Web::Svg { .. } => None,
         }
     }

@@ -2,13 +2,13 @@
 
 use super::colour_bar::{draw_colour_bar, COLOUR_BAR_WIDTH};
 use super::fit::fit;
-use super::heatmap::{blit_heatmap, draw_heatmap};
+use super::heatmap::{draw_heatmap, stretch_heatmap};
 use super::legend::{free_corner, legend_entries, Legend};
 use super::lines::draw_lines_and_markers;
 use super::scale::Scale;
 use super::ticks::axis_tick_label;
-use super::{err, px, Output, Raster, RenderError};
-use crate::figure::Figure;
+use super::{err, px, Output, RenderError};
+use crate::figure::{AxisScale, Figure};
 use crate::theme::Theme;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -39,7 +39,8 @@ pub(super) fn build<'a, DB: DrawingBackend>(
         10.0
     };
     let (w, _) = area.dim_in_pixel();
-    let room = f64::from(w) - f64::from(px(20.0, scale));
+    // The title is centred between the margins, the right one wider beside a colour bar.
+    let room = f64::from(w) - f64::from(px(10.0, scale)) - f64::from(px(right, scale));
     let (title, size) = fit(area, &fig.title, 15.0 * scale, room);
     let font = (super::SANS, size).into_font().color(&theme.foreground);
     ChartBuilder::on(area)
@@ -110,13 +111,16 @@ pub(super) fn draw<DB: DrawingBackend>(
 
     if let Some(h) = &fig.heatmap {
         if h.has_every_cell() {
-            match out.raster {
-                Raster::Cells => draw_heatmap(&mut chart, h)?,
-                Raster::Bitmap => blit_heatmap(&mut chart, h, theme)?,
+            // One image needs linear axes; on log axes the cells are drawn.
+            let linear = (fig.x.scale, fig.y.scale) == (AxisScale::Linear, AxisScale::Linear);
+            match out.direct {
+                Some(direct) if linear => stretch_heatmap(&chart, h, theme, direct),
+                _ => draw_heatmap(&mut chart, h)?,
             }
         }
         let (xs, ys) = chart.plotting_area().get_pixel_range();
-        draw_colour_bar(&area, h, (xs.end, ys.start, ys.end), theme, scale)?;
+        let bar = (xs.end, ys.start, ys.end);
+        draw_colour_bar(&area, h, bar, theme, scale, out.direct)?;
     }
 
     if fig.origin_lines {
@@ -141,7 +145,7 @@ pub(super) fn draw<DB: DrawingBackend>(
         }
     }
 
-    draw_lines_and_markers(&mut chart, fig, theme, scale, out.dash)?;
+    draw_lines_and_markers(&mut chart, fig, theme, scale, out.direct)?;
     match placement {
         Placement::Inside(x, y) => legend.draw_box(
             &chart.plotting_area().strip_coord_spec(),

@@ -1,7 +1,7 @@
 //! A heatmap's colour bar and its labels.
 
 use super::ticks::short_label;
-use super::{err, px, RenderError};
+use super::{err, px, Direct, RenderError, Stretched};
 use crate::theme::Theme;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -19,6 +19,7 @@ pub(super) fn draw_colour_bar<DB: DrawingBackend>(
     (right, top, bottom): (i32, i32, i32),
     theme: &Theme,
     scale: f64,
+    direct: Option<&dyn Direct>,
 ) -> Result<(), RenderError> {
     let (lo, hi) = h.scale;
     if bottom - top < 8 || !(lo.is_finite() && hi.is_finite()) {
@@ -27,12 +28,33 @@ pub(super) fn draw_colour_bar<DB: DrawingBackend>(
     let x0 = right + px(12.0, scale) as i32;
     let x1 = x0 + px(12.0, scale) as i32;
     let n = (bottom - top).clamp(2, 128);
-    for j in 0..n {
-        let ya = bottom - (bottom - top) * j / n;
-        let yb = bottom - (bottom - top) * (j + 1) / n;
-        let colour = crate::theme::viridis((f64::from(j) + 0.5) / f64::from(n));
-        area.draw(&Rectangle::new([(x0, yb), (x1, ya)], colour.filled()))
-            .map_err(err)?;
+    let colour = |j: i32| crate::theme::viridis((f64::from(j) + 0.5) / f64::from(n));
+    match direct {
+        // The same bands as one image of a pixel per band.
+        Some(direct) => {
+            let rgb: Vec<u8> = (0..n)
+                .rev()
+                .flat_map(|j| {
+                    let c = colour(j);
+                    [c.0, c.1, c.2]
+                })
+                .collect();
+            let rect = [x0, top, x1, bottom];
+            direct.stretch(&Stretched {
+                size: (1, n as u32),
+                rgb: &rgb,
+                to: rect,
+                clip: rect,
+            });
+        }
+        None => {
+            for j in 0..n {
+                let ya = bottom - (bottom - top) * j / n;
+                let yb = bottom - (bottom - top) * (j + 1) / n;
+                area.draw(&Rectangle::new([(x0, yb), (x1, ya)], colour(j).filled()))
+                    .map_err(err)?;
+            }
+        }
     }
     area.draw(&Rectangle::new(
         [(x0, top), (x1, bottom)],

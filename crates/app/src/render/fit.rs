@@ -4,6 +4,8 @@
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use std::cell::RefCell;
+use std::collections::VecDeque;
 
 /// The smallest size a fitted text is drawn at, as a fraction of its normal size.
 pub(super) const MIN_SHRINK: f64 = 0.72;
@@ -16,9 +18,48 @@ fn width<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, text: &str, size: f6
         .map_or(0.0, |(w, _)| f64::from(w))
 }
 
+/// What was fitted: the backend type, the text, its size and room (as bits), and the answer.
+type Fitted = (&'static str, String, u64, u64, (String, f64));
+
+/// How many fits [`fit`] remembers: every title and label of the plots on a page.
+const REMEMBERED: usize = 24;
+
+thread_local! {
+    /// Recent fits, newest last. A drag redraws the same titles into the same room every
+    /// frame, and a fit that cuts measures its text up to eight times (~1.5 ms a frame for
+    /// one label at 4× CPU slowdown).
+    static RECENT: RefCell<VecDeque<Fitted>> = const { RefCell::new(VecDeque::new()) };
+}
+
 /// The size (≤ `size`) at which `text` fits in `room` px, and the text itself, cut with
-/// "…" when it does not fit even at [`MIN_SHRINK`] of `size`.
+/// "…" when it does not fit even at [`MIN_SHRINK`] of `size`. Remembered: the same text,
+/// size and room on the same kind of backend are not measured again.
 pub(super) fn fit<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    text: &str,
+    size: f64,
+    room: f64,
+) -> (String, f64) {
+    let backend = std::any::type_name::<DB>();
+    let same = |f: &&Fitted| {
+        f.0 == backend && f.1 == text && f.2 == size.to_bits() && f.3 == room.to_bits()
+    };
+    if let Some(hit) = RECENT.with_borrow(|r| r.iter().find(same).map(|f| f.4.clone())) {
+        return hit;
+    }
+    let answer = measure_fit(area, text, size, room);
+    RECENT.with_borrow_mut(|r| {
+        if r.len() == REMEMBERED {
+            r.pop_front();
+        }
+        let key = (size.to_bits(), room.to_bits());
+        r.push_back((backend, text.to_string(), key.0, key.1, answer.clone()));
+    });
+    answer
+}
+
+/// [`fit`], measuring.
+fn measure_fit<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     text: &str,
     size: f64,

@@ -53,14 +53,14 @@ pub(super) fn label_offset(x: i32, width: i32, right: i32, scale: f64) -> (i32, 
     (dx, -(px(16.0, scale) as i32))
 }
 
-/// Draws the series and markers of `fig`; returns the legend entries. With `dash`, the
-/// backend dashes each series as one path (see [`super::Output::dash`]).
+/// Draws the series and markers of `fig`; returns the legend entries. With `direct`, the
+/// backend dashes each series as one path (see [`super::Direct::dash`]).
 pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     fig: &'f Figure,
     theme: &Theme,
     scale: f64,
-    dash: Option<super::SetDash<'_>>,
+    direct: Option<&dyn super::Direct>,
 ) -> Result<Vec<(&'f str, LineStyle)>, RenderError> {
     let fg = theme.foreground;
     let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
@@ -77,13 +77,13 @@ pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
             Dash::Dashed => Some((px(8.0, scale), px(5.0, scale))),
             Dash::Dotted => Some((px(2.0, scale), px(4.0, scale))),
         };
-        match (pattern, dash) {
-            (Some((on, off)), Some(set)) => {
-                set(&[f64::from(on), f64::from(off)]);
+        match (pattern, direct) {
+            (Some((on, off)), Some(direct)) => {
+                direct.dash(&[f64::from(on), f64::from(off)]);
                 let drawn = segs
                     .into_iter()
                     .try_for_each(|seg| chart.draw_series(LineSeries::new(seg, style)).map(|_| ()));
-                set(&[]);
+                direct.dash(&[]);
                 drawn.map_err(err)?;
             }
             (Some((on, off)), None) => {

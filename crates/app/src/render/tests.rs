@@ -112,49 +112,115 @@ fn heatmap_cells_are_filled_and_blank_where_undefined() {
     );
 }
 
+/// A stretched image as drawn: size, pixels, where it goes and its clip.
+type Drawn = ((u32, u32), Vec<u8>, [i32; 4], [i32; 4]);
+
+/// A backend's own drawing, recorded.
+#[derive(Default)]
+struct Recorder(std::cell::RefCell<Vec<Drawn>>);
+
+impl Direct for Recorder {
+    fn dash(&self, _: &[f64]) {}
+    fn stretch(&self, image: &Stretched<'_>) {
+        let copy = (image.size, image.rgb.to_vec(), image.to, image.clip);
+        self.0.borrow_mut().push(copy);
+    }
+}
+
 #[test]
-fn bitmap_heatmap_paints_the_same_colours_as_cells() {
+fn a_heatmap_is_one_image_of_a_pixel_per_cell_over_its_cells_and_so_is_its_colour_bar() {
     let mut fig = sample();
     fig.series.clear();
     fig.markers.clear();
     fig.heatmap = Some(crate::figure::Heatmap {
         log: false,
         nx: 2,
-        ny: 1,
-        values: vec![0.0, 1.0],
+        ny: 2,
+        // Row-major from the bottom row: bottom (0, NaN), top (0.5, 1).
+        values: vec![0.0, f64::NAN, 0.5, 1.0],
         x_edges: (0.0, 1.0),
         y_edges: (-1.0, 1.0),
         scale: (0.0, 1.0),
         label: String::new(),
     });
+    let rec = Recorder::default();
     let mut svg = String::new();
-    {
+    let geo = {
         let root = SVGBackend::with_string(&mut svg, (320, 160)).into_drawing_area();
         render_with(
             &root,
             &fig,
             &Theme::LIGHT,
             1.0,
+            Output { direct: Some(&rec) },
+        )
+        .unwrap()
+    };
+    let rgb = |c: RGBColor| [c.0, c.1, c.2];
+    let images = rec.0.into_inner();
+    assert_eq!(images.len(), 2, "the heatmap and its colour bar");
+    let (size, pixels, to, clip) = &images[0];
+    assert_eq!(*size, (2, 2));
+    // Rows top to bottom; a blank cell shows the background.
+    let v = crate::theme::viridis;
+    let want: Vec<u8> = [v(0.5), v(1.0), v(0.0), Theme::LIGHT.background]
+        .into_iter()
+        .flat_map(rgb)
+        .collect();
+    assert_eq!(pixels, &want);
+    // Over the cells, which fill the plotting area here, and clipped to it.
+    let (l, t, r, b) = geo.area;
+    let near = |a: i32, b: f64| (f64::from(a) - b).abs() <= 1.0;
+    assert!(
+        near(to[0], l) && near(to[1], t) && near(to[2], r) && near(to[3], b),
+        "{to:?} {:?}",
+        geo.area
+    );
+    assert!(
+        near(clip[0], l) && near(clip[1], t) && near(clip[2], r) && near(clip[3], b),
+        "{clip:?}"
+    );
+    // The bar: one column, its top the high end of the map, right of the plot.
+    let (size, pixels, to, _) = &images[1];
+    assert_eq!(size.0, 1);
+    assert!(size.1 >= 2);
+    assert_eq!(pixels.len(), 3 * size.1 as usize);
+    let (top, bottom) = (&pixels[..3], &pixels[pixels.len() - 3..]);
+    let (hi, lo) = (rgb(v(1.0)), rgb(v(0.0)));
+    let dist = |a: &[u8], b: [u8; 3]| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| x.abs_diff(y) as u32)
+            .sum::<u32>()
+    };
+    assert!(
+        dist(top, hi) < 30 && dist(bottom, lo) < 30,
+        "{top:?} {bottom:?}"
+    );
+    assert!(f64::from(to[0]) > r);
+    // No cell was also drawn as a rectangle.
+    let without = {
+        let mut plain = String::new();
+        let mut fig = fig.clone();
+        fig.heatmap = None;
+        let root = SVGBackend::with_string(&mut plain, (320, 160)).into_drawing_area();
+        render_with(
+            &root,
+            &fig,
+            &Theme::LIGHT,
+            1.0,
             Output {
-                raster: Raster::Bitmap,
-                dash: None,
+                direct: Some(&Recorder::default()),
             },
         )
         .unwrap();
-    }
-    let hex = |c: RGBColor| format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2);
-    let (lo, hi) = (
-        hex(crate::theme::viridis(0.0)),
-        hex(crate::theme::viridis(1.0)),
-    );
-    let (a, b) = (svg.matches(&lo).count(), svg.matches(&hi).count());
-    assert!(
-        a > 100 && b > 100,
-        "both halves painted pixel by pixel: {a} {b}"
-    );
-    assert!(
-        (a as f64 / b as f64 - 1.0).abs() < 0.1,
-        "left and right halves equal: {a} {b}"
+        drop(root);
+        plain
+    };
+    assert_eq!(
+        svg.matches("<rect").count(),
+        without.matches("<rect").count() + 1,
+        "only the bar's frame"
     );
 }
 

@@ -8,7 +8,7 @@ use crate::demos::{self, Demo, Frame};
 use crate::export;
 use crate::params::{resolve_query, Params};
 use crate::render::{
-    ease_axes, hold_axes, render, render_with, AxisRanges, Output, PlotGeometry, Raster,
+    ease_axes, hold_axes, render, render_with, AxisRanges, Direct, Output, PlotGeometry,
 };
 use crate::spec::DemoSpec;
 use plotters::prelude::IntoDrawingArea;
@@ -422,10 +422,9 @@ fn draw_on(
     dark: bool,
     scale: f64,
 ) -> Result<PlotGeometry, JsError> {
-    let dasher = crate::canvas::dasher(&backend);
+    let direct = crate::canvas::direct(&backend);
     let out = Output {
-        raster: Raster::Bitmap,
-        dash: dasher.as_ref().map(|d| d as &dyn Fn(&[f64])),
+        direct: direct.as_ref().map(|d| d as &dyn Direct),
     };
     render_with(&backend.into_drawing_area(), fig, &theme(dark), scale, out).map_err(js_err)
 }

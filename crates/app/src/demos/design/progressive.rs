@@ -15,7 +15,7 @@ use zeta_solver::grid::cell_centre;
 use zeta_solver::ride::Ride;
 
 /// Cells per axis of the coarse sweep shown while the full one runs.
-pub(super) const COARSE_CELLS: usize = 25;
+pub(super) const COARSE_CELLS: usize = 12;
 
 /// Readouts and plots drawn from the coarse sweep while the full one runs.
 pub(super) const PROVISIONAL: [&str; 5] =

@@ -214,15 +214,16 @@ fn progressive_updates_show_a_marked_coarse_sweep_then_exactly_the_full_one() {
     let mut demo = crate::demos::create("design").unwrap();
     demo.set_progressive(true);
     let coarse = demo.update(&params("m=420"));
-    assert_eq!(number(&coarse, "grid_size"), 625.0);
+    let cells = super::progressive::COARSE_CELLS;
+    assert_eq!(number(&coarse, "grid_size"), (cells * cells) as f64);
     assert!(demo.provisional().contains(&"map") && demo.provisional().contains(&"grid_size"));
     assert!(coarse.figures[0]
         .description
-        .starts_with("Provisional: from a coarse 25 × 25"));
+        .starts_with(&format!("Provisional: from a coarse {cells} × {cells}")));
     // Part of the sweep for m = 420, then the mass moves on: that sweep is never shown.
     assert!(matches!(demo.refine(0.0), Some(f) if f < 1.0));
     let moved = demo.update(&params("m=500"));
-    assert_eq!(number(&moved, "grid_size"), 625.0);
+    assert_eq!(number(&moved, "grid_size"), (cells * cells) as f64);
     let mut slices = 0;
     while demo.refine(0.0) != Some(1.0) {
         slices += 1;
@@ -246,11 +247,12 @@ fn progressive_updates_show_a_marked_coarse_sweep_then_exactly_the_full_one() {
 }
 
 #[test]
-fn progressive_updates_keep_small_grids_and_unmoved_maps_immediate() {
+fn progressive_updates_keep_unmoved_maps_immediate() {
     let spec = DesignSpace::declare().spec();
     let mut demo = crate::demos::create("design").unwrap();
     demo.set_progressive(true);
     demo.update(&resolve_query(&spec, "n=25").0);
+    while demo.refine(5.0).is_some_and(|done| done < 1.0) {}
     assert!(demo.provisional().is_empty() && demo.refine(5.0).is_none());
     // Moving the selected design reuses the map: nothing to refine.
     demo.update(&resolve_query(&spec, "n=25&k=30000&c=2500").0);
