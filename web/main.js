@@ -7,7 +7,7 @@
 // the host-page API outside a frame) are not imported here: they load when first used, and
 // at idle after the first plot, so a click does not wait on the network (see `later`).
 import './state.js'; // first: expands a state= token in the address before anything reads it
-import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow } from './ui.js';
+import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow, setAttr, setText } from './ui.js';
 import { fillLiveCells } from './live-table.js';
 import { applyConditions } from './conditional.js';
 import { cancelPendingWrite, currentQuery, demoFromUrl, queryFor, writeState } from './url.js';
@@ -357,7 +357,7 @@ function drawFrame() {
     const dpr = sizeCanvases();
     const out = app.session.update(dpr, isDark());
     app.staleLeft = true; // plots out of view were skipped; drawStale(true) says for sure
-    showReadouts(app.view.readouts, out.readouts);
+    showReadouts(app.view.readouts, out.readouts, new Set(out.provisional));
     markProvisional(out.provisional);
     for (const [key, value] of out.derived) {
       const control = app.view.controls.get(key);
@@ -371,7 +371,7 @@ function drawFrame() {
     fillLiveCells(app.view.table, out.readouts);
     for (const d of out.descriptions) {
       const cap = app.view.captions.get(d.key);
-      if (cap) cap.textContent = d.text;
+      if (cap) setText(cap, d.text);
     }
     if (out.descriptions.length) announce(out.descriptions[0].text);
     if (!app.firstDrawn) {
@@ -403,7 +403,7 @@ function describeSliders(readouts) {
     if (!control.range) continue;
     const unit = control.param.unit ? ` ${control.param.unit}` : '';
     const words = `${control.param.label} ${control.number.value}${unit}`;
-    control.range.setAttribute('aria-valuetext', text ? `${words}, ${text.text}` : words);
+    setAttr(control.range, 'aria-valuetext', text ? `${words}, ${text.text}` : words);
   }
 }
 
@@ -422,11 +422,11 @@ function drawTime(dpr = window.devicePixelRatio || 1, schematic = app.schematicV
   if (!anim || !app.timeSpan) return;
   // Off screen, the schematic (and its text) waits until it is in view or the page rests.
   app.schematicStale = !schematic;
-  if (schematic) anim.caption.textContent = app.session.drawSchematic(app.time, dpr, isDark());
+  if (schematic) setText(anim.caption, app.session.drawSchematic(app.time, dpr, isDark()));
   const [t0, t1] = app.timeSpan;
   anim.scrub.value = String(Math.round(((app.time - t0) / (t1 - t0)) * 1000));
-  anim.time.textContent = `t = ${num(app.time, 2)} s`;
-  anim.scrub.setAttribute('aria-valuetext', t('timeWords', { t: num(app.time, 2) }));
+  setText(anim.time, `t = ${num(app.time, 2)} s`);
+  setAttr(anim.scrub, 'aria-valuetext', t('timeWords', { t: num(app.time, 2) }));
   for (const [key, { overlay }] of app.view.overlays) {
     const ctx = overlay.getContext('2d');
     ctx.clearRect(0, 0, overlay.width, overlay.height);
@@ -445,14 +445,12 @@ function drawTime(dpr = window.devicePixelRatio || 1, schematic = app.schematicV
 /** Marks readouts and plots drawn from a coarse study while the full one runs (issue 13). */
 function markProvisional(keys) {
   const now = new Set(keys);
-  for (const [key, item] of app.view.readouts) {
-    item.toggleAttribute('data-provisional', now.has(key));
-    if (now.has(key)) item.querySelector('dd').textContent = t('provisional', { value: item.querySelector('dd').textContent });
-  }
+  // The readouts' text says so too (showReadouts).
+  for (const [key, item] of app.view.readouts) item.toggleAttribute('data-provisional', now.has(key));
   for (const fig of document.querySelectorAll('[data-plot-wrap]')) {
     const on = now.has(fig.dataset.plotWrap);
     fig.toggleAttribute('data-provisional', on);
-    fig.setAttribute('aria-busy', String(on));
+    setAttr(fig, 'aria-busy', String(on));
   }
   if (now.size) scheduleRefine();
 }

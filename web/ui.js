@@ -306,17 +306,30 @@ export function showValue(control, value) {
   control.range.value = String(toSlider(control.param, value));
   control.number.value = formatValue(control.param, value);
   const unit = control.param.unit ? ` ${control.param.unit}` : '';
-  control.range.setAttribute('aria-valuetext', `${control.param.label} ${formatValue(control.param, value)}${unit}`);
+  setAttr(control.range, 'aria-valuetext', `${control.param.label} ${formatValue(control.param, value)}${unit}`);
 }
 
 /** Writes readouts ([{key, text, data_value}]) into their elements. */
-export function showReadouts(elements, readouts) {
+export function showReadouts(elements, readouts, provisional = new Set()) {
   for (const r of readouts) {
     const item = elements.get(r.key);
     if (!item) continue;
-    item.setAttribute('data-value', r.data_value);
-    item.querySelector('dd').textContent = r.text;
+    setAttr(item, 'data-value', r.data_value);
+    setText(item.querySelector('dd'), provisional.has(r.key) ? t('provisional', { value: r.text }) : r.text);
   }
+}
+
+/**
+ * Sets a node's text only when it changes: writing even the same text replaces the text
+ * node, and the page lays out and paints it again (every frame of a drag, issue 13).
+ */
+export function setText(node, text) {
+  if (node.textContent !== text) node.textContent = text;
+}
+
+/** Sets an attribute only when its value changes (see setText). */
+export function setAttr(node, name, value) {
+  if (node.getAttribute(name) !== value) node.setAttribute(name, value);
 }
 
 /** Adds a dismissible notice (plain text). */
