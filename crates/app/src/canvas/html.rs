@@ -11,13 +11,14 @@
 //! A backend is made per drawing (`Session::update` makes one per plot per frame), and
 //! resizing a canvas resets its context, so the memory starts empty each time.
 
-use crate::render::{Direct, Stretched};
+use crate::render::{corners, Direct, Stretched};
 use plotters_backend::text_anchor::{HPos, VPos};
 use plotters_backend::{
     BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind,
     FontTransform,
 };
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
 
@@ -79,6 +80,8 @@ pub struct HtmlCanvas {
     set: Set,
     /// The font last set; in a cell because plotters measures text through `&self`.
     font: RefCell<String>,
+    /// Drawing nothing (see `render::Direct::mute`); shared with [`CanvasDirect`].
+    muted: Rc<Cell<bool>>,
 }
 
 impl HtmlCanvas {
@@ -92,6 +95,7 @@ impl HtmlCanvas {
             context,
             set: Set::default(),
             font: RefCell::default(),
+            muted: Rc::default(),
         })
     }
 
@@ -111,7 +115,7 @@ impl HtmlCanvas {
     /// Sets the fill colour (`fill`) or the stroke colour and width of `style`; `false`,
     /// and nothing set, when it is fully transparent (nothing to draw).
     fn paint(&mut self, style: &impl BackendStyle, fill: bool) -> bool {
-        if style.color().alpha == 0.0 {
+        if style.color().alpha == 0.0 || self.muted.get() {
             return false;
         }
         match fill {
@@ -165,42 +169,140 @@ impl HtmlCanvas {
     /// lives beside the backend while plotters holds it.
     pub fn direct(&self) -> CanvasDirect {
         CanvasDirect {
+            canvas: self.canvas.clone(),
             context: self.context.clone(),
+            muted: self.muted.clone(),
         }
     }
 
-    /// Traces `points` as one open path.
+    /// Traces `points` as one open path, through the vertices that shape it
+    /// ([`corners`]: a curve sampled finer than its pixels has many that do not).
     fn trace(&self, points: impl IntoIterator<Item = BackendCoord>) -> bool {
-        let mut points = points.into_iter();
-        let Some((x, y)) = points.next() else {
-            return false;
-        };
-        self.context.begin_path();
-        self.context.move_to(f64::from(x), f64::from(y));
-        for (x, y) in points {
-            self.context.line_to(f64::from(x), f64::from(y));
-        }
-        true
+        let mut begun = false;
+        corners(points, |(x, y)| {
+            let (x, y) = (f64::from(x), f64::from(y));
+            if begun {
+                self.context.line_to(x, y);
+            } else {
+                self.context.begin_path();
+                self.context.move_to(x, y);
+                begun = true;
+            }
+        });
+        begun
     }
 }
 
 /// The canvas's [`Direct`] drawing (see [`HtmlCanvas::direct`]).
 pub struct CanvasDirect {
+    canvas: HtmlCanvasElement,
     context: CanvasRenderingContext2d,
+    muted: Rc<Cell<bool>>,
+}
+
+/// A canvas's static layer: the key of the layer last begun on it, in how many frames in
+/// a row, and a copy of it (`valid` once the layer has come twice in a row: a plot whose
+/// title changes every frame is never copied).
+struct Layer {
+    canvas: HtmlCanvasElement,
+    key: u64,
+    frames: u32,
+    copy: Option<HtmlCanvasElement>,
+    valid: bool,
+}
+
+/// How many canvases' layers are kept: every plot of a page, and a few of the last.
+const LAYERS: usize = 12;
+
+/// A new canvas outside the page.
+fn offscreen() -> Option<HtmlCanvasElement> {
+    web_sys::window()?
+        .document()?
+        .create_element("canvas")
+        .ok()?
+        .dyn_into::<HtmlCanvasElement>()
+        .ok()
 }
 
 thread_local! {
     /// A canvas outside the page that holds an image before it is stretched.
-    static SCRATCH: Option<(HtmlCanvasElement, CanvasRenderingContext2d)> = web_sys::window()
-        .and_then(|w| w.document())
-        .and_then(|d| d.create_element("canvas").ok())
-        .and_then(|e| e.dyn_into::<HtmlCanvasElement>().ok())
-        .and_then(|c| Some((c.clone(), super::context_of(&c)?)));
+    static SCRATCH: Option<(HtmlCanvasElement, CanvasRenderingContext2d)> =
+        offscreen().and_then(|c| Some((c.clone(), super::context_of(&c)?)));
+    /// The static layers of the canvases drawn last, most recent last.
+    static KEPT: RefCell<Vec<Layer>> = const { RefCell::new(Vec::new()) };
 }
 
 impl Direct for CanvasDirect {
     fn dash(&self, pattern: &[f64]) {
         set_line_dash(&self.context, pattern);
+    }
+
+    fn mute(&self, on: bool) {
+        self.muted.set(on);
+    }
+
+    fn begin_layer(&self, key: u64) {
+        KEPT.with_borrow_mut(|kept| {
+            let mut layer = match kept.iter().position(|l| l.canvas == self.canvas) {
+                Some(i) => kept.remove(i),
+                None => Layer {
+                    canvas: self.canvas.clone(),
+                    key,
+                    frames: 0,
+                    copy: None,
+                    valid: false,
+                },
+            };
+            if layer.key == key {
+                layer.frames = layer.frames.saturating_add(1);
+            } else {
+                (layer.key, layer.frames, layer.valid) = (key, 1, false);
+            }
+            let (w, h) = (self.canvas.width(), self.canvas.height());
+            let held = layer
+                .copy
+                .as_ref()
+                .filter(|c| layer.valid && c.width() == w && c.height() == h);
+            // Drawn whole, it covers what was there; drawImage leaves the state the
+            // backend caches as it was.
+            if let Some(copy) = held {
+                let drawn = self
+                    .context
+                    .draw_image_with_html_canvas_element(copy, 0.0, 0.0);
+                self.muted.set(drawn.is_ok());
+            }
+            if kept.len() >= LAYERS {
+                kept.remove(0);
+            }
+            kept.push(layer);
+        });
+    }
+
+    fn end_layer(&self, key: u64) {
+        if self.muted.replace(false) {
+            return;
+        }
+        KEPT.with_borrow_mut(|kept| {
+            let Some(layer) = kept.iter_mut().find(|l| l.canvas == self.canvas) else {
+                return;
+            };
+            if layer.key != key || layer.frames < 2 {
+                return;
+            }
+            if layer.copy.is_none() {
+                layer.copy = offscreen();
+            }
+            let Some(copy) = &layer.copy else {
+                return;
+            };
+            // Resizing also clears it.
+            copy.set_width(self.canvas.width());
+            copy.set_height(self.canvas.height());
+            layer.valid = super::context_of(copy).is_some_and(|c| {
+                c.draw_image_with_html_canvas_element(&self.canvas, 0.0, 0.0)
+                    .is_ok()
+            });
+        });
     }
 
     fn stretch(&self, image: &Stretched<'_>) {
@@ -287,7 +389,7 @@ impl DrawingBackend for HtmlCanvas {
     }
 
     fn draw_pixel(&mut self, point: BackendCoord, color: BackendColor) -> Result<()> {
-        if color.alpha == 0.0 {
+        if color.alpha == 0.0 || self.muted.get() {
             return Ok(());
         }
         self.fill_style(color);
@@ -393,7 +495,7 @@ impl DrawingBackend for HtmlCanvas {
         pos: BackendCoord,
     ) -> Result<()> {
         let color = style.color();
-        if color.alpha == 0.0 {
+        if color.alpha == 0.0 || self.muted.get() {
             return Ok(());
         }
         // State first, then save/rotate/restore: the restore returns to what `set` says.

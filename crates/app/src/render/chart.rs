@@ -12,6 +12,7 @@ use crate::figure::{AxisScale, Figure};
 use crate::theme::Theme;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use std::hash::{Hash, Hasher};
 
 /// Where a figure's legend goes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -53,6 +54,31 @@ pub(super) fn build<'a, DB: DrawingBackend>(
         .map_err(err)
 }
 
+/// What a plot's static layer (background, title, grid, ticks and axis names) depends
+/// on, hashed: the figure's title and axes, whether a colour bar takes room on the right,
+/// the theme, the scale, the backend's size and the legend band's height, and the
+/// language's way of writing numbers.
+pub(super) fn static_key(fig: &Figure, theme: &Theme, scale: f64, size: (u32, u32, u32)) -> u64 {
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    fig.title.hash(&mut h);
+    for axis in [&fig.x, &fig.y] {
+        (&axis.label, axis.unit, axis.scale == AxisScale::Log).hash(&mut h);
+        (axis.range.0.to_bits(), axis.range.1.to_bits()).hash(&mut h);
+    }
+    fig.heatmap.is_some().hash(&mut h);
+    for c in [
+        theme.background,
+        theme.foreground,
+        theme.grid,
+        theme.grid_minor,
+    ] {
+        (c.0, c.1, c.2).hash(&mut h);
+    }
+    (scale.to_bits(), size).hash(&mut h);
+    super::tick_label(1.5).hash(&mut h);
+    h.finish()
+}
+
 pub(super) fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     fig: &Figure,
@@ -68,12 +94,20 @@ pub(super) fn draw<DB: DrawingBackend>(
     // Where the legend can go without covering data: a trial layout gives the pixels.
     let mut placement = Placement::None;
     if !entries.is_empty() {
-        let trial = build(root, fig, theme, scale)?;
-        placement = match free_corner(&trial, fig, legend.size, scale) {
+        if let Some(direct) = out.direct {
+            direct.mute(true);
+        }
+        let trial = build(root, fig, theme, scale);
+        if let Some(direct) = out.direct {
+            direct.mute(false);
+        }
+        placement = match free_corner(&trial?, fig, legend.size, scale) {
             Some((x, y)) => Placement::Inside(x, y),
             None => Placement::Below,
         };
-        root.fill(&theme.background).map_err(err)?;
+        if out.direct.is_none() {
+            root.fill(&theme.background).map_err(err)?;
+        }
     }
     let (w, h) = root.dim_in_pixel();
     let band_h = if placement == Placement::Below {
@@ -81,6 +115,10 @@ pub(super) fn draw<DB: DrawingBackend>(
     } else {
         0
     };
+    let key = static_key(fig, theme, scale, (w, h, band_h));
+    if let Some(direct) = out.direct {
+        direct.begin_layer(key);
+    }
     let (area, band) = root.split_vertically(h.saturating_sub(band_h));
     let mut chart = build(&area, fig, theme, scale)?;
 
@@ -108,6 +146,9 @@ pub(super) fn draw<DB: DrawingBackend>(
         .y_label_formatter(&|v| axis_tick_label(*v, &fig.y))
         .draw()
         .map_err(err)?;
+    if let Some(direct) = out.direct {
+        direct.end_layer(key);
+    }
 
     if let Some(h) = &fig.heatmap {
         if h.has_every_cell() {

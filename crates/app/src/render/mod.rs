@@ -8,6 +8,7 @@
 
 mod chart;
 mod colour_bar;
+mod corners;
 mod fit;
 mod heatmap;
 mod hold;
@@ -18,6 +19,7 @@ mod scale;
 mod tests;
 mod ticks;
 
+pub use corners::corners;
 pub use hold::{ease_axes, hold_axes, AxisRanges};
 pub use ticks::{log_ticks, tick_label};
 
@@ -128,6 +130,17 @@ pub trait Direct {
     /// heatmap is then one image of a pixel per cell, instead of 10 000 rectangle fills
     /// (~10 ms a frame) or a bitmap the size of the plot (~5 ms at 4× CPU slowdown).
     fn stretch(&self, image: &Stretched<'_>);
+    /// Stops (`true`) or resumes (`false`) drawing; text is still measured. For a trial
+    /// layout that only gives pixels (a plot with a legend is laid out twice).
+    fn mute(&self, on: bool);
+    /// At the start of a plot's static layer (background, title, grid, ticks and axis
+    /// names), which `key` names: a backend that holds that layer draws it at once and
+    /// then nothing until [`Direct::end_layer`]. While a control is held the axes hold
+    /// still, so most frames need only the data drawn.
+    fn begin_layer(&self, key: u64);
+    /// At the end of the static layer `key`: resumes drawing, and may keep what is drawn
+    /// so far as that layer.
+    fn end_layer(&self, key: u64);
 }
 
 /// An RGB image of `size` = (columns, rows) pixels, rows top to bottom, to be drawn over

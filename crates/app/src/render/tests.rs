@@ -115,16 +115,89 @@ fn heatmap_cells_are_filled_and_blank_where_undefined() {
 /// A stretched image as drawn: size, pixels, where it goes and its clip.
 type Drawn = ((u32, u32), Vec<u8>, [i32; 4], [i32; 4]);
 
-/// A backend's own drawing, recorded.
+/// A backend's own drawing, recorded: the images stretched, and the calls in order.
 #[derive(Default)]
-struct Recorder(std::cell::RefCell<Vec<Drawn>>);
+struct Recorder(
+    std::cell::RefCell<Vec<Drawn>>,
+    std::cell::RefCell<Vec<String>>,
+);
 
 impl Direct for Recorder {
     fn dash(&self, _: &[f64]) {}
     fn stretch(&self, image: &Stretched<'_>) {
         let copy = (image.size, image.rgb.to_vec(), image.to, image.clip);
         self.0.borrow_mut().push(copy);
+        self.1.borrow_mut().push("stretch".into());
     }
+    fn mute(&self, on: bool) {
+        self.1.borrow_mut().push(format!("mute {on}"));
+    }
+    fn begin_layer(&self, key: u64) {
+        self.1.borrow_mut().push(format!("begin {key}"));
+    }
+    fn end_layer(&self, key: u64) {
+        self.1.borrow_mut().push(format!("end {key}"));
+    }
+}
+
+/// The calls a backend that draws itself gets for `fig`.
+fn calls(fig: &Figure) -> Vec<String> {
+    let rec = Recorder::default();
+    let mut svg = String::new();
+    let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+    render_with(
+        &root,
+        fig,
+        &Theme::LIGHT,
+        1.0,
+        Output { direct: Some(&rec) },
+    )
+    .unwrap();
+    rec.1.into_inner()
+}
+
+#[test]
+fn the_legend_trial_is_muted_and_the_static_layer_is_named_by_what_it_shows() {
+    let fig = sample();
+    let seen = calls(&fig);
+    assert_eq!(seen.len(), 4, "{seen:?}");
+    assert_eq!(
+        seen[..2],
+        ["mute true", "mute false"],
+        "the trial layout draws nothing"
+    );
+    let key = seen[2].strip_prefix("begin ").unwrap();
+    assert_eq!(seen[3], format!("end {key}"));
+    // Other data, same axes and title: the same layer.
+    let mut moved = fig.clone();
+    moved.series[0].points[0].1 = 0.7;
+    moved.markers[0].at = (0.2, 0.1);
+    assert_eq!(calls(&moved)[2], seen[2]);
+    // Another title, range, axis name or theme: another layer.
+    let mut titled = fig.clone();
+    titled.title = "test 2".into();
+    let mut ranged = fig.clone();
+    ranged.y.range = (-1.0, 2.0);
+    let mut named = fig.clone();
+    named.x.label = "time τ".into();
+    for other in [titled, ranged, named] {
+        assert_ne!(calls(&other)[2], seen[2]);
+    }
+    let dark = {
+        let rec = Recorder::default();
+        let mut svg = String::new();
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        render_with(
+            &root,
+            &fig,
+            &Theme::DARK,
+            1.0,
+            Output { direct: Some(&rec) },
+        )
+        .unwrap();
+        rec.1.into_inner()
+    };
+    assert_ne!(dark[2], seen[2]);
 }
 
 #[test]
