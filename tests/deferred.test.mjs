@@ -68,6 +68,26 @@ test('the deferred modules are requested after the first plot, and Share opens a
   }
 });
 
+test('a module that cannot be downloaded is reported on the page, and the next click fetches it again', async () => {
+  let blocked = true;
+  const before = (context) => context.route('**/web/share.js', (route) => (blocked ? route.abort('internetdisconnected') : route.continue()));
+  const { page, errors, context } = await open(browser, `${server.url}?demo=rlc`, { serviceWorkers: 'block', before });
+  try {
+    await page.click('#share-button');
+    const notice = page.locator('#notices .notice-warn', { hasText: 'share.js' });
+    await notice.waitFor({ timeout: 5000 });
+    assert.match(await notice.textContent(), /could not be loaded \(share\.js\)\. Check the connection/);
+    assert.equal(await page.locator('dialog#share-dialog[open]').count(), 0);
+    blocked = false;
+    await page.click('#share-button');
+    await page.waitForSelector('dialog#share-dialog[open]', { timeout: 5000 });
+    // What the failed download logged; nothing else went wrong.
+    assert.ok(errors.every((e) => /share\.js|Failed to (load|fetch)|ERR_INTERNET_DISCONNECTED/.test(e)), JSON.stringify(errors));
+  } finally {
+    await context.close();
+  }
+});
+
 test('a predict= page loads the prediction form with the page; an embed the host API', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&predict=regime&embed=1`, { serviceWorkers: 'block' });
   try {

@@ -118,8 +118,8 @@ function prefetchLater() {
 
 /**
  * Runs `use(module)` once `later(name)` has the module. A failed call in it is a wasm
- * failure (reportFailure recovers); a module that could not be fetched is not: it is
- * reported on the console and the next use fetches it again.
+ * failure (reportFailure recovers); a module that could not be fetched is not: the page
+ * says so, and the next use fetches it again.
  */
 function withModule(name, use) {
   later(name).then((m) => {
@@ -128,7 +128,10 @@ function withModule(name, use) {
     } catch (err) {
       reportFailure(err);
     }
-  }, (err) => console.warn(`Zeta Lab: ${name}.js could not be loaded:`, err && err.message));
+  }, (err) => {
+    console.warn(`Zeta Lab: ${name}.js could not be loaded:`, err && err.message);
+    notify(app.notices, t('moduleFailed', { text: `${name}.js` }), 'warn');
+  });
 }
 
 /** Saves a file through download.js (which stamps the view's state token into it). */

@@ -25,9 +25,14 @@ export async function launch(extraArgs = []) {
   });
 }
 
-/** Opens `url` in a fresh context; returns {page, errors, context}. */
+/**
+ * Opens `url` in a fresh context; returns {page, errors, context}. `options` are the
+ * context's, but for `before(context)`, which runs before the page is opened (routes).
+ */
 export async function open(browser, url, options = {}) {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, ...options });
+  const { before, ...contextOptions } = options;
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, ...contextOptions });
+  if (before) await before(context);
   const page = await context.newPage();
   const errors = [];
   page.on('console', (msg) => {

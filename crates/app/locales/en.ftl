@@ -36,6 +36,7 @@ page-dismiss = Dismiss notice
 page-failed = Something went wrong and the demo was restarted: { $text }
 page-no-demo = There is no demo called “{ $id }”; showing { $fallback }.
 page-no-wasm = The solver could not be loaded ({ $text }). This page needs WebAssembly.
+page-module-failed = This part of the page could not be loaded ({ $text }). Check the connection and try again.
 page-copy = Copy
 page-equation = Equation
 page-tour-head = The paper, figure by figure

@@ -28,6 +28,7 @@ page-dismiss = Cerrar aviso
 page-failed = Algo salió mal y la demostración se reinició: { $text }
 page-no-demo = No hay ninguna demostración llamada «{ $id }»; se muestra { $fallback }.
 page-no-wasm = No se pudo cargar el resolvedor ({ $text }). Esta página necesita WebAssembly.
+page-module-failed = No se pudo cargar esta parte de la página ({ $text }). Compruebe la conexión e inténtelo de nuevo.
 page-copy = Copiar
 page-equation = Ecuación
 page-tour-head = El artículo, figura por figura

@@ -1220,6 +1220,7 @@ page-dismiss = Fermer l’avis
 page-failed = Une erreur s’est produite et la démonstration a été relancée : { $text }
 page-no-demo = Il n’existe pas de démonstration « { $id } » ; affichage de { $fallback }.
 page-no-wasm = Le solveur n’a pas pu être chargé ({ $text }). Cette page nécessite WebAssembly.
+page-module-failed = Cette partie de la page n’a pas pu être chargée ({ $text }). Vérifiez la connexion et réessayez.
 page-copy = Copier
 page-equation = Équation
 page-tour-head = L’article, figure par figure

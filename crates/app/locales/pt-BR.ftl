@@ -1220,6 +1220,7 @@ page-dismiss = Fechar aviso
 page-failed = Algo deu errado e a demonstração foi reiniciada: { $text }
 page-no-demo = Não existe demonstração chamada “{ $id }”; exibindo { $fallback }.
 page-no-wasm = Não foi possível carregar o solucionador ({ $text }). Esta página precisa de WebAssembly.
+page-module-failed = Não foi possível carregar esta parte da página ({ $text }). Verifique a conexão e tente de novo.
 page-copy = Copiar
 page-equation = Equação
 page-tour-head = O artigo, figura por figura

@@ -1217,6 +1217,7 @@ page-dismiss = 关闭通知
 page-failed = 出现错误，演示已重新启动：{ $text }
 page-no-demo = 没有名为“{ $id }”的演示；显示 { $fallback }。
 page-no-wasm = 无法加载求解器（{ $text }）。本页需要 WebAssembly。
+page-module-failed = 无法加载页面的这一部分（{ $text }）。请检查网络连接后重试。
 page-copy = 复制
 page-equation = 方程
 page-tour-head = 论文，逐图核对
