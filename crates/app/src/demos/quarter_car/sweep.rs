@@ -2,14 +2,15 @@
 //!
 //! Both are computed at `ω_n = 1` rad/s and scaled: for a release from rest the settling
 //! time is `T(ζ, band)/ω_n` (the response is `x₀·f(ω_n·t; ζ)`), so moving the mass or the
-//! spring rescales the cached curve instead of sweeping again.
+//! spring rescales the cached curve instead of sweeping again. Its breaks are the jumps
+//! in closed form ([`settling_time_jumps_from_rest`]).
 
 use super::{QuarterCar, Sweep, OPTIMUM_GRID, OPTIMUM_RANGE, SWEEP_POINTS};
 use zeta_solver::design::sweep::{
     fastest_settling_zeta, sweep_zeta_into, ZetaCurves, ZetaOptimum, ZetaSweepConfig,
 };
 use zeta_solver::grid::linspace;
-use zeta_solver::metrics::free::settling_time_jumps;
+use zeta_solver::metrics::free::settling_time_jumps_from_rest;
 
 /// The settling-time sweep at `ω_n = 1`, kept while the band and the ζ range stay the same
 /// (moving `m`, `k`, `c` or `zeta` alone then costs no sweep).
@@ -64,7 +65,7 @@ impl QuarterCar {
             cache.zetas = linspace(z_lo, z_hi, SWEEP_POINTS);
             let cfg = unit(cfg);
             sweep_zeta_into(&cache.zetas, &cfg, &mut cache.curves);
-            let jumps = settling_time_jumps(cfg.wn, cfg.x0, cfg.v0, cfg.band, &cache.zetas);
+            let jumps = settling_time_jumps_from_rest(cfg.band, z_lo, z_hi);
             cache.points.clear();
             let mut next_jump = jumps.iter().peekable();
             for (&z, &ts) in cache.zetas.iter().zip(&cache.curves.settling_time) {
