@@ -175,6 +175,81 @@ fn scaled(m: &Mat, s: f64) -> Mat {
     out
 }
 
+/// `F·z` for a flow `F = e^{Mτ}` of the augmented system, `free` when `M` is the matrix
+/// in flight: [`mat_vec`] without the terms that are exactly zero. `M` is block
+/// upper-triangular — the road `(u, s, 1)` does not depend on the car; `s` and `1` are
+/// constant — and [`expm`]'s sums and products keep its zeros exactly zero, so in every
+/// flow rows 5 and 6 are those of the identity, row 4 is zero in columns 0–3, and rows 0–3
+/// are zero in column 6 in contact (no gravity term) and in columns 4–5 in flight (no road
+/// term). The sums of the remaining terms, in the same order, are the same numbers.
+fn apply(f: &Mat, z: &Z, free: bool) -> Z {
+    let mut out = *z;
+    for (o, r) in out[..4].iter_mut().zip(&f[..4]) {
+        let car = r[0] * z[0] + r[1] * z[1] + r[2] * z[2] + r[3] * z[3];
+        *o = if free {
+            car + r[6] * z[6]
+        } else {
+            car + r[4] * z[4] + r[5] * z[5]
+        };
+    }
+    let r = &f[4];
+    out[4] = r[4] * z[4] + r[5] * z[5] + r[6] * z[6];
+    out
+}
+
+/// The states at a piece's Gauss nodes and end, from its start `z` ([`apply`]).
+fn at_nodes(f: &Flow, z: &Z, free: bool) -> [Z; 4] {
+    [
+        apply(&f[0], z, free),
+        apply(&f[1], z, free),
+        apply(&f[2], z, free),
+        apply(&f[3], z, free),
+    ]
+}
+
+/// Most terms of a [`TravelSeries`].
+const SERIES_TERMS: usize = 40;
+
+/// The suspension travel `z_s − z_u` along the exact flow `e^{Mτ}·z` as its Taylor series
+/// `Σ_k c_k·τ^k`, `c_k = (M^k·z)_0/k! − (M^k·z)_1/k!`, for `0 ≤ τ ≤ reach`: one cheap
+/// polynomial instead of a matrix exponential per evaluation.
+struct TravelSeries {
+    coefficients: Vec<f64>,
+}
+
+impl TravelSeries {
+    /// The series, summed until two successive terms of the state, `(M^k·z)·reach^k/k!`
+    /// (displacements, and velocities times `reach`), are below `1e-17·scale` (m); `None`
+    /// when that takes more than [`SERIES_TERMS`] terms. On a piece (`reach` at most a
+    /// two-hundredth of the wheel-hop period) the terms fall by `|λ|·reach/k ≲ 0.03/k` a
+    /// step, so a dozen terms do.
+    fn new(m: &Mat, z: &Z, reach: f64, scale: f64) -> Option<Self> {
+        let tol = 1e-17 * scale;
+        let (mut v, mut power, mut small) = (*z, 1.0, 0);
+        let mut coefficients = vec![v[0] - v[1]];
+        for k in 1..SERIES_TERMS {
+            let inv = 1.0 / k as f64;
+            v = mat_vec(m, &v).map(|x| x * inv);
+            power *= reach;
+            coefficients.push(v[0] - v[1]);
+            let size = (v[0].abs() + v[1].abs() + reach * (v[2].abs() + v[3].abs())) * power;
+            small = if size <= tol { small + 1 } else { 0 };
+            if small == 2 && k >= 3 {
+                return Some(Self { coefficients });
+            }
+        }
+        None
+    }
+
+    /// `z_s − z_u` at `τ` (Horner).
+    fn at(&self, tau: f64) -> f64 {
+        self.coefficients
+            .iter()
+            .rev()
+            .fold(0.0, |acc, c| acc * tau + c)
+    }
+}
+
 /// The running integrals and extremes.
 struct Tally {
     acc2: f64,
@@ -208,8 +283,13 @@ struct Runner<'a> {
 }
 
 impl Runner<'_> {
+    /// Whether the mode's matrix is the one in flight (only with a unilateral tyre).
+    fn free(&self, flight: bool) -> bool {
+        flight && self.unilateral
+    }
+
     fn matrix(&self, flight: bool) -> &Mat {
-        if flight && self.unilateral {
+        if self.free(flight) {
             &self.flight_m
         } else {
             &self.contact_m
@@ -229,8 +309,8 @@ impl Runner<'_> {
 
     /// The flow over a full piece of length `h`, from the cache when a piece of the same
     /// length (to 1e-12) was seen.
-    fn cached(&mut self, h: f64, flight: bool) -> Flow {
-        let want_flight = flight && self.unilateral;
+    fn cached(&mut self, h: f64, flight: bool) -> &Flow {
+        let want_flight = self.free(flight);
         let hit = self
             .cache
             .iter()
@@ -245,13 +325,11 @@ impl Runner<'_> {
                 self.cache.len() - 1
             }
         };
+        let (_, contact, in_flight) = &mut self.cache[i];
         if !want_flight {
-            return self.cache[i].1;
+            return contact;
         }
-        if self.cache[i].2.is_none() {
-            self.cache[i].2 = Some(flow(&self.flight_m, h));
-        }
-        self.cache[i].2.unwrap_or(self.cache[i].1)
+        in_flight.get_or_insert_with(|| flow(&self.flight_m, h))
     }
 
     /// Whether state `z` would leave the current mode: contact → flight when `F_t < 0`,
@@ -270,25 +348,19 @@ impl Runner<'_> {
     fn step(&mut self, z: &mut Z, t: f64, h: f64, flight: &mut bool) {
         let (mut t, mut rem, mut switches) = (t, h, 0);
         loop {
-            let fl = if rem == h {
-                self.cached(h, *flight)
+            let free = self.free(*flight);
+            let pts = if rem == h {
+                at_nodes(self.cached(h, *flight), z, free)
             } else {
-                flow(self.matrix(*flight), rem)
+                at_nodes(&flow(self.matrix(*flight), rem), z, free)
             };
-            let pts = [
-                mat_vec(&fl[0], z),
-                mat_vec(&fl[1], z),
-                mat_vec(&fl[2], z),
-                mat_vec(&fl[3], z),
-            ];
             let taus = [NODES[0] * rem, NODES[1] * rem, NODES[2] * rem, rem];
             let hit = pts.iter().position(|p| self.leaving(p, *flight) > 0.0);
             if let (Some(k), true) = (hit, switches < MAX_SWITCHES_PER_STEP) {
                 let lo = if k == 0 { 0.0 } else { taus[k - 1] };
                 let tau = self.locate(z, *flight, lo, taus[k], h);
                 if tau > 0.0 {
-                    let piece = flow(self.matrix(*flight), tau);
-                    let pts = piece.map(|m| mat_vec(&m, z));
+                    let pts = at_nodes(&flow(self.matrix(*flight), tau), z, free);
                     let end = self.piece(z, t, tau, &pts, *flight);
                     *z = end;
                     t += tau;
@@ -396,11 +468,18 @@ impl Runner<'_> {
         }
         for &(z, flight, t0, (lo, hi)) in self.tally.brackets.iter().flatten() {
             let m = *self.matrix(flight);
-            let f = |tau: f64| {
-                let p = mat_vec(&expm(&scaled(&m, tau)), &z);
-                (p[0] - p[1]).abs()
+            let found = match TravelSeries::new(&m, &z, hi, self.tally.peak) {
+                Some(series) => crate::search::maximise(|tau| series.at(tau).abs(), lo, hi),
+                None => crate::search::maximise(
+                    |tau| {
+                        let p = mat_vec(&expm(&scaled(&m, tau)), &z);
+                        (p[0] - p[1]).abs()
+                    },
+                    lo,
+                    hi,
+                ),
             };
-            if let Some((tau, v)) = crate::search::maximise(f, lo, hi) {
+            if let Some((tau, v)) = found {
                 if v > best.0 {
                     best = (v, t0 + tau);
                 }
@@ -613,5 +692,54 @@ impl TwoDof {
                 max_step: max_step * (1.0 + 1e-9),
             },
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::two_dof::TwoDofConfig;
+
+    fn car() -> TwoDof {
+        let c_t = 300.0;
+        TwoDof::new(TwoDofConfig {
+            c_t,
+            ..TwoDofConfig::default()
+        })
+        .unwrap()
+    }
+
+    #[test]
+    fn apply_gives_the_same_numbers_as_the_full_product() {
+        let z: Z = [0.031, -0.017, 0.42, -1.3, 0.012, 0.25, 1.0];
+        for free in [false, true] {
+            let m = car().augmented(free);
+            for tau in [1e-4, 4.2e-4, 3e-3, 0.05] {
+                for f in flow(&m, tau) {
+                    let (full, fast) = (mat_vec(&f, &z), apply(&f, &z, free));
+                    // Equal as numbers (a zero's sign aside).
+                    assert!(
+                        full.iter().zip(&fast).all(|(a, b)| a == b),
+                        "{full:?} {fast:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_travel_series_follows_the_exact_flow() {
+        let z: Z = [0.031, -0.017, 0.42, -1.3, 0.012, 0.25, 1.0];
+        for free in [false, true] {
+            let m = car().augmented(free);
+            let reach = 4.2e-4;
+            let series = TravelSeries::new(&m, &z, reach, 0.05).unwrap();
+            for k in 0..=10 {
+                let tau = reach * f64::from(k) / 10.0;
+                let p = mat_vec(&expm(&scaled(&m, tau)), &z);
+                let exact = p[0] - p[1];
+                assert!((series.at(tau) - exact).abs() < 1e-15, "{tau}");
+            }
+        }
     }
 }

@@ -209,13 +209,18 @@ fn settling_time_is_finite_and_positive_across_ten_thousand_dampings() {
 
 #[test]
 fn settling_time_jumps_are_the_closed_form_zetas_from_rest() {
-    use zeta_solver::metrics::free::settling_time_jumps;
+    use zeta_solver::metrics::free::{settling_time_jumps, settling_time_jumps_from_rest};
     // From rest the k-th extremum is e^{−kπζ/√(1−ζ²)}; it meets the band b at
     // ζ_k = L/√((kπ)² + L²), L = ln(1/b).
     for &b in &[0.05, 0.02, 0.2] {
         let band = SettlingBand::new(b).unwrap();
         let zetas: Vec<f64> = (0..400).map(|i| 0.02 + 2.0 * i as f64 / 399.0).collect();
         let jumps = settling_time_jumps(3.0, 0.06, 0.0, band, &zetas);
+        let closed = settling_time_jumps_from_rest(band, zetas[0], zetas[399]);
+        assert_eq!(closed.len(), jumps.len(), "band {b}: {closed:?}");
+        for (c, j) in closed.iter().zip(&jumps) {
+            assert!((c - j).abs() < 1e-13 * j, "band {b}: {c} vs {j}");
+        }
         let l = (1.0 / b).ln();
         let mut expect: Vec<f64> = (1..200)
             .map(|k| l / ((k as f64 * PI).powi(2) + l * l).sqrt())

@@ -66,6 +66,25 @@ pub fn live(id: &str, query: &str) -> Live {
     }
 }
 
+/// Moves `(key, value)` made in turn on one live demo `id` (from `query`): after each, the
+/// frame is the one a fresh demo shows for the same values, so what a demo keeps between
+/// updates is never stale.
+pub fn assert_kept_is_fresh(id: &str, query: &str, moves: &[(&str, &str)]) {
+    let mut live = live(id, query);
+    let spec = live.demo.spec();
+    for (key, v) in moves {
+        live.params.set_raw(&spec, key, v);
+        let kept = live.demo.update(&live.params);
+        let mut demo = create(id).unwrap_or_else(|| panic!("no demo {id}"));
+        let fresh = demo.update(&live.params);
+        assert_eq!(
+            format!("{kept:?}"),
+            format!("{fresh:?}"),
+            "{id} after {key}={v}"
+        );
+    }
+}
+
 /// The parameter values of `query` for demo `id` (every value in range and well formed).
 pub fn params(id: &str, query: &str) -> Params {
     let demo = create(id).unwrap_or_else(|| panic!("no demo {id}"));

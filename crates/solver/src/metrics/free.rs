@@ -373,6 +373,30 @@ pub fn settling_time_jumps(
     jumps
 }
 
+/// Most jumps [`settling_time_jumps_from_rest`] lists (ζ down to `L/(10⁶·π)`).
+const MAX_JUMPS: f64 = 1e6;
+
+/// The damping ratios in `[lo, hi]` \[-\] where the free-response settling time jumps for
+/// a release from rest (`v0 = 0`; any `x0 ≠ 0` and `ω_n`), ascending, in closed form: the
+/// k-th extremum `x0·e^{−kπζ/√(1−ζ²)}` meets the band `±b·|x0|` at
+/// `ζ_k = L/√((kπ)² + L²)`, `L = ln(1/b)`. The same jumps as [`settling_time_jumps`] finds
+/// by bisection (to 1e-13), without evaluating a response. Empty unless `0 < lo ≤ hi`.
+pub fn settling_time_jumps_from_rest(band: SettlingBand, lo: f64, hi: f64) -> Vec<f64> {
+    let l = (1.0 / band.fraction()).ln();
+    if !(lo > 0.0 && lo <= hi && l.is_finite() && l > 0.0) {
+        return Vec::new();
+    }
+    // ζ_k ≥ lo ⇔ kπ ≤ L·√(1/lo² − 1).
+    let k_max = (l * (1.0 / (lo * lo) - 1.0).max(0.0).sqrt() / PI)
+        .floor()
+        .min(MAX_JUMPS) as usize;
+    (1..=k_max)
+        .rev()
+        .map(|k| l / ((k as f64 * PI).powi(2) + l * l).sqrt())
+        .filter(|z| (lo..=hi).contains(z))
+        .collect()
+}
+
 /// Jumps of `piece` between `a` and `b` (whose pieces differ), in ascending order.
 fn bisect_jumps(
     piece: &impl Fn(f64) -> Option<u64>,

@@ -68,10 +68,43 @@ impl Section {
     }
 }
 
-/// The Tacoma Narrows flutter demo. Keeps the last twist history for the animation.
+/// The Tacoma Narrows flutter demo. Keeps the last twist history for the animation, and
+/// the critical speed and the locus while the deck and the aerodynamics stay the same.
 #[derive(Debug, Clone, Default)]
 pub struct Flutter {
     last: Option<TwistHistory>,
+    small: Option<SmallAmplitude>,
+}
+
+/// What does not depend on the wind speed, the initial twist or `θ_s`: the critical speed
+/// and the locus, for the model whose configuration (with `θ_s` set to 0) is the key.
+#[derive(Debug, Clone)]
+struct SmallAmplitude {
+    key: ScanlanConfig,
+    u_crit: Option<f64>,
+    locus: Vec<FlutterState>,
+}
+
+impl Flutter {
+    /// The critical speed and the locus of `model`, computed again only when its
+    /// small-amplitude mode can have changed (not for `U`, `θ₀` or `θ_s`).
+    fn small_amplitude(&mut self, model: &ScanlanModel) -> (Option<f64>, Vec<FlutterState>) {
+        let key = ScanlanConfig {
+            saturation: 0.0,
+            ..model.config()
+        };
+        let small = match self.small.take() {
+            Some(s) if s.key == key => s,
+            _ => SmallAmplitude {
+                key,
+                u_crit: model.critical_speed(),
+                locus: model.locus(0.0, U_MAX, LOCUS_SAMPLES),
+            },
+        };
+        let out = (small.u_crit, small.locus.clone());
+        self.small = Some(small);
+        out
+    }
 }
 
 /// Typed parameters, filled from the declaration.
@@ -157,17 +190,18 @@ impl Model for Flutter {
             .simulate(p.u, theta0, window, STEPS_PER_PERIOD)
             .unwrap_or_default();
         self.last = Some(history.clone());
+        let (u_crit, locus) = self.small_amplitude(&model);
         Some(Results {
             model,
             p: *p,
             state,
             regime,
-            u_crit: model.critical_speed(),
+            u_crit,
             limit,
             t_large: limit.and_then(|lc| model.time_between(p.u, theta0, 0.9 * lc)),
             window,
             history,
-            locus: model.locus(0.0, U_MAX, LOCUS_SAMPLES),
+            locus,
         })
     }
 

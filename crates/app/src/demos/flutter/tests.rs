@@ -96,3 +96,9 @@ fn the_table_has_a_row_for_every_reachable_regime() {
         .iter()
         .all(|(_, c)| c.len() == table.columns.len()));
 }
+
+#[test]
+fn the_kept_critical_speed_and_locus_are_those_computed_afresh() {
+    let moves = [("U", "30"), ("theta_s", "4"), ("f0", "0.3")];
+    crate::demos::testing::assert_kept_is_fresh("flutter", "theta0=2", &moves);
+}

@@ -137,3 +137,44 @@ fn descriptions_follow_the_design() {
     let strip = &past_jump.figures[2].description;
     assert!(strip.contains("inside this range"), "{strip}");
 }
+
+#[test]
+fn the_rescaled_sweep_is_the_sweep_at_this_natural_frequency() {
+    use zeta_solver::design::sweep::{fastest_settling_zeta, sweep_zeta_into, ZetaCurves};
+    use zeta_solver::grid::linspace;
+    // Moved away from the first car, so that the cached unit sweep is rescaled.
+    let mut live = QuarterCar::live("band=2");
+    let s = live.demo.spec();
+    for (m, k) in [(550.0f64, 61_000.0f64), (120.0, 9_000.0)] {
+        live.params.set_raw(&s, "m", &m.to_string());
+        live.params.set_raw(&s, "k", &k.to_string());
+        let f = live.demo.update(&live.params);
+        let cfg = ZetaSweepConfig {
+            wn: (k / m).sqrt(),
+            x0: X0_DEFAULT,
+            v0: 0.0,
+            band: SettlingBand::new(0.02).unwrap(),
+        };
+        let best = fastest_settling_zeta(&cfg, OPTIMUM_RANGE.0, OPTIMUM_RANGE.1, OPTIMUM_GRID);
+        let best = best.unwrap();
+        assert!(close(number(&f, "zeta_argmin"), best.zeta, 1e-12));
+        assert!(close(number(&f, "settling_min"), best.settling_time, 1e-12));
+        let zeta = number(&f, "zeta");
+        let zetas = linspace(
+            (0.9 * zeta).clamp(0.02, 0.1),
+            (1.3 * zeta).clamp(2.0, 15.0),
+            SWEEP_POINTS,
+        );
+        let mut curves = ZetaCurves::default();
+        sweep_zeta_into(&zetas, &cfg, &mut curves);
+        let direct: Vec<(f64, f64)> = zetas.into_iter().zip(curves.settling_time).collect();
+        let shown = &f.figures[1].series[0].points;
+        let mut compared = 0;
+        for (z, t) in shown.iter().filter(|p| p.1.is_finite()) {
+            let at = direct.iter().find(|d| d.0 == *z).unwrap();
+            assert!(close(*t, at.1, 1e-12), "ζ = {z}: {t} vs {}", at.1);
+            compared += 1;
+        }
+        assert!(compared > SWEEP_POINTS / 2, "{compared}");
+    }
+}

@@ -4,7 +4,8 @@
 //! Cost per update is bounded: the solver's road samples and exact pieces (a few thousand
 //! at the defaults, at most ≈ 45 000 at the stiffest tyre on the slowest sine), a random
 //! road of [`ROAD_COMPONENTS`] sinusoids rebuilt only when its class, speed or seed
-//! changes, and a [`FRF_POINTS`]-point frequency sweep.
+//! changes, and a [`FRF_POINTS`]-point frequency sweep. The run is kept while the car, the
+//! road and the duration stay the same, the sweep while the car does.
 
 use super::{RoadKind, P};
 use zeta_solver::grid::{interpolate, logspace_into};
@@ -39,6 +40,11 @@ pub(super) struct Run {
     samples: SampledRoad,
     road: Road,
     random: Option<(RoadKey, RandomRoad)>,
+    /// What the last run was of (car, road, end) and its metrics: a slider the run does not
+    /// depend on (the sine's frequency on a bump road, say) costs no run.
+    last_run: Option<(TwoDof, Road, f64, Option<ExactMetrics>)>,
+    /// The car the last sweep was of.
+    last_sweep: Option<TwoDof>,
     omegas: Vec<f64>,
     /// Frequency responses at `omegas`.
     pub frf: Vec<Frf>,
@@ -110,8 +116,20 @@ impl Run {
     }
 
     /// The exact response from rest over `[0, t_end]`, the tyre unable to pull; `None`
-    /// (and an empty run) if the solver refuses the run.
+    /// (and an empty run) if the solver refuses the run. Kept while the car, the road and
+    /// `t_end` stay the same.
     pub fn integrate(&mut self, car: &TwoDof, t_end: f64) -> Option<ExactMetrics> {
+        if let Some((c, road, t, metrics)) = &self.last_run {
+            if c == car && *road == self.road && *t == t_end {
+                return *metrics;
+            }
+        }
+        let metrics = self.run(car, t_end);
+        self.last_run = Some((*car, self.road.clone(), t_end, metrics));
+        metrics
+    }
+
+    fn run(&mut self, car: &TwoDof, t_end: f64) -> Option<ExactMetrics> {
         let run = car
             .ride_exact(&self.road, t_end, Tyre::Unilateral, &mut self.samples)
             .ok();
@@ -127,8 +145,13 @@ impl Run {
         Some(run.metrics)
     }
 
-    /// The frequency responses over [`FRF_RANGE`] at log-spaced frequencies.
+    /// The frequency responses over [`FRF_RANGE`] at log-spaced frequencies (kept while the
+    /// car stays the same).
     pub fn sweep(&mut self, car: &TwoDof) {
+        if self.last_sweep.as_ref() == Some(car) {
+            return;
+        }
+        self.last_sweep = Some(*car);
         let tau = std::f64::consts::TAU;
         self.omegas.clear();
         self.omegas.resize(FRF_POINTS, 0.0);

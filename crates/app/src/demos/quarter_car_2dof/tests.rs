@@ -125,3 +125,15 @@ fn the_random_road_shows_the_stationary_comfort_values() {
         ""
     );
 }
+
+#[test]
+fn a_kept_run_is_the_one_computed_afresh() {
+    // The sine's frequency and the seed leave the bump's run as it was; the mass does not.
+    let moves = [
+        ("f_road", "3"),
+        ("seed", "4"),
+        ("ms", "420"),
+        ("f_road", "2"),
+    ];
+    crate::demos::testing::assert_kept_is_fresh("quarter-car-2dof", "", &moves);
+}

@@ -70,22 +70,67 @@ fn family_label() -> String {
     )
 }
 
-/// |H(r)| for the family and the current ζ, with the peak, the half-power band and the drive.
-pub(super) fn magnitude(res: &Results, grid: &[f64]) -> Figure {
-    let (z, view) = (res.p.zeta, res.p.view);
-    let top_gain = res.peak.map_or(1.0, |p| p.gain);
-    let (y_range, top) = match view {
+/// The magnitude plot's y range and the top its curves are clipped at, in the view and for
+/// the current ζ's resonant peak.
+fn magnitude_range(view: View, peak: Option<frf::Peak>) -> ((f64, f64), f64) {
+    match view {
         View::Db => (DB_RANGE, DB_RANGE.1),
         View::Linear => {
-            let top = (1.2 * top_gain).max(2.5);
+            let top = (1.2 * peak.map_or(1.0, |p| p.gain)).max(2.5);
             ((0.0, top), top)
         }
-    };
+    }
+}
+
+/// The family's curves on the frequency grid, kept between updates: the phases never
+/// change, the magnitudes only with the view and the top they are clipped at (so moving
+/// `r`, `wn` or `F0` recomputes none of them).
+#[derive(Debug, Clone, Default)]
+pub(super) struct Family {
+    /// View and top (bits) of `magnitude`.
+    key: Option<(View, u64)>,
+    /// |H(r)| per member of [`FAMILY`], clipped ([`clip_above`]).
+    magnitude: Vec<Vec<(f64, f64)>>,
+    /// ∠H(r) \[°\] per member of [`FAMILY`].
+    phase: Vec<Vec<(f64, f64)>>,
+}
+
+impl Family {
+    /// Brings the curves up to date for this view and current ζ's peak.
+    pub(super) fn update(&mut self, grid: &[f64], view: View, peak: Option<frf::Peak>) {
+        let (_, top) = magnitude_range(view, peak);
+        let key = Some((view, top.to_bits()));
+        if self.key != key {
+            self.key = key;
+            self.magnitude = FAMILY
+                .iter()
+                .map(|&zf| {
+                    let mut pts = sampled(grid, |r| gain(r, zf, view));
+                    clip_above(&mut pts, top);
+                    pts
+                })
+                .collect();
+        }
+        if self.phase.is_empty() {
+            self.phase = FAMILY.iter().map(|&zf| degrees(grid, zf)).collect();
+        }
+    }
+}
+
+/// ∠H(r) in degrees on the grid.
+fn degrees(grid: &[f64], zeta: f64) -> Vec<(f64, f64)> {
+    sampled(grid, |r| frf::phase(r, zeta).to_degrees())
+}
+
+/// |H(r)| for the family and the current ζ, with the peak, the half-power band and the drive.
+pub(super) fn magnitude(res: &Results, grid: &[f64], family: &Family) -> Figure {
+    let (z, view) = (res.p.zeta, res.p.view);
+    let top_gain = res.peak.map_or(1.0, |p| p.gain);
+    let (y_range, top) = magnitude_range(view, res.peak);
     let mut series = Vec::with_capacity(FAMILY.len() + 4);
     let mut markers = Vec::new();
-    for (i, &zf) in FAMILY.iter().enumerate() {
-        let mut pts = sampled(grid, |r| gain(r, zf, view));
-        clip_above(&mut pts, top);
+    for (i, (&zf, pts)) in FAMILY.iter().zip(&family.magnitude).enumerate() {
+        let pts = pts.clone();
         let label = if i == 0 {
             family_label()
         } else {
@@ -172,27 +217,26 @@ pub(super) fn magnitude(res: &Results, grid: &[f64]) -> Figure {
 }
 
 /// ∠H(r) in degrees for the family and the current ζ, with the drive.
-pub(super) fn phase(res: &Results, grid: &[f64]) -> Figure {
+pub(super) fn phase(res: &Results, grid: &[f64], family: &Family) -> Figure {
     let z = res.p.zeta;
-    let degrees = |zeta: f64| sampled(grid, |r| frf::phase(r, zeta).to_degrees());
     let mut fig = Figure::plot(
         t!("resonance-plot-phase"),
         ratio_axis(),
         Axis::linear(t!("resonance-axis-phase"), "°", PHASE_RANGE),
     );
-    for (i, &zf) in FAMILY.iter().enumerate() {
+    for (i, pts) in family.phase.iter().enumerate() {
         let label = if i == 0 {
             family_label()
         } else {
             String::new()
         };
-        fig = fig.with_line(label, degrees(zf), LineStyle::dotted(Ink::Black, 1.2));
+        fig = fig.with_line(label, pts.clone(), LineStyle::dotted(Ink::Black, 1.2));
     }
     let drive = res.p.r;
     let ph = frf::phase(drive, z);
     fig.with_line(
         t!("resonance-current", zeta = trimmed(z, 3)),
-        degrees(z),
+        degrees(grid, z),
         LineStyle::solid(Ink::Blue, 3.0),
     )
     .with_line(

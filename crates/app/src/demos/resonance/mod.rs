@@ -108,10 +108,12 @@ pub struct Results {
     t_end: f64,
 }
 
-/// The forced-response demo. Holds its frequency grid so updates do not rebuild it.
+/// The forced-response demo. Holds its frequency grid and the family's curves on it so
+/// updates do not rebuild them.
 #[derive(Debug, Clone)]
 pub struct Resonance {
     grid: Vec<f64>,
+    family: frequency::Family,
 }
 
 impl Default for Resonance {
@@ -119,6 +121,7 @@ impl Default for Resonance {
         Self {
             grid: frf::stretched_logspace(R_RANGE.0, R_RANGE.1, FRF_SAMPLES, GRID_STRETCH)
                 .unwrap_or_default(),
+            family: frequency::Family::default(),
         }
     }
 }
@@ -129,9 +132,11 @@ impl Model for Resonance {
 
     fn step(&mut self, p: &P) -> Option<Results> {
         let resp = p.response()?;
+        let peak = frf::peak(p.zeta).filter(|pk| pk.ratio > 0.0);
+        self.family.update(&self.grid, p.view, peak);
         Some(Results {
             p: *p,
-            peak: frf::peak(p.zeta).filter(|pk| pk.ratio > 0.0),
+            peak,
             t_end: p.window(&resp),
             resp,
         })
@@ -139,8 +144,8 @@ impl Model for Resonance {
 
     fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
         vec![
-            frequency::magnitude(r, &self.grid),
-            frequency::phase(r, &self.grid),
+            frequency::magnitude(r, &self.grid, &self.family),
+            frequency::phase(r, &self.grid, &self.family),
             time::response(r),
         ]
     }

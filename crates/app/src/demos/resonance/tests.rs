@@ -166,3 +166,9 @@ fn no_beat_period_where_no_beat_shows() {
         "none (no free oscillation, ζ ≥ 1)"
     );
 }
+
+#[test]
+fn the_kept_family_is_the_one_computed_afresh() {
+    let moves = [("r", "2"), ("zeta", "0.05"), ("view", "db")];
+    crate::demos::testing::assert_kept_is_fresh("resonance", "wn=3", &moves);
+}
