@@ -63,22 +63,31 @@ export function quantile(sorted, q) {
  */
 export async function installSlider(page) {
   await page.evaluate(() => {
-    const frame = () => new Promise((r) => requestAnimationFrame(() => r(performance.now())));
+    // When each frame's first animation-frame callback began, by the frame's timestamp:
+    // every callback, the app's included, goes through this wrapper from now on.
+    const raf = window.requestAnimationFrame.bind(window);
+    const firstCallback = new Map();
+    window.requestAnimationFrame = (cb) =>
+      raf((ts) => {
+        if (!firstCallback.has(ts)) firstCallback.set(ts, performance.now());
+        cb(ts);
+      });
+    const frame = () => new Promise((r) => requestAnimationFrame((ts) => r(ts)));
     window.__slideOnce = async (range, f) => {
       const min = Number(range.min);
       const max = Number(range.max);
       await frame(); // start from a quiet frame
-      // Three callbacks of the same frame, in order: ours (start), the app's redraw, ours (end).
-      let before = 0;
-      requestAnimationFrame(() => {
-        before = performance.now();
-      });
+      firstCallback.clear();
       const t0 = performance.now();
       range.value = String(min + f * (max - min));
       range.dispatchEvent(new Event('input', { bubbles: true }));
       const handled = performance.now() - t0;
-      const after = await frame();
-      return handled + (after - before);
+      // The frame that redraws: from its first callback to ours, registered after the
+      // app's redraw. From its first callback, not from one of ours registered before the
+      // input: an app that asked for the frame earlier (a study finishing, a plot scrolled
+      // into view) has its callback run before any of ours.
+      const ts = await frame();
+      return handled + (performance.now() - firstCallback.get(ts));
     };
   });
 }

@@ -193,7 +193,7 @@ test('integrators: a moved ζ shows a coarse convergence study marked provisiona
   assert.deepEqual(now.plots.sort(), ['convergence', 'work']);
   assert.ok(Object.values(now.texts).every((t) => t.endsWith(' (provisional)')), JSON.stringify(now.texts));
   assert.equal(now.busy, 'true');
-  assert.match(now.caption, /^Provisional: from a coarse study \(at most 3000 steps per method, 6000 for forward Euler; DP45 down to 1e-6\) while the full one \(24000 and 48000 steps; DP45 down to 1e-10\) runs\./);
+  assert.match(now.caption, /^Provisional: from a coarse study \(at most 3000 steps per method, 6000 for forward Euler; DP45 down to 1e-4\) while the full one \(24000 and 48000 steps; DP45 down to 1e-10\) runs\./);
   // What does not come from the study is final at once.
   for (const key of ['max_err_rk4', 'stable_euler', 'h_used']) assert.ok(!now.readouts.includes(key), `${key} not marked`);
 

@@ -106,6 +106,7 @@ impl WorkPrecision {
 /// the problem, e.g. from [`super::stability::Stability::stable_steps`]) whose errors lie in
 /// `window`, restricted to their asymptotic range ([`asymptotic_range`], local orders within
 /// `spread` of the finest). A failed run or invalid setting gives a point with error `∞`.
+/// The same as [`dopri5_point`] for each tolerance, then [`fit_work_points`].
 #[allow(clippy::too_many_arguments)]
 pub fn dopri5_sweep<const N: usize, S: System<N>>(
     sys: &S,
@@ -118,47 +119,66 @@ pub fn dopri5_sweep<const N: usize, S: System<N>>(
     window: FitWindow,
     spread: f64,
 ) -> WorkPrecision {
+    let run = |tol| dopri5_point(sys, y0, t_end, tol, &config, &error, stable, window);
+    fit_work_points(tolerances.iter().map(|&tol| run(tol)).collect(), spread)
+}
+
+/// One run of [`dopri5_sweep`], at tolerance `tol`; `used` says only whether the run may
+/// enter the fit (tolerance-set, error finite and inside `window`): the fit decides.
+/// For a sweep computed a run at a time (a page's progressive study).
+#[allow(clippy::too_many_arguments)]
+pub fn dopri5_point<const N: usize, S: System<N>>(
+    sys: &S,
+    y0: [f64; N],
+    t_end: f64,
+    tol: f64,
+    config: impl Fn(f64) -> Dopri5Config,
+    error: impl Fn(&Solution<N>) -> f64,
+    stable: StepLimit,
+    window: FitWindow,
+) -> WorkPoint {
     let limit = match stable {
         StepLimit::UpTo(h) => h,
         _ => f64::INFINITY,
     };
-    let mut points: Vec<WorkPoint> = tolerances
-        .iter()
-        .map(|&tol| {
-            let failed = WorkPoint {
-                tolerance: tol,
-                work: 0,
-                error: f64::INFINITY,
-                stability_steps: 0,
-                steps: 0,
-                used: false,
-            };
-            let Ok(out) = Dopri5::new(config(tol)).and_then(|d| d.solve(sys, y0, 0.0, t_end))
-            else {
-                return failed;
-            };
-            let sol = &out.solution;
-            let stability_steps = sol
-                .t
-                .windows(2)
-                .filter(|w| w[1] - w[0] >= STABILITY_SHARE * limit)
-                .count();
-            let e = error(sol);
-            let mut p = WorkPoint {
-                tolerance: tol,
-                work: sol.stats.n_rhs,
-                error: if e.is_nan() { f64::INFINITY } else { e },
-                stability_steps,
-                steps: sol.stats.n_accepted,
-                used: false,
-            };
-            p.used = p.tolerance_set()
-                && p.error.is_finite()
-                && p.error > window.floor
-                && p.error < window.ceiling;
-            p
-        })
-        .collect();
+    let failed = WorkPoint {
+        tolerance: tol,
+        work: 0,
+        error: f64::INFINITY,
+        stability_steps: 0,
+        steps: 0,
+        used: false,
+    };
+    let Ok(out) = Dopri5::new(config(tol)).and_then(|d| d.solve(sys, y0, 0.0, t_end)) else {
+        return failed;
+    };
+    let sol = &out.solution;
+    let stability_steps = sol
+        .t
+        .windows(2)
+        .filter(|w| w[1] - w[0] >= STABILITY_SHARE * limit)
+        .count();
+    let e = error(sol);
+    let mut p = WorkPoint {
+        tolerance: tol,
+        work: sol.stats.n_rhs,
+        error: if e.is_nan() { f64::INFINITY } else { e },
+        stability_steps,
+        steps: sol.stats.n_accepted,
+        used: false,
+    };
+    p.used = p.tolerance_set()
+        && p.error.is_finite()
+        && p.error > window.floor
+        && p.error < window.ceiling;
+    p
+}
+
+/// The fit of [`dopri5_sweep`] over its runs (loose to tight, from [`dopri5_point`]): the
+/// finest stretch of consecutive usable runs, restricted to its asymptotic range (local
+/// orders within `spread` of the finest), fitted as `e = C·N^(−p)`; `used` then marks the
+/// fitted runs.
+pub fn fit_work_points(mut points: Vec<WorkPoint>, spread: f64) -> WorkPrecision {
     // The finest run of consecutive usable points, then its asymptotic range.
     let end = points.iter().rposition(|p| p.used).map_or(0, |i| i + 1);
     let start = points[..end]

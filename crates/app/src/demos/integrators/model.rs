@@ -8,7 +8,9 @@ use crate::demos::progressive::Progressive;
 use zeta_solver::integrate::analysis::{error_norms, FitWindow, StepLimit};
 use zeta_solver::integrate::convergence::{nested_study, NestedGrids, NestedStudy};
 use zeta_solver::integrate::stability::{region_boundary, Stability, REGION_RAYS};
-use zeta_solver::integrate::work_precision::{dopri5_sweep, WorkPrecision};
+use zeta_solver::integrate::work_precision::{
+    dopri5_point, dopri5_sweep, fit_work_points, WorkPoint, WorkPrecision,
+};
 use zeta_solver::integrate::{
     Dopri5, Dopri5Config, Dopri5Solution, Euler, ExactStepGrid, FixedStep, Heun, IntegrationError,
     Linear2, Method, Rk4, Solution, Stats,
@@ -129,6 +131,9 @@ pub struct Results {
 pub(super) struct Cache {
     pub(super) study: Option<Study>,
     regions: Option<[Vec<(f64, f64)>; 3]>,
+    /// Each fixed-step method's stable steps for the system `(ζ, ωₙ)`, which moving h, T,
+    /// x₀ or the tolerance leaves as they are.
+    limits: Option<([f64; 2], [StepLimit; 4])>,
 }
 
 impl Cache {
@@ -177,12 +182,21 @@ impl Cache {
             ]);
         }
         let study = self.study.clone()?;
+        let system = [key[0], key[1]];
+        let limit = match self.limits {
+            Some((of, limit)) if of == system => limit,
+            _ => {
+                let limit = FIXED.map(|m| m.stable_steps(&sys));
+                self.limits = Some((system, limit));
+                limit
+            }
+        };
         run_current(
             sys,
             problem.resp,
             &problem.lin,
             p,
-            study,
+            (study, limit),
             progress.is_provisional(),
         )
     }
@@ -287,6 +301,27 @@ pub(super) fn dp45_study(problem: &Problem<'_>, tols: &[f64]) -> Option<WorkPrec
     ))
 }
 
+/// One run of [`dp45_study`]'s sweep, at `tol` (a slice of a progressive study; the runs
+/// are fitted with [`dp45_fit`]).
+pub(super) fn dp45_run(problem: &Problem<'_>, tol: f64) -> Option<WorkPoint> {
+    let Problem { sys, lin, resp, p } = problem;
+    Some(dopri5_point(
+        lin,
+        [p.x0, 0.0],
+        p.t_end,
+        tol,
+        |tol| dp45_config(tol, p.x0),
+        |sol| dp45_error(resp, sol),
+        Dopri5::new(Dopri5Config::default()).ok()?.stable_steps(sys),
+        fit_window(p.x0),
+    ))
+}
+
+/// [`dp45_study`] from its runs, loose to tight.
+pub(super) fn dp45_fit(runs: Vec<WorkPoint>) -> WorkPrecision {
+    fit_work_points(runs, SPREAD)
+}
+
 /// The whole convergence study of `key` within `budget`, at once.
 fn compute_study(problem: &Problem<'_>, key: StudyKey, budget: Budget) -> Option<Study> {
     let grids = study_grids(&problem.sys, problem.p)?;
@@ -308,7 +343,7 @@ fn run_current(
     resp: FreeResponse,
     lin: &Linear2<fn(f64) -> f64>,
     p: &P,
-    study: Study,
+    (study, limit): (Study, [StepLimit; 4]),
     provisional: bool,
 ) -> Option<Results> {
     // h ≥ 1e−3 s and T ≤ 60 s keep this within 60 000 steps.
@@ -345,7 +380,6 @@ fn run_current(
         runs.push(Run { sol, overflow });
     }
     let growth = FIXED.map(|m| m.growth_per_step(&sys, h));
-    let limit = FIXED.map(|m| m.stable_steps(&sys));
     let stable = limit.map(|l| l.allows(h));
     let dp45 = run_dp45(lin, p, p.tol);
     let dp45_err = dp45

@@ -1,6 +1,6 @@
 //! Progressive convergence study (issue 13): on a page, a moved ζ, ωₙ, T or x₀ gets a
 //! coarse study at once ([`COARSE`]: the same nested grids with an eighth of the step
-//! budgets, so the finest three step sizes are left out, and DP45 down to 10⁻⁶ only) and the
+//! budgets, so the finest three step sizes are left out, and DP45 down to 10⁻⁴ only) and the
 //! full study one method per slice in later short tasks ([`Integrators::refine_study`]):
 //! the four fixed-step methods, then the DP45 tolerance sweep. The full study replaces the
 //! coarse one only if it was computed for the inputs still current. Off (native tests,
@@ -8,17 +8,18 @@
 //! state every progressive demo shares, `demos/progressive.rs`.
 
 use super::model::{
-    dp45_study, fixed_study, study_grids, Budget, Problem, Study, StudyKey, EULER_BUDGET, FIXED,
-    FULL, STUDY_BUDGET,
+    dp45_fit, dp45_run, fixed_study, study_grids, Budget, Problem, Study, StudyKey, EULER_BUDGET,
+    FIXED, FULL, STUDY_BUDGET,
 };
 use super::{Integrators, P};
 use crate::demos::design::Stopwatch;
 use zeta_solver::integrate::convergence::{NestedGrids, NestedStudy};
-use zeta_solver::integrate::work_precision::WorkPrecision;
+use zeta_solver::integrate::work_precision::WorkPoint;
 use zeta_solver::SecondOrder;
 
-/// DP45 tolerances of the coarse study: the full sweep's, down to 10⁻⁶.
-const COARSE_TOLS: [f64; 5] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6];
+/// DP45 tolerances of the coarse study: the full sweep's, down to 10⁻⁴ (the tighter ones
+/// take the most steps: about 10^(1/5) times more for each tenth).
+const COARSE_TOLS: [f64; 3] = [1e-2, 1e-3, 1e-4];
 
 /// The coarse study shown at once while the full one runs.
 pub(super) const COARSE: Budget = Budget {
@@ -38,8 +39,9 @@ pub(super) const PROVISIONAL: [&str; 7] = [
     "work",
 ];
 
-/// Slices of the full study: one per fixed-step method, then the DP45 sweep.
-const SLICES: usize = FIXED.len() + 1;
+/// Slices of the full study: one per fixed-step method, then one per DP45 tolerance (the
+/// sweep in one slice was a task of up to ~100 ms at 4× CPU slowdown).
+const SLICES: usize = FIXED.len() + FULL.tols.len();
 
 /// A full study under way: its inputs, the fixed-step studies so far and the next slice.
 #[derive(Debug)]
@@ -49,7 +51,8 @@ pub(super) struct StudyJob {
     p: P,
     grids: NestedGrids,
     fixed: Vec<NestedStudy>,
-    dp45: Option<WorkPrecision>,
+    /// DP45's runs so far, loose to tight; `None` once one could not be set up.
+    dp45: Option<Vec<WorkPoint>>,
     next: usize,
 }
 
@@ -62,7 +65,7 @@ impl StudyJob {
             p: *p,
             grids: study_grids(&sys, p)?,
             fixed: Vec::with_capacity(FIXED.len()),
-            dp45: None,
+            dp45: Some(Vec::with_capacity(FULL.tols.len())),
             next: 0,
         })
     }
@@ -71,15 +74,19 @@ impl StudyJob {
         self.next >= SLICES
     }
 
-    /// Computes the next slice: one fixed-step method's study, or the DP45 sweep.
+    /// Computes the next slice: one fixed-step method's study, or one DP45 run.
     fn advance(&mut self) {
         let problem = Problem::new(self.sys, &self.p);
         if self.next < FIXED.len() {
             if let Some(s) = fixed_study(self.next, &problem, self.grids, FULL) {
                 self.fixed.push(s);
             }
-        } else {
-            self.dp45 = dp45_study(&problem, FULL.tols);
+        } else if let Some(&tol) = FULL.tols.get(self.next - FIXED.len()) {
+            let run = dp45_run(&problem, tol);
+            self.dp45 = self.dp45.take().zip(run).map(|(mut runs, run)| {
+                runs.push(run);
+                runs
+            });
         }
         self.next += 1;
     }
@@ -94,7 +101,7 @@ impl StudyJob {
             budget: FULL,
             grids: self.grids.with_budget(FULL.steps),
             fixed: self.fixed,
-            dp45: self.dp45?,
+            dp45: dp45_fit(self.dp45?),
         })
     }
 }
