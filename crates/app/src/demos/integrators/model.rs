@@ -131,9 +131,28 @@ pub struct Results {
 pub(super) struct Cache {
     pub(super) study: Option<Study>,
     regions: Option<[Vec<(f64, f64)>; 3]>,
-    /// Each fixed-step method's stable steps for the system `(ζ, ωₙ)`, which moving h, T,
-    /// x₀ or the tolerance leaves as they are.
-    limits: Option<([f64; 2], [StepLimit; 4])>,
+    /// The stable steps of the system `(ζ, ωₙ)`, which moving h, T, x₀ or the tolerance
+    /// leaves as they are.
+    limits: Option<([f64; 2], Limits)>,
+}
+
+/// The largest stable steps of each fixed-step method (in [`FIXED`] order) and of DP45
+/// (`None` if it cannot be set up) for one system: a search each.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Limits {
+    fixed: [StepLimit; 4],
+    dp45: Option<StepLimit>,
+}
+
+impl Limits {
+    pub(super) fn of(sys: &SecondOrder) -> Self {
+        Self {
+            fixed: FIXED.map(|m| m.stable_steps(sys)),
+            dp45: Dopri5::new(Dopri5Config::default())
+                .ok()
+                .map(|d| d.stable_steps(sys)),
+        }
+    }
 }
 
 impl Cache {
@@ -156,7 +175,16 @@ impl Cache {
             p.t_end,
             p.x0,
         ];
-        let problem = Problem::new(sys, p);
+        let system = [key[0], key[1]];
+        let limits = match self.limits {
+            Some((of, limits)) if of == system => limits,
+            _ => {
+                let limits = Limits::of(&sys);
+                self.limits = Some((system, limits));
+                limits
+            }
+        };
+        let problem = Problem::new(sys, p, limits);
         if self.study.as_ref().map(|st| st.key) != Some(key) {
             // Inputs moved on: a full study under way for other inputs is dropped unseen.
             progress.job = None;
@@ -168,7 +196,7 @@ impl Cache {
             // No study at all (no grids for these inputs) leaves nothing to refine either.
             self.study = compute_study(&problem, key, budget);
             match self.study.is_some() && progress.is_provisional() {
-                true => progress.job = StudyJob::start(sys, p, key),
+                true => progress.job = StudyJob::start(sys, p, key, limits),
                 false => progress.finished(),
             }
         }
@@ -182,21 +210,12 @@ impl Cache {
             ]);
         }
         let study = self.study.clone()?;
-        let system = [key[0], key[1]];
-        let limit = match self.limits {
-            Some((of, limit)) if of == system => limit,
-            _ => {
-                let limit = FIXED.map(|m| m.stable_steps(&sys));
-                self.limits = Some((system, limit));
-                limit
-            }
-        };
         run_current(
             sys,
             problem.resp,
             &problem.lin,
             p,
-            (study, limit),
+            (study, limits.fixed),
             progress.is_provisional(),
         )
     }
@@ -253,15 +272,18 @@ pub(super) struct Problem<'p> {
     lin: Linear2<fn(f64) -> f64>,
     resp: FreeResponse,
     p: &'p P,
+    /// DP45's largest stable step for the system (see [`Limits`]).
+    dp45_stable: Option<StepLimit>,
 }
 
 impl<'p> Problem<'p> {
-    pub(super) fn new(sys: SecondOrder, p: &'p P) -> Self {
+    pub(super) fn new(sys: SecondOrder, p: &'p P, limits: Limits) -> Self {
         Self {
             sys,
             lin: Linear2::free(sys),
             resp: FreeResponse::new(sys, p.x0, 0.0),
             p,
+            dp45_stable: limits.dp45,
         }
     }
 }
@@ -287,7 +309,13 @@ pub(super) fn fixed_study(
 
 /// DP45 over the tolerances `tols`: error against f-evaluations.
 pub(super) fn dp45_study(problem: &Problem<'_>, tols: &[f64]) -> Option<WorkPrecision> {
-    let Problem { sys, lin, resp, p } = problem;
+    let Problem {
+        lin,
+        resp,
+        p,
+        dp45_stable,
+        ..
+    } = problem;
     Some(dopri5_sweep(
         lin,
         [p.x0, 0.0],
@@ -295,7 +323,7 @@ pub(super) fn dp45_study(problem: &Problem<'_>, tols: &[f64]) -> Option<WorkPrec
         tols,
         |tol| dp45_config(tol, p.x0),
         |sol| dp45_error(resp, sol),
-        Dopri5::new(Dopri5Config::default()).ok()?.stable_steps(sys),
+        (*dp45_stable)?,
         fit_window(p.x0),
         SPREAD,
     ))
@@ -304,7 +332,13 @@ pub(super) fn dp45_study(problem: &Problem<'_>, tols: &[f64]) -> Option<WorkPrec
 /// One run of [`dp45_study`]'s sweep, at `tol` (a slice of a progressive study; the runs
 /// are fitted with [`dp45_fit`]).
 pub(super) fn dp45_run(problem: &Problem<'_>, tol: f64) -> Option<WorkPoint> {
-    let Problem { sys, lin, resp, p } = problem;
+    let Problem {
+        lin,
+        resp,
+        p,
+        dp45_stable,
+        ..
+    } = problem;
     Some(dopri5_point(
         lin,
         [p.x0, 0.0],
@@ -312,7 +346,7 @@ pub(super) fn dp45_run(problem: &Problem<'_>, tol: f64) -> Option<WorkPoint> {
         tol,
         |tol| dp45_config(tol, p.x0),
         |sol| dp45_error(resp, sol),
-        Dopri5::new(Dopri5Config::default()).ok()?.stable_steps(sys),
+        (*dp45_stable)?,
         fit_window(p.x0),
     ))
 }

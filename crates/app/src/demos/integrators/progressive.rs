@@ -8,8 +8,8 @@
 //! state every progressive demo shares, `demos/progressive.rs`.
 
 use super::model::{
-    dp45_fit, dp45_run, fixed_study, study_grids, Budget, Problem, Study, StudyKey, EULER_BUDGET,
-    FIXED, FULL, STUDY_BUDGET,
+    dp45_fit, dp45_run, fixed_study, study_grids, Budget, Limits, Problem, Study, StudyKey,
+    EULER_BUDGET, FIXED, FULL, STUDY_BUDGET,
 };
 use super::{Integrators, P};
 use crate::demos::design::Stopwatch;
@@ -49,6 +49,7 @@ pub(super) struct StudyJob {
     key: StudyKey,
     sys: SecondOrder,
     p: P,
+    limits: Limits,
     grids: NestedGrids,
     fixed: Vec<NestedStudy>,
     /// DP45's runs so far, loose to tight; `None` once one could not be set up.
@@ -58,11 +59,12 @@ pub(super) struct StudyJob {
 
 impl StudyJob {
     /// The full study of `key` (for `sys` and `p`), nothing computed yet.
-    pub(super) fn start(sys: SecondOrder, p: &P, key: StudyKey) -> Option<Self> {
+    pub(super) fn start(sys: SecondOrder, p: &P, key: StudyKey, limits: Limits) -> Option<Self> {
         Some(Self {
             key,
             sys,
             p: *p,
+            limits,
             grids: study_grids(&sys, p)?,
             fixed: Vec::with_capacity(FIXED.len()),
             dp45: Some(Vec::with_capacity(FULL.tols.len())),
@@ -76,7 +78,7 @@ impl StudyJob {
 
     /// Computes the next slice: one fixed-step method's study, or one DP45 run.
     fn advance(&mut self) {
-        let problem = Problem::new(self.sys, &self.p);
+        let problem = Problem::new(self.sys, &self.p, self.limits);
         if self.next < FIXED.len() {
             if let Some(s) = fixed_study(self.next, &problem, self.grids, FULL) {
                 self.fixed.push(s);
