@@ -12,10 +12,17 @@ import { quantile, installSlider, fraction, benchArgs, withSite, demoIds, run } 
 
 const { events: EVENTS, only: ONLY } = benchArgs(40);
 const CPU_SLOWDOWN = 4;
+/** Each slider's moves as one drag (see slideInPage); ZETA_TAPS=1: as separate changes. */
+const HOLD = process.env.ZETA_TAPS !== '1';
 const SLOW_4G = { offline: false, latency: 150, downloadThroughput: (1.6 * 1024 * 1024) / 8, uploadThroughput: (750 * 1024) / 8 };
 
-/** Runs in the page: moves each slider `n` times; per event, handler + redraw frame. */
-async function slideInPage([n, fractions]) {
+/**
+ * Runs in the page: moves each slider `n` times; per event, handler + redraw frame. With
+ * `hold`, each slider's moves are one drag, as a finger or a mouse makes them: the pointer
+ * goes down on the slider first and up after (the page holds the axes meanwhile);
+ * without, they are separate changes, as a click on the track or a typed value makes them.
+ */
+async function slideInPage([n, fractions, hold]) {
   const longest = { ms: 0 };
   const obs = new PerformanceObserver((list) => {
     for (const e of list.getEntries()) longest.ms = Math.max(longest.ms, e.duration);
@@ -24,7 +31,9 @@ async function slideInPage([n, fractions]) {
   const ranges = [...document.querySelectorAll('input[type=range][data-key]')].filter((r) => !r.disabled);
   const times = [];
   for (const range of ranges) {
+    if (hold) range.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
     for (let i = 0; i < n; i++) times.push(await window.__slideOnce(range, fractions[i]));
+    if (hold) window.dispatchEvent(new PointerEvent('pointerup'));
   }
   await new Promise((r) => requestAnimationFrame(r));
   obs.disconnect();
@@ -92,13 +101,13 @@ async function main() {
       await slide.page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0, null, { timeout: 60000 });
       await installSlider(slide.page);
       const fractions = Array.from({ length: EVENTS }, (_, i) => fraction(i));
-      const r = await slide.page.evaluate(slideInPage, [EVENTS, fractions]);
+      const r = await slide.page.evaluate(slideInPage, [EVENTS, fractions, HOLD]);
       await slide.context.close();
       const times = r.times.sort((a, b) => a - b);
       rows.push({ id, sliders: r.sliders, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), longest: r.longest, firstPlot, bytes, secondPlot, secondBytes, wall: Date.now() - t0 });
     }
   });
-  console.log(`\nLow-end (4× CPU, 360 × 740 at DPR 2; loading on Slow 4G, brotli, cold cache; ${EVENTS} events per slider):\n`);
+  console.log(`\nLow-end (4× CPU, 360 × 740 at DPR 2; loading on Slow 4G, brotli, cold cache; ${EVENTS} events per slider, ${HOLD ? "each slider one held drag" : "separate changes"}):\n`);
   console.log('| demo | sliders | events | p50 (ms) | p95 (ms) | longest task (ms) | first plot (ms) | KB before first plot | second visit: first plot (ms) | second visit: KB |');
   console.log('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |');
   for (const r of rows) {
