@@ -33,7 +33,11 @@ async function slideInPage([n, fractions, hold]) {
   for (const range of ranges) {
     if (hold) range.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
     for (let i = 0; i < n; i++) times.push(await window.__slideOnce(range, fractions[i]));
-    if (hold) window.dispatchEvent(new PointerEvent('pointerup'));
+    if (hold) {
+      window.dispatchEvent(new PointerEvent('pointerup'));
+      // A hand lets go and reaches for the next slider: the axes refit meanwhile.
+      await new Promise((r) => setTimeout(r, 500));
+    }
   }
   await new Promise((r) => requestAnimationFrame(r));
   obs.disconnect();
