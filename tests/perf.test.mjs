@@ -174,6 +174,45 @@ test('a plot off screen waits while a control is held, and is drawn when it come
   await context.close();
 });
 
+test('a held drag draws the same pixels from the kept static layer as a fresh drawing does', { skip }, async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=resonance&zeta=0.2`, { colorScheme: 'light' });
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
+  await canvasFingerprint(page, 'magnitude');
+  const frames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const size = () => page.evaluate(() => {
+    const c = document.querySelector('canvas[data-plot="magnitude"]');
+    return [c.width, c.height];
+  });
+  const box = await page.locator('#p-zeta').boundingBox();
+  const y = box.y + box.height / 2;
+  // Towards more damping, so the held axes stay those of the first frame (a held axis only
+  // grows): after two frames with the same axes and title, each frame starts from the
+  // kept copy of the plot's static layer.
+  await page.mouse.move(box.x + box.width * 0.57, y);
+  await page.mouse.down();
+  const sized = await size();
+  for (const f of [0.6, 0.65, 0.7, 0.75]) {
+    const old = await readout(page, 'Q');
+    await page.mouse.move(box.x + box.width * f, y);
+    await page.waitForFunction((o) => document.querySelector('[data-readout="Q"]').dataset.value !== o, old);
+    await frames();
+  }
+  // The stage holds its layout while the slider is held: the plot keeps its size.
+  assert.deepEqual(await size(), sized);
+  const fromCopy = await canvasFingerprint(page, 'magnitude', { settled: false });
+  assert.ok(fromCopy[0] > 1000, 'the plot has ink');
+  // Still held: the system's theme goes dark and back, so the layer is drawn whole again.
+  await page.emulateMedia({ colorScheme: 'dark' });
+  await frames();
+  assert.notDeepEqual(await canvasFingerprint(page, 'magnitude', { settled: false }), fromCopy, 'dark');
+  await page.emulateMedia({ colorScheme: 'light' });
+  await frames();
+  assert.deepEqual(await canvasFingerprint(page, 'magnitude', { settled: false }), fromCopy, 'the same pixels drawn whole');
+  await page.mouse.up();
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 /**
  * Whether an integrators readout equals the recorded one: DP45's controller and the fitted
  * orders depend on the last bits of powf, exp and cos, which differ between native code and

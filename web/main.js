@@ -332,7 +332,10 @@ function layoutStage() {
 }
 
 function sizeCanvases() {
-  if (app.layoutDirty) layoutStage();
+  // While a control is held the stage holds its layout too, like the axes: a readout that
+  // wraps to another line would otherwise resize the plot under the pointer every frame
+  // (and a resized canvas is cleared and drawn whole). It is laid out on release.
+  if (app.layoutDirty && !app.dragging) layoutStage();
   const dpr = window.devicePixelRatio || 1;
   for (const [key, canvas] of app.view.canvases) {
     fit(canvas, key, dpr);
@@ -528,6 +531,7 @@ function setDragging(on) {
     reportFailure(err);
   }
   if (!on) easeAxes();
+  if (!on && app.layoutDirty) requestDraw();
 }
 
 /** After a drag, the axes move to their new ranges over a quarter second (at once when the
