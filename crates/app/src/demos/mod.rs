@@ -354,6 +354,12 @@ mod tests {
             for r in &frame.readouts {
                 assert!(!r.data_value.contains("NaN") && !r.data_value.contains("inf"));
             }
+            if let Some(table) = &spec.table {
+                let columns = table.columns.len();
+                for (key, cells) in &table.rows {
+                    assert_eq!(cells.len(), columns, "{id}: table row {key}");
+                }
+            }
         }
         assert!(create("nope").is_none());
     }

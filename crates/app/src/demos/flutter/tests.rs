@@ -91,10 +91,7 @@ fn the_table_has_a_row_for_every_reachable_regime() {
         let r = value(&Flutter::run(&format!("U={u}")), "regime");
         assert!(table.rows.iter().any(|(k, _)| *k == r), "{r}");
     }
-    assert!(table
-        .rows
-        .iter()
-        .all(|(_, c)| c.len() == table.columns.len()));
+    // One cell per column in every row: the registry test checks it for every demo.
 }
 
 #[test]

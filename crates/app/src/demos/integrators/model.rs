@@ -9,7 +9,7 @@ use zeta_solver::integrate::analysis::{error_norms, FitWindow, StepLimit};
 use zeta_solver::integrate::convergence::{nested_study, NestedGrids, NestedStudy};
 use zeta_solver::integrate::stability::{region_boundary, Stability, REGION_RAYS};
 use zeta_solver::integrate::work_precision::{
-    dopri5_point, dopri5_sweep, fit_work_points, WorkPoint, WorkPrecision,
+    dopri5_point, fit_work_points, WorkPoint, WorkPrecision,
 };
 use zeta_solver::integrate::{
     Dopri5, Dopri5Config, Dopri5Solution, Euler, ExactStepGrid, FixedStep, Heun, IntegrationError,
@@ -307,26 +307,11 @@ pub(super) fn fixed_study(
     Some(out)
 }
 
-/// DP45 over the tolerances `tols`: error against f-evaluations.
+/// DP45 over the tolerances `tols`: error against f-evaluations (its runs, then their fit:
+/// the solver's `dopri5_sweep`, a run at a time as a progressive study computes it).
 pub(super) fn dp45_study(problem: &Problem<'_>, tols: &[f64]) -> Option<WorkPrecision> {
-    let Problem {
-        lin,
-        resp,
-        p,
-        dp45_stable,
-        ..
-    } = problem;
-    Some(dopri5_sweep(
-        lin,
-        [p.x0, 0.0],
-        p.t_end,
-        tols,
-        |tol| dp45_config(tol, p.x0),
-        |sol| dp45_error(resp, sol),
-        (*dp45_stable)?,
-        fit_window(p.x0),
-        SPREAD,
-    ))
+    let runs = tols.iter().map(|&tol| dp45_run(problem, tol));
+    Some(dp45_fit(runs.collect::<Option<Vec<_>>>()?))
 }
 
 /// One run of [`dp45_study`]'s sweep, at `tol` (a slice of a progressive study; the runs

@@ -72,10 +72,7 @@ fn every_table_row_is_a_possible_effect() {
         let e = value(&Nonlinear::preset(preset.label), "effect");
         assert!(table.rows.iter().any(|(k, _)| *k == e), "{e}");
     }
-    assert!(table
-        .rows
-        .iter()
-        .all(|(_, c)| c.len() == table.columns.len()));
+    // One cell per column in every row: the registry test checks it for every demo.
 }
 
 #[test]
