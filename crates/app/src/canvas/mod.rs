@@ -10,11 +10,13 @@
 //! is slow (a forced layout per label, every frame) and blocked by a strict
 //! Content-Security-Policy (`style-src 'self'`).
 
+mod direct;
 mod html;
 #[cfg(not(feature = "first"))]
 mod web;
 
-pub use html::{CanvasDirect, CanvasError, HtmlCanvas};
+pub use direct::CanvasDirect;
+pub use html::{CanvasError, HtmlCanvas};
 use plotters_backend::BackendTextStyle;
 use wasm_bindgen::JsCast;
 #[cfg(not(feature = "first"))]

@@ -116,7 +116,7 @@ impl DrawingBackend for Web<'_> {
 impl Web<'_> {
     /// For a canvas, what it draws itself (see `render::Direct`); an SVG is drawn
     /// through plotters alone.
-    pub fn direct(&self) -> Option<super::html::CanvasDirect> {
+    pub fn direct(&self) -> Option<super::CanvasDirect> {
         match self {
             Web::Canvas(b) => Some(b.direct()),
             Web::Svg { .. } => None,

@@ -1,0 +1,170 @@
+//! [`CanvasDirect`]: what the canvas draws itself beside plotters' calls (see
+//! `render::Direct`): line dashes, images of a pixel per cell stretched over a heatmap, a
+//! muted trial layout, and each plot's static layer (background, grid, ticks, titles) kept
+//! as a copy once it has come twice in a row, so a held drag starts each frame from it.
+
+use crate::render::{Direct, Stretched};
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
+use wasm_bindgen::{JsCast, JsValue};
+use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
+
+/// The canvas's [`Direct`] drawing (see [`HtmlCanvas::direct`]).
+pub struct CanvasDirect {
+    pub(super) canvas: HtmlCanvasElement,
+    pub(super) context: CanvasRenderingContext2d,
+    pub(super) muted: Rc<Cell<bool>>,
+}
+
+/// A canvas's static layer: the key of the layer last begun on it, in how many frames in
+/// a row, and a copy of it (`valid` once the layer has come twice in a row: a plot whose
+/// title changes every frame is never copied).
+struct Layer {
+    canvas: HtmlCanvasElement,
+    key: u64,
+    frames: u32,
+    copy: Option<HtmlCanvasElement>,
+    valid: bool,
+}
+
+/// How many canvases' layers are kept: every plot of a page, and a few of the last.
+const LAYERS: usize = 12;
+
+/// A new canvas outside the page.
+fn offscreen() -> Option<HtmlCanvasElement> {
+    web_sys::window()?
+        .document()?
+        .create_element("canvas")
+        .ok()?
+        .dyn_into::<HtmlCanvasElement>()
+        .ok()
+}
+
+thread_local! {
+    /// A canvas outside the page that holds an image before it is stretched.
+    static SCRATCH: Option<(HtmlCanvasElement, CanvasRenderingContext2d)> =
+        offscreen().and_then(|c| Some((c.clone(), super::context_of(&c)?)));
+    /// The static layers of the canvases drawn last, most recent last.
+    static KEPT: RefCell<Vec<Layer>> = const { RefCell::new(Vec::new()) };
+}
+
+impl Direct for CanvasDirect {
+    fn dash(&self, pattern: &[f64]) {
+        set_line_dash(&self.context, pattern);
+    }
+
+    fn mute(&self, on: bool) {
+        self.muted.set(on);
+    }
+
+    fn begin_layer(&self, key: u64) {
+        KEPT.with_borrow_mut(|kept| {
+            let mut layer = match kept.iter().position(|l| l.canvas == self.canvas) {
+                Some(i) => kept.remove(i),
+                None => Layer {
+                    canvas: self.canvas.clone(),
+                    key,
+                    frames: 0,
+                    copy: None,
+                    valid: false,
+                },
+            };
+            if layer.key == key {
+                layer.frames = layer.frames.saturating_add(1);
+            } else {
+                (layer.key, layer.frames, layer.valid) = (key, 1, false);
+            }
+            let (w, h) = (self.canvas.width(), self.canvas.height());
+            let held = layer
+                .copy
+                .as_ref()
+                .filter(|c| layer.valid && c.width() == w && c.height() == h);
+            // Drawn whole, it covers what was there; drawImage leaves the state the
+            // backend caches as it was.
+            if let Some(copy) = held {
+                let drawn = self
+                    .context
+                    .draw_image_with_html_canvas_element(copy, 0.0, 0.0);
+                self.muted.set(drawn.is_ok());
+            }
+            if kept.len() >= LAYERS {
+                kept.remove(0);
+            }
+            kept.push(layer);
+        });
+    }
+
+    fn end_layer(&self, key: u64) {
+        if self.muted.replace(false) {
+            return;
+        }
+        KEPT.with_borrow_mut(|kept| {
+            let Some(layer) = kept.iter_mut().find(|l| l.canvas == self.canvas) else {
+                return;
+            };
+            if layer.key != key || layer.frames < 2 {
+                return;
+            }
+            if layer.copy.is_none() {
+                layer.copy = offscreen();
+            }
+            let Some(copy) = &layer.copy else {
+                return;
+            };
+            // Resizing also clears it.
+            copy.set_width(self.canvas.width());
+            copy.set_height(self.canvas.height());
+            layer.valid = super::context_of(copy).is_some_and(|c| {
+                c.draw_image_with_html_canvas_element(&self.canvas, 0.0, 0.0)
+                    .is_ok()
+            });
+        });
+    }
+
+    fn stretch(&self, image: &Stretched<'_>) {
+        let (w, h) = image.size;
+        let n = (w as usize) * (h as usize);
+        if image.rgb.len() < n * 3 || n == 0 {
+            return;
+        }
+        let mut rgba = Vec::with_capacity(n * 4);
+        for px in image.rgb.chunks_exact(3).take(n) {
+            rgba.extend_from_slice(&[px[0], px[1], px[2], 255]);
+        }
+        let Ok(data) = web_sys::ImageData::new_with_u8_clamped_array_and_sh(
+            wasm_bindgen::Clamped(&rgba),
+            w,
+            h,
+        ) else {
+            return;
+        };
+        SCRATCH.with(|scratch| {
+            let Some((canvas, scratch)) = scratch else {
+                return;
+            };
+            // Resizing also clears it.
+            canvas.set_width(w);
+            canvas.set_height(h);
+            if scratch.put_image_data(&data, 0.0, 0.0).is_err() {
+                return;
+            }
+            let [l, t, r, b] = image.to.map(f64::from);
+            let [cl, ct, cr, cb] = image.clip.map(f64::from);
+            let c = &self.context;
+            // Saved and restored, so the state the backend caches stays true.
+            c.save();
+            c.begin_path();
+            c.rect(cl, ct, cr - cl, cb - ct);
+            c.clip();
+            c.set_image_smoothing_enabled(false);
+            let _ = c.draw_image_with_html_canvas_element_and_dw_and_dh(canvas, l, t, r - l, b - t);
+            c.restore();
+        });
+    }
+}
+
+pub(super) fn set_line_dash(context: &CanvasRenderingContext2d, pattern: &[f64]) {
+    let array: js_sys::Array = pattern.iter().map(|&v| JsValue::from_f64(v)).collect();
+    // Only a non-finite length can fail; the pattern is then left as it was.
+    let _ = context.set_line_dash(&array);
+}

@@ -1,0 +1,189 @@
+//! What a backend that draws itself (`Direct`) is asked to do: the legend's trial muted,
+//! the static layer named by what it shows, a heatmap and its colour bar as one image each.
+
+use super::*;
+
+/// A stretched image as drawn: size, pixels, where it goes and its clip.
+type Drawn = ((u32, u32), Vec<u8>, [i32; 4], [i32; 4]);
+
+/// A backend's own drawing, recorded: the images stretched, and the calls in order.
+#[derive(Default)]
+struct Recorder(
+    std::cell::RefCell<Vec<Drawn>>,
+    std::cell::RefCell<Vec<String>>,
+);
+
+impl Direct for Recorder {
+    fn dash(&self, _: &[f64]) {}
+    fn stretch(&self, image: &Stretched<'_>) {
+        let copy = (image.size, image.rgb.to_vec(), image.to, image.clip);
+        self.0.borrow_mut().push(copy);
+        self.1.borrow_mut().push("stretch".into());
+    }
+    fn mute(&self, on: bool) {
+        self.1.borrow_mut().push(format!("mute {on}"));
+    }
+    fn begin_layer(&self, key: u64) {
+        self.1.borrow_mut().push(format!("begin {key}"));
+    }
+    fn end_layer(&self, key: u64) {
+        self.1.borrow_mut().push(format!("end {key}"));
+    }
+}
+
+/// The calls a backend that draws itself gets for `fig`.
+fn calls(fig: &Figure) -> Vec<String> {
+    let rec = Recorder::default();
+    let mut svg = String::new();
+    let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+    render_with(
+        &root,
+        fig,
+        &Theme::LIGHT,
+        1.0,
+        Output { direct: Some(&rec) },
+    )
+    .unwrap();
+    rec.1.into_inner()
+}
+
+#[test]
+fn the_legend_trial_is_muted_and_the_static_layer_is_named_by_what_it_shows() {
+    let fig = sample();
+    let seen = calls(&fig);
+    assert_eq!(seen.len(), 4, "{seen:?}");
+    assert_eq!(
+        seen[..2],
+        ["mute true", "mute false"],
+        "the trial layout draws nothing"
+    );
+    let key = seen[2].strip_prefix("begin ").unwrap();
+    assert_eq!(seen[3], format!("end {key}"));
+    // Other data, same axes and title: the same layer.
+    let mut moved = fig.clone();
+    moved.series[0].points[0].1 = 0.7;
+    moved.markers[0].at = (0.2, 0.1);
+    assert_eq!(calls(&moved)[2], seen[2]);
+    // Another title, range, axis name or theme: another layer.
+    let mut titled = fig.clone();
+    titled.title = "test 2".into();
+    let mut ranged = fig.clone();
+    ranged.y.range = (-1.0, 2.0);
+    let mut named = fig.clone();
+    named.x.label = "time τ".into();
+    for other in [titled, ranged, named] {
+        assert_ne!(calls(&other)[2], seen[2]);
+    }
+    let dark = {
+        let rec = Recorder::default();
+        let mut svg = String::new();
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        render_with(
+            &root,
+            &fig,
+            &Theme::DARK,
+            1.0,
+            Output { direct: Some(&rec) },
+        )
+        .unwrap();
+        rec.1.into_inner()
+    };
+    assert_ne!(dark[2], seen[2]);
+}
+
+#[test]
+fn a_heatmap_is_one_image_of_a_pixel_per_cell_over_its_cells_and_so_is_its_colour_bar() {
+    let mut fig = sample();
+    fig.series.clear();
+    fig.markers.clear();
+    fig.heatmap = Some(crate::figure::Heatmap {
+        log: false,
+        nx: 2,
+        ny: 2,
+        // Row-major from the bottom row: bottom (0, NaN), top (0.5, 1).
+        values: vec![0.0, f64::NAN, 0.5, 1.0],
+        x_edges: (0.0, 1.0),
+        y_edges: (-1.0, 1.0),
+        scale: (0.0, 1.0),
+        label: String::new(),
+    });
+    let rec = Recorder::default();
+    let mut svg = String::new();
+    let geo = {
+        let root = SVGBackend::with_string(&mut svg, (320, 160)).into_drawing_area();
+        render_with(
+            &root,
+            &fig,
+            &Theme::LIGHT,
+            1.0,
+            Output { direct: Some(&rec) },
+        )
+        .unwrap()
+    };
+    let rgb = |c: RGBColor| [c.0, c.1, c.2];
+    let images = rec.0.into_inner();
+    assert_eq!(images.len(), 2, "the heatmap and its colour bar");
+    let (size, pixels, to, clip) = &images[0];
+    assert_eq!(*size, (2, 2));
+    // Rows top to bottom; a blank cell shows the background.
+    let v = crate::theme::viridis;
+    let want: Vec<u8> = [v(0.5), v(1.0), v(0.0), Theme::LIGHT.background]
+        .into_iter()
+        .flat_map(rgb)
+        .collect();
+    assert_eq!(pixels, &want);
+    // Over the cells, which fill the plotting area here, and clipped to it.
+    let (l, t, r, b) = geo.area;
+    let near = |a: i32, b: f64| (f64::from(a) - b).abs() <= 1.0;
+    assert!(
+        near(to[0], l) && near(to[1], t) && near(to[2], r) && near(to[3], b),
+        "{to:?} {:?}",
+        geo.area
+    );
+    assert!(
+        near(clip[0], l) && near(clip[1], t) && near(clip[2], r) && near(clip[3], b),
+        "{clip:?}"
+    );
+    // The bar: one column, its top the high end of the map, right of the plot.
+    let (size, pixels, to, _) = &images[1];
+    assert_eq!(size.0, 1);
+    assert!(size.1 >= 2);
+    assert_eq!(pixels.len(), 3 * size.1 as usize);
+    let (top, bottom) = (&pixels[..3], &pixels[pixels.len() - 3..]);
+    let (hi, lo) = (rgb(v(1.0)), rgb(v(0.0)));
+    let dist = |a: &[u8], b: [u8; 3]| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| x.abs_diff(y) as u32)
+            .sum::<u32>()
+    };
+    assert!(
+        dist(top, hi) < 30 && dist(bottom, lo) < 30,
+        "{top:?} {bottom:?}"
+    );
+    assert!(f64::from(to[0]) > r);
+    // No cell was also drawn as a rectangle.
+    let without = {
+        let mut plain = String::new();
+        let mut fig = fig.clone();
+        fig.heatmap = None;
+        let root = SVGBackend::with_string(&mut plain, (320, 160)).into_drawing_area();
+        render_with(
+            &root,
+            &fig,
+            &Theme::LIGHT,
+            1.0,
+            Output {
+                direct: Some(&Recorder::default()),
+            },
+        )
+        .unwrap();
+        drop(root);
+        plain
+    };
+    assert_eq!(
+        svg.matches("<rect").count(),
+        without.matches("<rect").count() + 1,
+        "only the bar's frame"
+    );
+}
