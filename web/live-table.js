@@ -3,6 +3,8 @@
 // shows the current text of readout `<key>`; every other cell stays as declared. The text
 // comes from Rust, already formatted and translated: no numbers are computed here.
 
+import { setText } from './ui.js';
+
 const LIVE = /^\{readout:([A-Za-z0-9_-]+)\}$/;
 
 /**
@@ -24,8 +26,7 @@ export function fillLiveCells(table, readouts) {
         key = m[1];
         cell.dataset.liveReadout = key;
       }
-      const text = texts.get(key) ?? '—';
-      if (cell.textContent !== text) cell.textContent = text;
+      setText(cell, texts.get(key) ?? '—');
     }
   }
 }
