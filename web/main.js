@@ -20,8 +20,16 @@ const ANNOUNCE_DELAY_MS = 1200;
 const REFINE_SLICE_MS = 8; // one slice of a pending full study: well inside a frame
 const WASM_URL = new URL('../zeta-app_bg.wasm', import.meta.url);
 const FIRST_WASM_URL = new URL('../zeta-first_bg.wasm', import.meta.url);
-/** How long the controls must rest before the full module takes over from the first. */
-const QUIET_MS = 300;
+/**
+ * The controls rest when none is held and none has moved for a while; three things wait
+ * for it, each as long as its own cost to an input it would delay calls for (ms):
+ * - `study`: the next slice of a pending full study (while the controls move, the next
+ *   event drops the study anyway, and a slice between an input and its frame only delays
+ *   the frame);
+ * - `offscreen`: plots out of view catch up with the last update, one a frame;
+ * - `upgrade`: the full module takes over from the first (a new instance and a redraw).
+ */
+const REST_MS = { study: 100, offscreen: 200, upgrade: 300 };
 const darkQuery = window.matchMedia('(prefers-color-scheme: dark)');
 const root = document.documentElement;
 const reducedMotion = window.matchMedia('(prefers-reduced-motion: reduce)');
@@ -214,13 +222,19 @@ function attachCanvases() {
   observeVisibility();
 }
 
-/** How long the controls rest before plots off screen catch up with the last update (ms). */
-const REST_MS = 200;
+/**
+ * How long (ms) until the controls have rested for `ms` (see REST_MS): 0 once they have,
+ * never less than `ms` while one is held.
+ */
+function restLeft(ms) {
+  if (app.dragging) return ms;
+  return Math.max(0, ms - (performance.now() - app.lastInput));
+}
 
 /**
  * Only what is on screen (or within half a screen of it) is drawn while a control moves:
  * the plots out of view, and the schematic, are drawn from the last update as soon as they
- * come into view, and all of them once the controls have rested for REST_MS (issue 13).
+ * come into view, and all of them once the controls have rested (REST_MS.offscreen).
  * Without IntersectionObserver everything counts as on screen and is drawn every time.
  */
 function observeVisibility() {
@@ -265,15 +279,15 @@ function drawStale(all) {
   }
 }
 
-/** Once the controls have rested for REST_MS, everything out of view catches up: one plot
- * a frame, so no task grows long. */
-function scheduleCatchUp(delay = REST_MS) {
+/** Once the controls have rested, everything out of view catches up: one plot a frame, so
+ * no task grows long. */
+function scheduleCatchUp(delay = REST_MS.offscreen) {
   clearTimeout(app.catchUp);
   if (!app.staleLeft && !app.schematicStale) return;
   app.catchUp = setTimeout(() => {
-    const quiet = performance.now() - app.lastInput;
-    if (quiet < REST_MS || app.dragging) {
-      scheduleCatchUp();
+    const wait = restLeft(REST_MS.offscreen);
+    if (wait > 0) {
+      scheduleCatchUp(wait);
       return;
     }
     requestAnimationFrame(() => {
@@ -461,19 +475,12 @@ function markProvisional(keys) {
   if (now.size) scheduleRefine();
 }
 
-/**
- * How long the controls rest before the pending full study goes on (ms): while they move,
- * the next event drops the study anyway, and a slice between an input and its frame
- * would only delay the frame.
- */
-const REFINE_REST_MS = 100;
-
 /** Runs the pending full study in short slices between frames; redraws when it is done. */
 function scheduleRefine() {
   if (app.refineTimer) return;
   const slice = () => {
     app.refineTimer = 0;
-    const wait = REFINE_REST_MS - (performance.now() - app.lastInput);
+    const wait = restLeft(REST_MS.study);
     if (wait > 0 || app.framePending) {
       app.refineTimer = setTimeout(slice, Math.max(wait, 16));
       return;
@@ -878,12 +885,12 @@ function loadFull() {
   return app.fullLoading;
 }
 
-/** Resolves when no control is held or has moved for QUIET_MS and no frame is pending. */
+/** Resolves when the controls have rested (REST_MS.upgrade) and no frame is pending. */
 function betweenBursts() {
   return new Promise((resolve) => {
     const check = () => {
-      const busy = app.dragging || app.framePending || app.recovering || app.needsRecovery;
-      const wait = QUIET_MS - (performance.now() - app.lastInput);
+      const busy = app.framePending || app.recovering || app.needsRecovery;
+      const wait = restLeft(REST_MS.upgrade);
       if (busy || wait > 0) setTimeout(check, Math.max(50, wait));
       else resolve();
     };
