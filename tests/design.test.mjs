@@ -4,7 +4,7 @@
 // picking designs by clicking the map and the Pareto front, and the sweep's compute time.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, assertReadoutsMatch, assertFiguresMatch, stateSlug } from './support/golden.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
@@ -103,7 +103,7 @@ test('every slider moves from the keyboard and changes readouts or pixels', asyn
     assert.notEqual(after.prints[i], before.prints[i], `${key}=${value}: ${plot} redrawn`);
     await checkEchoes(page, p);
   }
-  assert.match(await page.textContent('#desc-map'), /^Peak rebound of the free response from x₀ = 60 mm, in % of x₀, over k/);
+  assert.match(await caption(page, 'map'), /^Peak rebound of the free response from x₀ = 60 mm, in % of x₀, over k/);
   assert.deepEqual(errors, []);
   await context.close();
 });
@@ -134,7 +134,7 @@ test('clicking the map selects that design; clicking the front selects a front d
   const ik = (k2 - 10000) / 500 - 0.5;
   const ic = (c2 - 500) / 75 - 0.5;
   assert.ok(Math.abs(ik - Math.round(ik)) < 1e-6 && Math.abs(ic - Math.round(ic)) < 1e-6, `front design on the grid (${k2}, ${c2})`);
-  assert.match(await page.textContent('#desc-pareto'), /^Pareto front of \d+ non-dominated designs/);
+  assert.match(await caption(page, 'pareto'), /^Pareto front of \d+ non-dominated designs/);
   assert.deepEqual(errors, []);
   await context.close();
 });

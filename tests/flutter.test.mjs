@@ -4,7 +4,7 @@
 // every slider and menu, the animation, the narrow screen.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, openRecorded } from './support/golden.mjs';
 import { nudge, assertDrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -18,7 +18,7 @@ for (const state of golden('flutter').states) {
   test(`${state.name}: readouts as computed natively, plots drawn, regime row highlighted`, async () => {
     const { page, errors, context } = await openRecorded(browser, server.url, 'flutter', state, { plots: PLOTS, row: 'regime' });
     // The caption is the one computed natively.
-    assert.equal(await page.textContent('#desc-response'), state.figures[3].description);
+    assert.equal(await caption(page, 'response'), state.figures[3].description);
     assert.deepEqual(errors, []);
     await context.close();
   });
@@ -33,7 +33,7 @@ test('failure day: the twist grows to a large amplitude within the plotted minut
   assert.match(await page.textContent('[data-readout="amplitude_end_deg"] dd'), /°/);
   assert.match(await page.textContent('[data-readout="limit_deg"] dd'), /°/);
   assert.ok(Number(await readout(page, 'time_to_large')) < Number(state.time_span[1]));
-  assert.match(await page.textContent('#desc-response'), /grows to/);
+  assert.match(await caption(page, 'response'), /grows to/);
   // The twist fills more of the right half of the plot than of the left: growth is visible.
   const halves = await page.evaluate(() => {
     const c = document.querySelector('canvas[data-plot="response"]');

@@ -3,7 +3,7 @@
 // against physics re-implemented here; then every slider, toggle and preset is exercised.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, goldenState } from './support/golden.mjs';
 import { waitForChange } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -52,10 +52,11 @@ test('defaults and every preset show the readouts and text alternatives computed
   for (const state of states) {
     const { page, errors, context } = await open(browser, `${server.url}?demo=integrators&${state.query}`);
     await assertReadoutsMatch(page, state);
-    for (const [i, plot] of spec.plots.entries()) {
-      assert.equal(await page.textContent(`#desc-${plot.key}`), state.figures[i].description, `${state.name}: ${plot.key}`);
-    }
+    // Drawn first: a plot's figure, and so its caption, comes when the plot is drawn.
     await assertInk(page);
+    for (const [i, plot] of spec.plots.entries()) {
+      assert.equal(await caption(page, plot.key), state.figures[i].description, `${state.name}: ${plot.key}`);
+    }
     assert.deepEqual(errors, []);
     await context.close();
   }
@@ -66,8 +67,8 @@ test('h = 0.3 s integrates with steps of exactly 0.3 s; the last one ends at T',
   // 66 steps of 0.3 s reach 19.8 s; a last step of 0.2 s ends the run at T = 20 s.
   assert.equal(await readout(page, 'h_used'), '0.3');
   assert.ok(Math.abs(Number(await readout(page, 'h_last')) - 0.2) < 1e-12);
-  assert.match(await page.textContent('#desc-response'), /with h = 300 ms \(67 steps, the last 200 ms to end at T\)/);
-  assert.match(await page.textContent('#desc-error'), /\(h = 300 ms\)/);
+  assert.match(await caption(page, 'response'), /with h = 300 ms \(67 steps, the last 200 ms to end at T\)/);
+  assert.match(await caption(page, 'error'), /\(h = 300 ms\)/);
   // The same from the golden file, which the native tests computed with this h.
   const light = goldenState('integrators', LIGHT);
   assert.equal(light.readouts.find((r) => r.key === 'h_used').value, '3.00000000000e-1');
@@ -228,7 +229,7 @@ test('RK4 beyond its limit: the growth factor is reported honestly', async () =>
   // Still a finite number for the error, as recorded natively.
   const err = Number(state.readouts.find((r) => r.key === 'max_err_rk4').value);
   assert.ok(Number.isFinite(err) && Math.abs((await num(page, 'max_err_rk4')) - err) <= 1e-11 * err);
-  assert.match(await page.textContent('#desc-response'), /RK4 diverges/);
+  assert.match(await caption(page, 'response'), /RK4 diverges/);
   assert.deepEqual(errors, []);
   await context.close();
 });

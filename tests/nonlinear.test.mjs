@@ -4,7 +4,7 @@
 // shows them and how it behaves: presets, the effect row, every slider, the narrow screen.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, openRecorded } from './support/golden.mjs';
 import { nudge, assertDrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -29,7 +29,7 @@ test('friction holds the mass for good: the stuck position stays within the stat
   const x = Number(await readout(page, 'stick_position'));
   // Behaviour, not physics: a stuck mass shows a stop marker and a flat end on the plot.
   assert.ok(x !== 0 && Number.isFinite(x));
-  assert.match(await page.textContent('#desc-response'), /friction holds the mass at/);
+  assert.match(await caption(page, 'response'), /friction holds the mass at/);
   assert.deepEqual(errors, []);
   await context.close();
 });
@@ -79,7 +79,7 @@ test('a softening spring pushed past its limit is cut off, not crashed', async (
   const q = 'k=5000&k3=-4000000&x0=0.15&v0=2&c_comp=0&c_reb=0';
   const { page, errors, context } = await open(browser, `${server.url}?demo=nonlinear&${q}`);
   assert.equal(await readout(page, 'effect'), 'escaped');
-  assert.match(await page.textContent('#desc-response'), /leaves the plot/);
+  assert.match(await caption(page, 'response'), /leaves the plot/);
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -71,13 +71,18 @@ function slide(page, key, value, preset = '') {
 }
 
 /**
- * Opens demo `id` and waits for its full study, records the finals of plot `plot`, then
+ * Opens demo `id` and waits for its full study, scrolls plot `plot` into view and records
+ * its finals, then
  * moves slider `key` to `value` and overtakes that study with `preset` (see `slide`):
  * the page, and the marks of the frame that drew the moved slider.
  */
 async function overtake(id, plot, [key, value], preset) {
   const { page, errors, context } = await open(browser, `${server.url}?demo=${id}`);
   await settled(page);
+  // The plot watched is on screen, as for a student watching it: a plot out of view is
+  // drawn, and its caption written, only when it comes into view or the controls rest.
+  await page.evaluate((key) => document.querySelector(`[data-plot-wrap="${key}"]`).scrollIntoView({ block: 'center' }), plot);
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   await recordFinals(page, plot);
   const now = await slide(page, key, value, preset);
   return { page, errors, context, now };
@@ -140,6 +145,8 @@ test('a plot off screen waits while a control is held, and is drawn when it come
   assert.ok(below > 1.5, `the pole plot starts well below the screen (${below.toFixed(2)} screens down)`);
   await canvasFingerprint(page, 'poles'); // settled
   const before = await raw();
+  const caption = (p) => p.$eval('[data-plot-wrap="poles"] figcaption', (e) => e.textContent);
+  const captionBefore = await caption(page);
   const response = await canvasFingerprint(page, 'response', { settled: false });
   // Hold the ζ slider and drag it: the plot in view follows, the one below waits.
   const box = await page.locator('#p-zeta').boundingBox();
@@ -154,6 +161,7 @@ test('a plot off screen waits while a control is held, and is drawn when it come
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   assert.notDeepEqual(await canvasFingerprint(page, 'response', { settled: false }), response, 'the plot in view is redrawn during the drag');
   assert.deepEqual(await raw(), before, 'the plot off screen is not drawn while the slider is held');
+  assert.equal(await caption(page), captionBefore, 'nor is its figure built: its text alternative waits with it');
   // Still held: scrolled into view, it shows the current frame at once.
   await page.evaluate(() => document.querySelector('canvas[data-plot="poles"]').scrollIntoView());
   await page.waitForFunction(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r(true)))));
@@ -170,7 +178,12 @@ test('a plot off screen waits while a control is held, and is drawn when it come
   await page.mouse.up();
   await page.waitForFunction(() => window.zetaDiagnostics.drawn(), null, { timeout: 5000 });
   assert.notDeepEqual(await raw(), inView, 'at rest it is drawn');
+  // With its text alternative: what a page opened afresh on these values shows.
+  const fresh = await open(browser, page.url(), phone);
+  assert.equal(await caption(page), await caption(fresh.page), 'at rest its caption is current');
   assert.deepEqual(errors, []);
+  assert.deepEqual(fresh.errors, []);
+  await fresh.context.close();
   await context.close();
 });
 

@@ -3,7 +3,7 @@
 // snapshots (crates/app/tests/snapshots/quarter-car.snap); nothing is recomputed here.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, readout, canvasFingerprint, waitForReadout, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, waitForReadout, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
 import { waitForChange, assertDrawn, assertKeyboardMove } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -24,8 +24,8 @@ test('defaults and every preset show the readouts and captions computed natively
     const { page, errors, context } = await open(browser, `${server.url}?demo=${ID}&${state.query}`);
     await assertReadoutsMatch(page, state);
     for (const [i, p] of doc.spec.plots.entries()) {
-      const caption = (await page.textContent(`#desc-${p.key}`)).trim();
-      assert.equal(caption, state.figures[i].description, `${state.name}: caption of ${p.key}`);
+      const shown = (await caption(page, p.key)).trim();
+      assert.equal(shown, state.figures[i].description, `${state.name}: caption of ${p.key}`);
       const [ink] = await canvasFingerprint(page, p.key);
       assert.ok(ink > 2000, `${state.name}: ${p.key} has ink (${ink} px)`);
     }

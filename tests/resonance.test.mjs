@@ -4,7 +4,7 @@
 // (crates/app/tests/snapshots/resonance.snap); nothing is recomputed here.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
 import { allReadouts, assertLinkReproduces, assertFitsPhone, pressOn, waitForChange } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -31,8 +31,8 @@ test('defaults and every preset show the readouts and captions computed natively
     await assertReadoutsMatch(page, state);
     await assertNoNonsense(page);
     for (const [i, p] of doc.spec.plots.entries()) {
-      const caption = (await page.textContent(`#desc-${p.key}`)).trim();
-      assert.equal(caption, state.figures[i].description, `${state.name}: caption of ${p.key}`);
+      const shown = (await caption(page, p.key)).trim();
+      assert.equal(shown, state.figures[i].description, `${state.name}: caption of ${p.key}`);
     }
     for (const plot of ['magnitude', 'phase', 'time', 'schematic']) {
       const [ink] = await canvasFingerprint(page, plot);
@@ -50,7 +50,7 @@ test('at resonance no beat period is shown, and the page says why', async () => 
   assert.equal(await readout(page, 'beat_period'), '');
   assert.equal((await page.textContent('[data-readout="beat_period"] dd')).trim(), '—');
   assert.match(await readout(page, 'beats'), /^none \(/);
-  assert.match(await page.textContent('#desc-time'), /builds up/);
+  assert.match(await caption(page, 'time'), /builds up/);
   assert.deepEqual(errors, []);
   await context.close();
 });
@@ -128,7 +128,7 @@ test('undefined readouts show a dash, never NaN, at the ends of every range', as
   // A broad peak (ζ = 0.5) has no lower half-power point: no width, and the caption says so.
   const { page, context } = await open(browser, `${server.url}?demo=${ID}&zeta=0.5`);
   assert.equal(await readout(page, 'peak_width'), '');
-  assert.match(await page.textContent('#desc-magnitude'), /no lower half-power point/);
+  assert.match(await caption(page, 'magnitude'), /no lower half-power point/);
   await context.close();
 });
 

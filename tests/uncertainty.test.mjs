@@ -4,7 +4,7 @@
 // moved from the keyboard, and the time of a 100 000-draw run.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, assertReadoutsMatch, assertFiguresMatch, stateSlug } from './support/golden.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
@@ -29,10 +29,10 @@ test('choosing normal parts redraws the histograms and says so', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&zeta=1&dm=10`);
   const p5 = await readout(page, 'zeta_p5');
   const print = await canvasFingerprint(page, 'zeta_hist');
-  assert.match(await page.textContent('#desc-zeta_hist'), /10000 uniform draws/);
+  assert.match(await caption(page, 'zeta_hist'), /10000 uniform draws/);
   await page.selectOption('#p-dist', '1');
   await waitForUrlParam(page, 'dist', '1');
-  assert.match(await page.textContent('#desc-zeta_hist'), /normal \(tolerance = 3σ\) draws/);
+  assert.match(await caption(page, 'zeta_hist'), /normal \(tolerance = 3σ\) draws/);
   assert.notEqual(await readout(page, 'zeta_p5'), p5);
   assert.notDeepEqual(await canvasFingerprint(page, 'zeta_hist'), print);
   assert.deepEqual(errors, []);
@@ -115,7 +115,7 @@ test('every control moves from the keyboard; the other system\'s sliders are ign
   // Switch system: now they count.
   await page.selectOption('#p-system', '1');
   await waitForUrlParam(page, 'system', '1');
-  assert.match(await page.textContent('#desc-band'), /suspension sliders are ignored/);
+  assert.match(await caption(page, 'band'), /suspension sliders are ignored/);
   for (const key of ['R', 'L', 'C', 'dR', 'dL', 'dC']) {
     const before = await state(page);
     await nudge(page, key);

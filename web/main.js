@@ -272,7 +272,9 @@ function drawStale(all) {
   if (app.needsRecovery || app.framePending) return; // the next frame draws anyway
   try {
     const dpr = window.devicePixelRatio || 1;
-    app.staleLeft = app.session.drawStale(dpr, isDark(), all);
+    const out = app.session.drawStale(dpr, isDark(), all);
+    app.staleLeft = out.left;
+    showCaptions(out.descriptions);
     if (app.schematicStale && (all || app.schematicVisible)) drawTime(dpr, true);
   } catch (err) {
     reportFailure(err);
@@ -367,6 +369,18 @@ function announce(text) {
   }, ANNOUNCE_DELAY_MS);
 }
 
+/**
+ * Writes each plot's text alternative (`[{key, text}]`) into its caption: an update gives
+ * those of the plots it drew (and the first plot's), drawStale those of the plots it
+ * catches up.
+ */
+function showCaptions(descriptions) {
+  for (const d of descriptions) {
+    const cap = app.view.captions.get(d.key);
+    if (cap) setText(cap, d.text);
+  }
+}
+
 function drawFrame() {
   app.framePending = false;
   if (app.needsRecovery) {
@@ -389,10 +403,7 @@ function drawFrame() {
     describeSliders(out.readouts);
     highlightRow(app.view.table, out.readouts);
     fillLiveCells(app.view.table, out.readouts);
-    for (const d of out.descriptions) {
-      const cap = app.view.captions.get(d.key);
-      if (cap) setText(cap, d.text);
-    }
+    showCaptions(out.descriptions);
     if (out.descriptions.length) announce(out.descriptions[0].text);
     if (!app.firstDrawn) {
       app.firstDrawn = true;

@@ -62,11 +62,25 @@ export function readout(page, key) {
   return page.getAttribute(`[data-readout="${key}"]`, 'data-value');
 }
 
+/** Resolves when every plot shows the last update (those out of view catch up at rest). */
+export function drawn(page) {
+  return page.waitForFunction(() => !window.zetaDiagnostics || window.zetaDiagnostics.drawn(), null, { timeout: 5000 });
+}
+
+/**
+ * Plot `plot`'s caption (its text alternative), once every plot is drawn: a plot's figure,
+ * and so its caption, is built when the plot is drawn.
+ */
+export async function caption(page, plot) {
+  await drawn(page);
+  return page.textContent(`#desc-${plot}`);
+}
+
 /** A cheap fingerprint of a canvas's pixels: [non-background pixel count, checksum]. */
 export async function canvasFingerprint(page, plot, { settled = true } = {}) {
   // Plots out of view are drawn once the controls rest (web/main.js observeVisibility);
   // `settled: false` reads the canvas as it is now.
-  if (settled) await page.waitForFunction(() => !window.zetaDiagnostics || window.zetaDiagnostics.drawn(), null, { timeout: 5000 });
+  if (settled) await drawn(page);
   return page.evaluate((key) => {
     const c = document.querySelector(`canvas[data-plot="${key}"]`);
     const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;

@@ -3,7 +3,7 @@
 // that the page shows the same values, instead of recomputing physics in JavaScript.
 import { readFileSync } from 'node:fs';
 import assert from 'node:assert/strict';
-import { open } from './browser.mjs';
+import { open, caption } from './browser.mjs';
 import { assertDrawn, assertRowCurrent } from './page.mjs';
 
 const DIR = new URL('../../crates/app/tests/snapshots/', import.meta.url);
@@ -35,7 +35,7 @@ export function stateSlug(name) {
 export async function assertFiguresMatch(page, state, plots, minInk) {
   await assertDrawn(page, plots, minInk);
   for (const [i, plot] of plots.entries()) {
-    assert.equal(await page.textContent(`#desc-${plot}`), state.figures[i].description, `${state.name}: ${plot} described as recorded`);
+    assert.equal(await caption(page, plot), state.figures[i].description, `${state.name}: ${plot} described as recorded`);
   }
 }
 

@@ -45,8 +45,20 @@ pub struct Frame {
 pub trait Demo {
     /// Parameters, readouts and plots, for the UI to build controls from.
     fn spec(&self) -> DemoSpec;
-    /// Recomputes for these (validated) parameter values.
-    fn update(&mut self, params: &Params) -> Frame;
+    /// Recomputes for these (validated) parameter values: the readouts and time span, no
+    /// figures. Each figure is built when asked for, [`Demo::figure`]: a page draws only
+    /// the plots on screen while a control moves.
+    fn recompute(&mut self, params: &Params) -> Frame;
+    /// The figure of plot `plot` (an index into the spec's plots) from the last
+    /// [`Demo::recompute`]; `None` past the last plot, before the first recompute, or
+    /// when the last parameters described no valid system.
+    fn figure(&self, plot: usize) -> Option<Figure>;
+    /// Recomputes, with every figure: [`Demo::recompute`] and each [`Demo::figure`].
+    fn update(&mut self, params: &Params) -> Frame {
+        let mut frame = self.recompute(params);
+        frame.figures = (0..).map_while(|i| self.figure(i)).collect();
+        frame
+    }
     /// The schematic at time `t` \[s\] (for demos whose spec sets `schematic`).
     fn schematic(&self, params: &Params, t: f64) -> Option<Figure>;
     /// Parameters the last [`Demo::update`] derived from others (e.g. `c` from a moved
@@ -93,8 +105,9 @@ pub trait Model: 'static {
     /// undefined rather than panicking).
     fn step(&mut self, p: &Self::Params) -> Option<Self::Results>;
 
-    /// One figure per declared plot, in order, from the results.
-    fn figures(&self, p: &Self::Params, r: &Self::Results) -> Vec<Figure>;
+    /// The figure of declared plot number `plot` from the results; `None` past the last
+    /// plot (the registry test checks there is one for each declared plot).
+    fn figure(&self, plot: usize, p: &Self::Params, r: &Self::Results) -> Option<Figure>;
 
     /// Time span \[s\] of the animation, for demos with a schematic.
     fn time_span(&self, _p: &Self::Params, _r: &Self::Results) -> Option<(f64, f64)> {
@@ -145,6 +158,9 @@ pub struct Typed<M: Model> {
     model: M,
     decl: Declaration<M::Params, M::Results>,
     tour: Option<paper::Tour>,
+    /// The parameters and results of the last step, which figures are built from; `None`
+    /// before the first step and when the parameters described no valid system.
+    last: Option<(M::Params, M::Results)>,
 }
 
 impl<M: Model> Typed<M> {
@@ -154,6 +170,7 @@ impl<M: Model> Typed<M> {
             model,
             decl: M::declare(),
             tour: None,
+            last: None,
         }
     }
 }
@@ -163,22 +180,30 @@ impl<M: Model> Demo for Typed<M> {
         self.decl.spec()
     }
 
-    fn update(&mut self, params: &Params) -> Frame {
+    fn recompute(&mut self, params: &Params) -> Frame {
         let p = self.decl.read(params);
+        self.last = None;
         match self.model.step(&p) {
             Some(r) => {
                 self.tour = self.model.tour(&p, &r);
-                Frame {
+                let frame = Frame {
                     readouts: self.decl.readouts(&r),
-                    figures: self.model.figures(&p, &r),
+                    figures: Vec::new(),
                     time_span: self.model.time_span(&p, &r),
-                }
+                };
+                self.last = Some((p, r));
+                frame
             }
             None => {
                 self.tour = None;
                 self.decl.undefined_frame()
             }
         }
+    }
+
+    fn figure(&self, plot: usize) -> Option<Figure> {
+        let (p, r) = self.last.as_ref()?;
+        self.model.figure(plot, p, r)
     }
 
     fn schematic(&self, params: &Params, t: f64) -> Option<Figure> {

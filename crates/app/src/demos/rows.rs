@@ -85,9 +85,9 @@ pub(crate) fn drawn_plots<R>(rows: &[Drawn<R>]) -> Vec<PlotSpec> {
     plots(&rows.iter().map(|row| row.0).collect::<Vec<_>>())
 }
 
-/// The figures of these rows drawn from `r`, in the order of their plots.
-pub(crate) fn figures<R>(rows: &[Drawn<R>], r: &R) -> Vec<Figure> {
-    rows.iter().map(|(_, draw)| draw(r)).collect()
+/// The figure of row `plot` drawn from `r`; `None` past the last row.
+pub(crate) fn figure<R>(rows: &[Drawn<R>], plot: usize, r: &R) -> Option<Figure> {
+    rows.get(plot).map(|(_, draw)| draw(r))
 }
 
 /// Every parameter's key and default value, in order: what a preset starts from.

@@ -13,7 +13,9 @@ pub(super) struct SetResult {
 #[derive(Serialize)]
 pub(super) struct UpdateResult<'a> {
     pub(super) readouts: &'a [crate::demos::Readout],
-    /// `[{key, text}]`: each plot's text alternative.
+    /// `[{key, text}]`: the text alternative of each plot built this update (those on
+    /// screen, and the first plot, whose text is announced); the others come with
+    /// [`StaleResult`] when they are drawn.
     pub(super) descriptions: Vec<Description<'a>>,
     /// `[start, end]` of the animation in s, if the demo animates.
     pub(super) time_span: Option<(f64, f64)>,
@@ -24,6 +26,15 @@ pub(super) struct UpdateResult<'a> {
     /// The guided tour with its checked claims, for the demo that has one (`paper`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) tour: Option<crate::demos::paper::Tour>,
+}
+
+/// What [`Session::draw_stale`] returns to the page.
+#[derive(Serialize)]
+pub(super) struct StaleResult<'a> {
+    /// Whether any plot still shows an older frame than the last update's.
+    pub(super) left: bool,
+    /// `[{key, text}]`: the text alternative of each plot drawn by this call.
+    pub(super) descriptions: Vec<Description<'a>>,
 }
 
 #[derive(Serialize)]

@@ -1,11 +1,12 @@
 //! [`Session`]: one open demo, its parameters, canvases and last figures.
 
-use super::result::{Description, SetResult, UpdateResult};
+use super::result::{Description, SetResult, StaleResult, UpdateResult};
 use super::translate::translate_spec;
 use super::{js_err, theme, to_js};
 use crate::canvas::Canvas;
 use crate::demos::{self, Demo, Frame};
 use crate::export;
+use crate::figure::Figure;
 use crate::params::{resolve_query, Params};
 use crate::render::{
     ease_axes, hold_axes, render, render_with, AxisRanges, Direct, Output, PlotGeometry,
@@ -28,7 +29,11 @@ pub struct Session {
     /// Plots whose canvas shows an older frame than the last update's.
     stale: Vec<bool>,
     schematic_canvas: Option<HtmlCanvasElement>,
+    /// The last update's readouts and time span (its figures are in `figures`).
     frame: Option<Frame>,
+    /// The last update's figures, each built when it is first drawn or asked for (see
+    /// [`Demo::figure`]): while a control moves, plots out of view cost nothing.
+    figures: Vec<Option<Figure>>,
     geometry: Vec<Option<PlotGeometry>>,
     /// Whether a control is being dragged: axes then hold (see [`hold_axes`]).
     dragging: bool,
@@ -59,6 +64,7 @@ impl Session {
             stale: vec![false; n],
             schematic_canvas: None,
             frame: None,
+            figures: vec![None; n],
             geometry: vec![None; n],
             dragging: false,
             shown: vec![None; n],
@@ -116,45 +122,25 @@ impl Session {
 
     /// Recomputes, draws every attached plot canvas that is on screen (sized by the page
     /// at `scale` = devicePixelRatio; see [`Session::set_visible`]) and returns
-    /// `{readouts, descriptions, time_span, derived, provisional, tour}`.
+    /// `{readouts, descriptions, time_span, derived, provisional, tour}`. Only the figures
+    /// drawn, and the first plot's (its text is announced), are built.
     pub fn update(&mut self, scale: f64, dark: bool) -> Result<JsValue, JsError> {
-        let mut frame = self.demo.update(&self.params);
+        let frame = self.demo.recompute(&self.params);
         let mut derived = Vec::new();
         for (key, value) in self.demo.derived_params() {
             if let Some((v, _)) = self.params.set_raw(&self.spec, key, &format!("{value}")) {
                 derived.push((key, v));
             }
         }
-        for (i, fig) in frame.figures.iter_mut().enumerate() {
-            if self.dragging {
-                hold_axes(fig, self.shown.get(i).copied().flatten());
-            } else if let Some((from, f)) = &self.released {
-                ease_axes(fig, from.get(i).copied().flatten(), *f);
-            }
-            if let Some(slot) = self.shown.get_mut(i) {
-                *slot = Some((fig.x.range, fig.y.range));
-            }
-        }
+        self.frame = Some(frame);
+        self.figures.fill(None);
         self.stale.fill(true);
-        let frame = self.frame.insert(frame);
-        draw_plots(
-            frame,
-            &self.canvases,
-            &self.visible,
-            &mut self.stale,
-            &mut self.geometry,
-            Drawn { scale, dark },
-        )?;
-        let descriptions = self
-            .spec
-            .plots
-            .iter()
-            .zip(&frame.figures)
-            .map(|(p, f)| Description {
-                key: p.key,
-                text: &f.description,
-            })
+        let built: Vec<bool> = (0..self.figures.len())
+            .map(|i| (i == 0 || self.visible[i]) && self.build(i).is_some())
             .collect();
+        self.draw_plots(&self.visible.clone(), Drawn { scale, dark })?;
+        let descriptions = self.descriptions(&built);
+        let frame = self.frame.as_ref().ok_or_else(|| js_err("no frame"))?;
         to_js(&UpdateResult {
             readouts: &frame.readouts,
             descriptions,
@@ -181,27 +167,30 @@ impl Session {
     }
 
     /// Draws the plots that show an older frame than the last update's, from that update's
-    /// figures (nothing is recomputed): those on screen, or with `all` the first one of any
+    /// results (nothing is recomputed): those on screen, or with `all` the first one of any
     /// (the page calls that once per task while the controls rest, so no task grows long).
-    /// Returns whether any plot is still stale.
+    /// Returns `{left, descriptions}`: whether any plot is still stale, and the text
+    /// alternatives of those drawn.
     #[wasm_bindgen(js_name = drawStale)]
-    pub fn draw_stale(&mut self, scale: f64, dark: bool, all: bool) -> Result<bool, JsError> {
-        let Some(frame) = &self.frame else {
-            return Ok(false);
-        };
+    pub fn draw_stale(&mut self, scale: f64, dark: bool, all: bool) -> Result<JsValue, JsError> {
+        if self.frame.is_none() {
+            return to_js(&StaleResult {
+                left: false,
+                descriptions: Vec::new(),
+            });
+        }
         let next = self.stale.iter().position(|s| *s);
         let wanted: Vec<bool> = (self.stale.iter().zip(&self.visible).enumerate())
             .map(|(i, (stale, on))| *stale && if all { Some(i) == next } else { *on })
             .collect();
-        draw_plots(
-            frame,
-            &self.canvases,
-            &wanted,
-            &mut self.stale,
-            &mut self.geometry,
-            Drawn { scale, dark },
-        )?;
-        Ok(self.stale.iter().any(|s| *s))
+        for (i, _) in wanted.iter().enumerate().filter(|(_, w)| **w) {
+            self.build(i);
+        }
+        self.draw_plots(&wanted, Drawn { scale, dark })?;
+        to_js(&StaleResult {
+            left: self.stale.iter().any(|s| *s),
+            descriptions: self.descriptions(&wanted),
+        })
     }
 
     /// Continues a pending heavy study (sweep, Monte Carlo) for about `budget_ms`:
@@ -291,9 +280,82 @@ impl Session {
         self.params = Params::defaults(&self.spec);
     }
 
-    fn figure(&self, key: &str) -> Option<(usize, &crate::figure::Figure)> {
+    /// Plot `key`'s figure of the last update, if it has been built.
+    fn figure(&self, key: &str) -> Option<(usize, &Figure)> {
         let i = self.spec.plots.iter().position(|p| p.key == key)?;
-        Some((i, self.frame.as_ref()?.figures.get(i)?))
+        Some((i, self.figures.get(i)?.as_ref()?))
+    }
+
+    /// Builds plot `key`'s figure of the last update unless it has been (see
+    /// [`Session::figure`]).
+    fn build_plot(&mut self, key: &str) {
+        if let Some(i) = self.spec.plots.iter().position(|p| p.key == key) {
+            self.build(i);
+        }
+    }
+
+    /// Builds plot `i`'s figure of the last update unless it has been, its axes held
+    /// during a drag or eased after one, and notes its ranges as shown.
+    fn build(&mut self, i: usize) -> Option<&Figure> {
+        if self.figures.get(i)?.is_none() {
+            let mut fig = self.demo.figure(i)?;
+            if self.dragging {
+                hold_axes(&mut fig, self.shown.get(i).copied().flatten());
+            } else if let Some((from, f)) = &self.released {
+                ease_axes(&mut fig, from.get(i).copied().flatten(), *f);
+            }
+            if let Some(slot) = self.shown.get_mut(i) {
+                *slot = Some((fig.x.range, fig.y.range));
+            }
+            *self.figures.get_mut(i)? = Some(fig);
+        }
+        self.figures.get(i)?.as_ref()
+    }
+
+    /// The text alternatives of the plots flagged in `which` that have a figure.
+    fn descriptions(&self, which: &[bool]) -> Vec<Description<'_>> {
+        let plots = self.spec.plots.iter().zip(&self.figures).zip(which);
+        plots
+            .filter(|(_, w)| **w)
+            .filter_map(|((p, f), _)| {
+                Some(Description {
+                    key: p.key,
+                    text: &f.as_ref()?.description,
+                })
+            })
+            .collect()
+    }
+
+    /// Draws the built figures whose `wanted` flag is set on their attached canvases,
+    /// clearing their `stale` mark and keeping where each was drawn.
+    fn draw_plots(&mut self, wanted: &[bool], how: Drawn) -> Result<(), JsError> {
+        let scale = if how.scale.is_finite() {
+            how.scale.clamp(0.5, 4.0)
+        } else {
+            1.0
+        };
+        let plots = self.canvases.iter().zip(&self.figures).enumerate();
+        for (i, (canvas, fig)) in plots {
+            if wanted.get(i) != Some(&true) {
+                continue;
+            }
+            // A plot with no figure (parameters that describe no valid system) has nothing
+            // newer to show either.
+            if let Some(slot) = self.stale.get_mut(i) {
+                *slot = false;
+            }
+            let Some((fig, backend)) = fig
+                .as_ref()
+                .zip(canvas.as_ref().and_then(crate::canvas::on))
+            else {
+                continue;
+            };
+            let geo = draw_on(backend, fig, how.dark, scale)?;
+            if let Some(slot) = self.geometry.get_mut(i) {
+                *slot = Some(geo);
+            }
+        }
+        Ok(())
     }
 
     /// Backend-pixel x of time `t` on plot `key`, if its x axis is time and `t` is in range.
@@ -321,7 +383,8 @@ impl Session {
     }
 
     /// CSV of plot `key`'s data, with the parameters and units in a header.
-    pub fn csv(&self, key: &str) -> Result<String, JsError> {
+    pub fn csv(&mut self, key: &str) -> Result<String, JsError> {
+        self.build_plot(key);
         let (_, fig) = self.figure(key).ok_or_else(|| js_err("no such plot"))?;
         let params: Vec<(&str, f64, &str)> = self
             .params
@@ -336,13 +399,14 @@ impl Session {
     /// the first module (feature `first`): the page waits for the full one to export SVG.
     #[cfg(not(feature = "first"))]
     pub fn svg(
-        &self,
+        &mut self,
         key: &str,
         w: u32,
         h: u32,
         dark: bool,
         measure: HtmlCanvasElement,
     ) -> Result<String, JsError> {
+        self.build_plot(key);
         let (_, fig) = self.figure(key).ok_or_else(|| js_err("no such plot"))?;
         let mut buf = String::new();
         {
@@ -358,12 +422,13 @@ impl Session {
     /// Draws plot `key` onto another canvas (e.g. a 2× canvas for PNG export).
     #[wasm_bindgen(js_name = renderTo)]
     pub fn render_to(
-        &self,
+        &mut self,
         key: &str,
         canvas: HtmlCanvasElement,
         scale: f64,
         dark: bool,
     ) -> Result<(), JsError> {
+        self.build_plot(key);
         let (_, fig) = self.figure(key).ok_or_else(|| js_err("no such plot"))?;
         let backend = crate::canvas::on(&canvas).ok_or_else(|| js_err("no 2D context"))?;
         let scale = if scale.is_finite() {
@@ -380,39 +445,6 @@ impl Session {
 struct Drawn {
     scale: f64,
     dark: bool,
-}
-
-/// Draws the figures of `frame` whose `wanted` flag is set on their attached canvases,
-/// clearing their `stale` mark and keeping where each was drawn in `geometry`.
-fn draw_plots(
-    frame: &Frame,
-    canvases: &[Option<HtmlCanvasElement>],
-    wanted: &[bool],
-    stale: &mut [bool],
-    geometry: &mut [Option<PlotGeometry>],
-    how: Drawn,
-) -> Result<(), JsError> {
-    let scale = if how.scale.is_finite() {
-        how.scale.clamp(0.5, 4.0)
-    } else {
-        1.0
-    };
-    for (i, (canvas, fig)) in canvases.iter().zip(&frame.figures).enumerate() {
-        if !wanted.get(i).copied().unwrap_or(false) {
-            continue;
-        }
-        if let Some(slot) = stale.get_mut(i) {
-            *slot = false;
-        }
-        let Some(backend) = canvas.as_ref().and_then(crate::canvas::on) else {
-            continue;
-        };
-        let geo = draw_on(backend, fig, how.dark, scale)?;
-        if let Some(slot) = geometry.get_mut(i) {
-            *slot = Some(geo);
-        }
-    }
-    Ok(())
 }
 
 /// Draws `fig` on a canvas in the light or dark theme (heatmaps as one bitmap).

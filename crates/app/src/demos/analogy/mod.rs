@@ -120,8 +120,12 @@ impl Model for Analogy {
         p.twins()
     }
 
-    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![figures::responses(r), figures::energy(r)]
+    fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {
+        match plot {
+            0 => Some(figures::responses(r)),
+            1 => Some(figures::energy(r)),
+            _ => None,
+        }
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

@@ -216,16 +216,17 @@ impl Model for DesignSpace {
 
     progressive_hooks!(progressive::PROVISIONAL, refine_sweep);
 
-    fn figures(&self, p: &P, r: &Results) -> Vec<Figure> {
-        let figs = vec![
-            figures::map(self, p, r),
-            figures::pareto(self, p, r),
-            figures::response(p, r),
-        ];
-        match r.provisional {
-            true => figs.into_iter().map(|f| text::provisional(f, r)).collect(),
-            false => figs,
-        }
+    fn figure(&self, plot: usize, p: &P, r: &Results) -> Option<Figure> {
+        let fig = match plot {
+            0 => figures::map(self, p, r),
+            1 => figures::pareto(self, p, r),
+            2 => figures::response(p, r),
+            _ => return None,
+        };
+        Some(match r.provisional {
+            true => text::provisional(fig, r),
+            false => fig,
+        })
     }
 
     fn pick(&mut self, plot: &str, x: f64, y: f64) -> Vec<(&'static str, f64)> {

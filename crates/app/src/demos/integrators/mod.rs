@@ -94,20 +94,19 @@ impl Model for Integrators {
 
     progressive_hooks!(progressive::PROVISIONAL, refine_study);
 
-    fn figures(&self, p: &P, r: &Results) -> Vec<Figure> {
-        let studied = [convergence::figure(p, r), work::figure(p, r)];
-        let studied = studied.map(|f| match r.provisional {
-            true => text::provisional(f, &r.study.budget),
-            false => f,
-        });
-        let [convergence, work] = studied;
-        vec![
-            figures::response(p, r),
-            figures::error(p, r),
-            convergence,
-            work,
-            stability::figure(p, r, self.cache.regions()),
-        ]
+    fn figure(&self, plot: usize, p: &P, r: &Results) -> Option<Figure> {
+        let studied = match plot {
+            0 => return Some(figures::response(p, r)),
+            1 => return Some(figures::error(p, r)),
+            2 => convergence::figure(p, r),
+            3 => work::figure(p, r),
+            4 => return Some(stability::figure(p, r, self.cache.regions())),
+            _ => return None,
+        };
+        Some(match r.provisional {
+            true => text::provisional(studied, &r.study.budget),
+            false => studied,
+        })
     }
 
     fn declare() -> Declaration<P, Results> {

@@ -89,8 +89,8 @@ impl Model for Paper {
         })
     }
 
-    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        r.thumbnails.clone()
+    fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {
+        r.thumbnails.get(plot).cloned()
     }
 
     fn tour(&self, _p: &P, r: &Results) -> Option<Tour> {

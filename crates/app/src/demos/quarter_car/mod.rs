@@ -245,12 +245,13 @@ impl Model for QuarterCar {
         })
     }
 
-    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![
-            response::response(r),
-            figures::settling(r),
-            figures::sensitivity(r),
-        ]
+    fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {
+        match plot {
+            0 => Some(response::response(r)),
+            1 => Some(figures::settling(r)),
+            2 => Some(figures::sensitivity(r)),
+            _ => None,
+        }
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

@@ -175,15 +175,22 @@ impl Model for QuarterCar2Dof {
         })
     }
 
-    fn figures(&self, p: &P, r: &Results) -> Vec<Figure> {
-        let car = p.car();
-        let sine = (p.road == RoadKind::Sine).then_some(p.f_road);
-        vec![
-            figures::motion(&self.run, r.t_end, p.road),
-            figures::acceleration(&self.run, car.as_ref(), r.t_end, r.metrics),
-            figures::frf(&self.run, r.f_body, r.f_wheel, sine),
-            figures::tyre(&self.run, r.t_end, r.static_tyre, r.metrics),
-        ]
+    fn figure(&self, plot: usize, p: &P, r: &Results) -> Option<Figure> {
+        match plot {
+            0 => Some(figures::motion(&self.run, r.t_end, p.road)),
+            1 => Some(figures::acceleration(
+                &self.run,
+                p.car().as_ref(),
+                r.t_end,
+                r.metrics,
+            )),
+            2 => {
+                let sine = (p.road == RoadKind::Sine).then_some(p.f_road);
+                Some(figures::frf(&self.run, r.f_body, r.f_wheel, sine))
+            }
+            3 => Some(figures::tyre(&self.run, r.t_end, r.static_tyre, r.metrics)),
+            _ => None,
+        }
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

@@ -80,8 +80,12 @@ impl Model for Regimes {
         })
     }
 
-    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![figures::response(r), figures::poles(r)]
+    fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {
+        match plot {
+            0 => Some(figures::response(r)),
+            1 => Some(figures::poles(r)),
+            _ => None,
+        }
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

@@ -142,12 +142,13 @@ impl Model for Resonance {
         })
     }
 
-    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![
-            frequency::magnitude(r, &self.grid, &self.family),
-            frequency::phase(r, &self.grid, &self.family),
-            time::response(r),
-        ]
+    fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {
+        match plot {
+            0 => Some(frequency::magnitude(r, &self.grid, &self.family)),
+            1 => Some(frequency::phase(r, &self.grid, &self.family)),
+            2 => Some(time::response(r)),
+            _ => None,
+        }
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

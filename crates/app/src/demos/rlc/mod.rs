@@ -117,11 +117,12 @@ impl Model for Rlc {
         })
     }
 
-    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        vec![
-            figures::signal(r, figures::Signal::Current),
-            figures::signal(r, figures::Signal::Voltage),
-        ]
+    fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {
+        match plot {
+            0 => Some(figures::signal(r, figures::Signal::Current)),
+            1 => Some(figures::signal(r, figures::Signal::Voltage)),
+            _ => None,
+        }
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

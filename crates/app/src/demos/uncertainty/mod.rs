@@ -161,32 +161,22 @@ impl Model for Uncertainty {
 
     progressive_hooks!(progressive::PROVISIONAL, refine_run);
 
-    fn figures(&self, p: &P, r: &Results) -> Vec<Figure> {
-        let mut figs = vec![
-            figures::band(p, r),
-            figures::histogram(
-                p,
-                &self.samples,
-                HistOf::Zeta,
-                r.zeta_pct,
-                r.yield_pct,
-                t!("uncertainty-plot-zeta-hist"),
-            ),
-            figures::histogram(
-                p,
-                &self.samples,
+    fn figure(&self, plot: usize, p: &P, r: &Results) -> Option<Figure> {
+        let (of, pct, title) = match plot {
+            0 => return Some(figures::band(p, r)),
+            1 => (HistOf::Zeta, r.zeta_pct, t!("uncertainty-plot-zeta-hist")),
+            2 => (
                 p.hist,
                 r.hist_pct,
-                r.yield_pct,
                 t!("uncertainty-hist-title", quantity = p.hist.label().0),
             ),
-        ];
+            _ => return None,
+        };
+        let mut fig = figures::histogram(p, &self.samples, of, pct, r.yield_pct, title);
         if let Some(full) = r.provisional_of {
-            for f in &mut figs[1..] {
-                text::mark_provisional(f, r.draws, full);
-            }
+            text::mark_provisional(&mut fig, r.draws, full);
         }
-        figs
+        Some(fig)
     }
 
     fn declare() -> Declaration<P, Results> {

@@ -127,8 +127,8 @@ impl Model for Universality {
         })
     }
 
-    fn figures(&self, _p: &P, r: &Results) -> Vec<Figure> {
-        rows::figures(&declaration::PLOTS, r)
+    fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {
+        rows::figure(&declaration::PLOTS, plot, r)
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {
