@@ -12,6 +12,7 @@ use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use zeta_solver::design::monte_carlo::{self, Distribution, McConfig, McSamples, Tolerance};
 use zeta_solver::design::sensitivity::Components;
 use zeta_solver::design::sweep::{sweep_kc_into, KcMaps, KcSweepConfig, RoadInput};
+use zeta_solver::integrate::analysis::Amplification;
 use zeta_solver::integrate::{Dopri5, Dopri5Config, FixedStep, Linear2, Rk4};
 use zeta_solver::metrics::SettlingBand;
 use zeta_solver::{linspace, FreeResponse, SecondOrder};
@@ -43,6 +44,11 @@ fn integrators(c: &mut Criterion) {
     .unwrap();
     c.bench_function("Dormand-Prince 5(4), 3 s at rtol 1e-8", |b| {
         b.iter(|| dp.solve(&sys, black_box([0.06, 0.0]), 0.0, 3.0))
+    });
+    // The integrators demo searches this on every move of ζ or ωₙ.
+    let poles = quarter_car().poles();
+    c.bench_function("Dormand-Prince 5(4) largest stable step, underdamped pair", |b| {
+        b.iter(|| dp.step_limit(black_box(&poles)))
     });
 }
 
