@@ -47,9 +47,10 @@ fn integrators(c: &mut Criterion) {
     });
     // The integrators demo searches this on every move of ζ or ωₙ.
     let poles = quarter_car().poles();
-    c.bench_function("Dormand-Prince 5(4) largest stable step, underdamped pair", |b| {
-        b.iter(|| dp.step_limit(black_box(&poles)))
-    });
+    c.bench_function(
+        "Dormand-Prince 5(4) largest stable step, underdamped pair",
+        |b| b.iter(|| dp.step_limit(black_box(&poles))),
+    );
 }
 
 fn design_sweep(c: &mut Criterion) {

@@ -16,7 +16,7 @@ use std::hash::{Hash, Hasher};
 
 /// Where a figure's legend goes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum Placement {
+pub enum Placement {
     /// No legend entries.
     None,
     /// A box with its top-left corner here, in plotting-area pixels, over no data.
@@ -24,6 +24,9 @@ pub(super) enum Placement {
     /// Rows under the chart, outside the plotting area (no corner was free of data).
     Below,
 }
+
+/// Left, top, right, bottom edges of a plotting area, backend pixels.
+pub(super) type Edges = (f64, f64, f64, f64);
 
 /// A chart over data values, on linear or log axes (one type for every pairing).
 pub(super) type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<Scale, Scale>>;
@@ -85,15 +88,23 @@ pub(super) fn draw<DB: DrawingBackend>(
     theme: &Theme,
     scale: f64,
     out: Output<'_>,
-) -> Result<(f64, f64, f64, f64), RenderError> {
+) -> Result<(Edges, Placement), RenderError> {
     let fg = theme.foreground;
     let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
     let entries = legend_entries(fig);
     let legend = Legend::measure(root, &entries, scale)?;
 
     // Where the legend can go without covering data: a trial layout gives the pixels.
+    // During a held drag it stays where it was (`out.legend`; a box whose entries grew is
+    // moved in just enough to fit): a legend that jumps between corners, or between a
+    // corner and rows below, moves the plot under the pointer and makes it draw whole.
     let mut placement = Placement::None;
-    if !entries.is_empty() {
+    let held = out
+        .legend
+        .filter(|p| *p != Placement::None && !entries.is_empty());
+    if let Some(held) = held {
+        placement = held;
+    } else if !entries.is_empty() {
         if let Some(direct) = out.direct {
             direct.mute(true);
         }
@@ -188,21 +199,24 @@ pub(super) fn draw<DB: DrawingBackend>(
 
     draw_lines_and_markers(&mut chart, fig, theme, scale, out.direct)?;
     match placement {
-        Placement::Inside(x, y) => legend.draw_box(
-            &chart.plotting_area().strip_coord_spec(),
-            &entries,
-            (x, y),
-            theme,
-            scale,
-        )?,
+        Placement::Inside(x, y) => {
+            let plot = chart.plotting_area().strip_coord_spec();
+            let (aw, ah) = plot.dim_in_pixel();
+            let pad = px(6.0, scale) as i32;
+            let (bw, bh) = legend.size;
+            let x = x.min(aw as i32 - bw - pad).max(pad);
+            let y = y.min(ah as i32 - bh - pad).max(pad);
+            legend.draw_box(&plot, &entries, (x, y), theme, scale)?
+        }
         Placement::Below => legend.draw_rows(&band, &entries, theme, scale)?,
         Placement::None => {}
     }
     let (xs, ys) = chart.plotting_area().get_pixel_range();
-    Ok((
+    let area = (
         f64::from(xs.start),
         f64::from(ys.start),
         f64::from(xs.end),
         f64::from(ys.end),
-    ))
+    );
+    Ok((area, placement))
 }

@@ -19,6 +19,7 @@ mod scale;
 mod tests;
 mod ticks;
 
+pub use chart::Placement;
 pub use corners::corners;
 pub use hold::{ease_axes, hold_axes, AxisRanges};
 pub use ticks::{log_ticks, tick_label};
@@ -66,6 +67,8 @@ pub struct PlotGeometry {
     pub x_log: bool,
     /// Whether y is logarithmic.
     pub y_log: bool,
+    /// Where the legend went (kept during a held drag, see [`Output::legend`]).
+    pub legend: Placement,
 }
 
 impl PlotGeometry {
@@ -163,11 +166,17 @@ pub struct Stretched<'a> {
 pub struct Output<'a> {
     /// What the backend draws itself; `None`: everything through plotters.
     pub direct: Option<&'a dyn Direct>,
+    /// Where the legend stays (a held drag: where it was last drawn); `None`: where it
+    /// covers no data, found afresh.
+    pub legend: Option<Placement>,
 }
 
 impl Output<'_> {
     /// Vector output: heatmap cells as rectangles, dashes as segments.
-    pub const VECTOR: Output<'static> = Output { direct: None };
+    pub const VECTOR: Output<'static> = Output {
+        direct: None,
+        legend: None,
+    };
 }
 
 /// [`render`] for a backend that can do more (see [`Output`]).
@@ -184,10 +193,11 @@ pub fn render_with<DB: DrawingBackend>(
         root.present().map_err(err)?;
         return Ok(g);
     }
-    let area = draw(root, fig, theme, scale, out)?;
+    let (area, legend) = draw(root, fig, theme, scale, out)?;
     root.present().map_err(err)?;
     Ok(PlotGeometry {
         area,
+        legend,
         x: fig.x.range,
         y: fig.y.range,
         x_log: fig.x.scale == AxisScale::Log,
@@ -233,6 +243,7 @@ fn draw_schematic<DB: DrawingBackend>(
         area: (0.0, 0.0, w, h),
         x,
         y,
+        legend: Placement::None,
         x_log: false,
         y_log: false,
     })

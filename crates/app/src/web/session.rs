@@ -9,7 +9,7 @@ use crate::export;
 use crate::figure::Figure;
 use crate::params::{resolve_query, Params};
 use crate::render::{
-    ease_axes, hold_axes, render, render_with, AxisRanges, Direct, Output, PlotGeometry,
+    ease_axes, hold_axes, render, render_with, AxisRanges, Direct, Output, Placement, PlotGeometry,
 };
 use crate::spec::DemoSpec;
 use plotters::prelude::IntoDrawingArea;
@@ -350,7 +350,10 @@ impl Session {
             else {
                 continue;
             };
-            let geo = draw_on(backend, fig, how.dark, scale)?;
+            // During a drag the legend stays where it was last drawn.
+            let held = self.geometry.get(i).copied().flatten();
+            let legend = held.filter(|_| self.dragging).map(|g| g.legend);
+            let geo = draw_on(backend, fig, how.dark, scale, legend)?;
             if let Some(slot) = self.geometry.get_mut(i) {
                 *slot = Some(geo);
             }
@@ -436,7 +439,7 @@ impl Session {
         } else {
             1.0
         };
-        draw_on(backend, fig, dark, scale).map(|_| ())
+        draw_on(backend, fig, dark, scale, None).map(|_| ())
     }
 }
 
@@ -447,16 +450,19 @@ struct Drawn {
     dark: bool,
 }
 
-/// Draws `fig` on a canvas in the light or dark theme (heatmaps as one bitmap).
+/// Draws `fig` on a canvas in the light or dark theme (heatmaps as one bitmap), the legend
+/// at `legend` if given (see [`Output::legend`]).
 fn draw_on(
     backend: Canvas,
     fig: &crate::figure::Figure,
     dark: bool,
     scale: f64,
+    legend: Option<Placement>,
 ) -> Result<PlotGeometry, JsError> {
     let direct = crate::canvas::direct(&backend);
     let out = Output {
         direct: direct.as_ref().map(|d| d as &dyn Direct),
+        legend,
     };
     render_with(&backend.into_drawing_area(), fig, &theme(dark), scale, out).map_err(js_err)
 }

@@ -41,7 +41,10 @@ fn calls(fig: &Figure) -> Vec<String> {
         fig,
         &Theme::LIGHT,
         1.0,
-        Output { direct: Some(&rec) },
+        Output {
+            direct: Some(&rec),
+            legend: None,
+        },
     )
     .unwrap();
     rec.1.into_inner()
@@ -83,7 +86,10 @@ fn the_legend_trial_is_muted_and_the_static_layer_is_named_by_what_it_shows() {
             &fig,
             &Theme::DARK,
             1.0,
-            Output { direct: Some(&rec) },
+            Output {
+                direct: Some(&rec),
+                legend: None,
+            },
         )
         .unwrap();
         rec.1.into_inner()
@@ -116,7 +122,10 @@ fn a_heatmap_is_one_image_of_a_pixel_per_cell_over_its_cells_and_so_is_its_colou
             &fig,
             &Theme::LIGHT,
             1.0,
-            Output { direct: Some(&rec) },
+            Output {
+                direct: Some(&rec),
+                legend: None,
+            },
         )
         .unwrap()
     };
@@ -175,6 +184,7 @@ fn a_heatmap_is_one_image_of_a_pixel_per_cell_over_its_cells_and_so_is_its_colou
             1.0,
             Output {
                 direct: Some(&Recorder::default()),
+                legend: None,
             },
         )
         .unwrap();

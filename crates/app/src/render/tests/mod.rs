@@ -183,6 +183,21 @@ fn legend_box_y(svg: &str) -> Option<f64> {
     y.parse().ok()
 }
 
+/// The right edge of the legend box in an SVG rendering, if a box was drawn.
+fn svg_box_right(svg: &str) -> Option<f64> {
+    let at = svg.find("opacity=\"0.88\"")?;
+    let rect = &svg[svg[..at].rfind("<rect")?..];
+    let attr = |name: &str| -> Option<f64> {
+        rect.split(&format!(" {name}=\""))
+            .nth(1)?
+            .split('"')
+            .next()?
+            .parse()
+            .ok()
+    };
+    Some(attr("x")? + attr("width")?)
+}
+
 #[test]
 fn the_legend_goes_where_the_curves_are_not() {
     // A curve along the top of the plot: the legend moves to the bottom.
@@ -220,6 +235,51 @@ fn the_legend_goes_where_the_curves_are_not() {
     assert!(
         g.area.3 < 300.0,
         "room left under the chart for the legend rows"
+    );
+}
+
+#[test]
+fn a_held_legend_stays_where_it_was_even_over_the_curves() {
+    // Placed afresh, a curve along the top sends the box to a lower corner…
+    let mut fig = sample();
+    fig.markers.clear();
+    fig.series[0].points = (0..=50).map(|i| (f64::from(i) / 50.0, 0.9)).collect();
+    let draw = |legend: Option<Placement>| {
+        let mut svg = String::new();
+        let g = {
+            let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+            let out = Output {
+                direct: None,
+                legend,
+            };
+            render_with(&root, &fig, &Theme::LIGHT, 1.0, out).unwrap()
+        };
+        (svg, g)
+    };
+    let (_, free) = draw(None);
+    let Placement::Inside(_, y) = free.legend else {
+        panic!("a free corner: {:?}", free.legend)
+    };
+    assert!(y > 100, "a lower corner: y = {y}");
+    // …held at the top-left (as a drag that began there holds it), it stays there.
+    let (svg, held) = draw(Some(Placement::Inside(6, 6)));
+    assert_eq!(held.legend, Placement::Inside(6, 6));
+    let top = legend_box_y(&svg).expect("a box");
+    assert!(top < 60.0, "drawn at the top, over the curve: {top}");
+    // Held below the chart, it stays below; a spot too far right is moved in to fit.
+    let (svg, below) = draw(Some(Placement::Below));
+    assert_eq!(below.legend, Placement::Below);
+    assert!(legend_box_y(&svg).is_none());
+    assert!(
+        below.area.3 < free.area.3,
+        "room under the chart for the rows"
+    );
+    let (svg, _) = draw(Some(Placement::Inside(5000, y)));
+    let right = svg_box_right(&svg).expect("a box");
+    assert!(
+        right <= free.area.2 + 0.5,
+        "inside the plot: {right} <= {}",
+        free.area.2
     );
 }
 
