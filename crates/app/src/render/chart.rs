@@ -21,8 +21,10 @@ pub enum Placement {
     None,
     /// A box with its top-left corner here, in plotting-area pixels, over no data.
     Inside(i32, i32),
-    /// Rows under the chart, outside the plotting area (no corner was free of data).
-    Below,
+    /// Rows under the chart, outside the plotting area (no corner was free of data), in a
+    /// band this high (backend pixels; 0 until measured). Held, the band keeps at least
+    /// its height, so entries that wrap to fewer rows do not move the chart.
+    Below(u32),
 }
 
 /// Left, top, right, bottom edges of a plotting area, backend pixels.
@@ -114,18 +116,20 @@ pub(super) fn draw<DB: DrawingBackend>(
         }
         placement = match free_corner(&trial?, fig, legend.size, scale) {
             Some((x, y)) => Placement::Inside(x, y),
-            None => Placement::Below,
+            None => Placement::Below(0),
         };
         if out.direct.is_none() {
             root.fill(&theme.background).map_err(err)?;
         }
     }
     let (w, h) = root.dim_in_pixel();
-    let band_h = if placement == Placement::Below {
-        legend.band_height(w, scale).min(h / 3)
-    } else {
-        0
+    let band_h = match placement {
+        Placement::Below(held) => legend.band_height(w, scale).max(held).min(h / 3),
+        _ => 0,
     };
+    if let Placement::Below(_) = placement {
+        placement = Placement::Below(band_h);
+    }
     let key = static_key(fig, theme, scale, (w, h, band_h));
     if let Some(direct) = out.direct {
         direct.begin_layer(key);
@@ -208,7 +212,7 @@ pub(super) fn draw<DB: DrawingBackend>(
             let y = y.min(ah as i32 - bh - pad).max(pad);
             legend.draw_box(&plot, &entries, (x, y), theme, scale)?
         }
-        Placement::Below => legend.draw_rows(&band, &entries, theme, scale)?,
+        Placement::Below(_) => legend.draw_rows(&band, &entries, theme, scale)?,
         Placement::None => {}
     }
     let (xs, ys) = chart.plotting_area().get_pixel_range();

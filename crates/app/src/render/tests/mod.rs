@@ -183,6 +183,14 @@ fn legend_box_y(svg: &str) -> Option<f64> {
     y.parse().ok()
 }
 
+/// The band height of a placement below the chart (0 otherwise).
+fn band_of(p: Placement) -> u32 {
+    match p {
+        Placement::Below(h) => h,
+        _ => 0,
+    }
+}
+
 /// The right edge of the legend box in an SVG rendering, if a box was drawn.
 fn svg_box_right(svg: &str) -> Option<f64> {
     let at = svg.find("opacity=\"0.88\"")?;
@@ -267,12 +275,21 @@ fn a_held_legend_stays_where_it_was_even_over_the_curves() {
     let top = legend_box_y(&svg).expect("a box");
     assert!(top < 60.0, "drawn at the top, over the curve: {top}");
     // Held below the chart, it stays below; a spot too far right is moved in to fit.
-    let (svg, below) = draw(Some(Placement::Below));
-    assert_eq!(below.legend, Placement::Below);
+    let (svg, below) = draw(Some(Placement::Below(0)));
+    assert!(matches!(below.legend, Placement::Below(h) if h > 0));
     assert!(legend_box_y(&svg).is_none());
     assert!(
         below.area.3 < free.area.3,
         "room under the chart for the rows"
+    );
+    // A band held higher than the rows need stays that high (the chart does not move).
+    let (_, tall) = draw(Some(Placement::Below(100)));
+    assert_eq!(tall.legend, Placement::Below(100));
+    assert!(
+        (below.area.3 - tall.area.3 - (100.0 - f64::from(band_of(below.legend)))).abs() < 1.5,
+        "{:?} {:?}",
+        below.area,
+        tall.area
     );
     let (svg, _) = draw(Some(Placement::Inside(5000, y)));
     let right = svg_box_right(&svg).expect("a box");
