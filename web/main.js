@@ -38,6 +38,7 @@ const reducedMotion = window.matchMedia('(prefers-reduced-motion: reduce)');
 const app = {
   demoId: null,
   session: null,
+  prepared: null, // the session whose static-layer canvases are set up (prepareLayers)
   view: null,
   framePending: false,
   needsRecovery: false,
@@ -281,11 +282,29 @@ function drawStale(all) {
   }
 }
 
+/**
+ * Once everything is drawn and the controls rest, the session sets up the canvases that
+ * keep each plot's static layer (once per session), so a first drag does not
+ * pay for them.
+ */
+function prepareLayers() {
+  if (app.prepared === app.session) return;
+  app.prepared = app.session;
+  try {
+    app.session.prepareLayers();
+  } catch (err) {
+    reportFailure(err);
+  }
+}
+
 /** Once the controls have rested, everything out of view catches up: one plot a frame, so
  * no task grows long. */
 function scheduleCatchUp(delay = REST_MS.offscreen) {
   clearTimeout(app.catchUp);
-  if (!app.staleLeft && !app.schematicStale) return;
+  if (!app.staleLeft && !app.schematicStale) {
+    prepareLayers();
+    return;
+  }
   app.catchUp = setTimeout(() => {
     const wait = restLeft(REST_MS.offscreen);
     if (wait > 0) {

@@ -15,7 +15,7 @@ mod html;
 #[cfg(not(feature = "first"))]
 mod web;
 
-pub use direct::CanvasDirect;
+pub use direct::{prepare, CanvasDirect};
 pub use html::{CanvasError, HtmlCanvas};
 use plotters_backend::BackendTextStyle;
 use wasm_bindgen::JsCast;

@@ -193,6 +193,15 @@ impl Session {
         })
     }
 
+    /// Sets up, while the controls rest, what a first drag would otherwise pay for: the
+    /// canvas that keeps each attached plot's static layer (see `canvas::prepare`).
+    #[wasm_bindgen(js_name = prepareLayers)]
+    pub fn prepare_layers(&self) {
+        for canvas in self.canvases.iter().flatten() {
+            crate::canvas::prepare(canvas);
+        }
+    }
+
     /// Continues a pending heavy study (sweep, Monte Carlo) for about `budget_ms`:
     /// `undefined` when none is pending, else the fraction done (1: finished, call `update`).
     pub fn refine(&mut self, budget_ms: f64) -> Option<f64> {
