@@ -466,6 +466,9 @@ function hostState() {
   return { demo: app.demoId, params, readouts };
 }
 
+/** What each time plot's overlay shows: the cursor key drawTime drew last (absent: redraw). */
+const cursorDrawn = new WeakMap();
+
 /** Draws the schematic at the current time and the time cursor on every time plot. */
 function drawTime(dpr = window.devicePixelRatio || 1, schematic = app.schematicVisible) {
   const anim = app.view.animation;
@@ -478,10 +481,17 @@ function drawTime(dpr = window.devicePixelRatio || 1, schematic = app.schematicV
   setText(anim.time, `t = ${num(app.time, 2)} s`);
   setAttr(anim.scrub, 'aria-valuetext', t('timeWords', { t: num(app.time, 2) }));
   for (const [key, { overlay }] of app.view.overlays) {
+    const at = app.session.timeToPixel(key, app.time);
+    const x = at === undefined || (app.time === t0 && !app.playing) ? undefined : at;
+    // Cleared and drawn only when the cursor moves (or the overlay was resized, the theme
+    // changed, or a probe drew on it): clearing every overlay every frame cost a full-size
+    // canvas operation per time plot, on screen or not, while a slider moved.
+    const drawnKey = `${x}|${overlay.width}|${overlay.height}|${isDark()}`;
+    if (cursorDrawn.get(overlay) === drawnKey) continue;
+    cursorDrawn.set(overlay, drawnKey);
     const ctx = overlay.getContext('2d');
     ctx.clearRect(0, 0, overlay.width, overlay.height);
-    const x = app.session.timeToPixel(key, app.time);
-    if (x === undefined || (app.time === t0 && !app.playing)) continue;
+    if (x === undefined) continue;
     ctx.strokeStyle = isDark() ? 'rgba(230,233,237,0.8)' : 'rgba(33,37,41,0.7)';
     ctx.lineWidth = Math.max(1, dpr);
     ctx.setLineDash([4 * dpr, 3 * dpr]);
@@ -718,6 +728,7 @@ function wireProbes() {
         tip.hidden = true;
         return;
       }
+      cursorDrawn.delete(overlay); // the crosshair goes with the next drawTime
       const ctx = overlay.getContext('2d');
       ctx.save();
       ctx.strokeStyle = isDark() ? 'rgba(230,233,237,0.6)' : 'rgba(33,37,41,0.5)';
