@@ -27,6 +27,47 @@ struct Layer {
     valid: bool,
 }
 
+/// A canvas outside the page of one size, with its context (see `SCRATCH`).
+struct Scratch {
+    size: (u32, u32),
+    canvas: HtmlCanvasElement,
+    context: CanvasRenderingContext2d,
+}
+
+/// How many sizes of scratch canvas are kept.
+const SCRATCHES: usize = 4;
+
+/// Runs `draw` with a scratch canvas of `size` (kept, or made now); nothing if none can be
+/// made.
+fn with_scratch(
+    size: (u32, u32),
+    draw: impl FnOnce(&HtmlCanvasElement, &CanvasRenderingContext2d),
+) {
+    SCRATCH.with_borrow_mut(|kept| {
+        if !kept.iter().any(|s| s.size == size) {
+            let Some(canvas) = offscreen() else {
+                return;
+            };
+            canvas.set_width(size.0);
+            canvas.set_height(size.1);
+            let Some(context) = super::context_of(&canvas) else {
+                return;
+            };
+            if kept.len() >= SCRATCHES {
+                kept.remove(0);
+            }
+            kept.push(Scratch {
+                size,
+                canvas,
+                context,
+            });
+        }
+        if let Some(s) = kept.iter().find(|s| s.size == size) {
+            draw(&s.canvas, &s.context);
+        }
+    });
+}
+
 /// How many canvases' layers are kept: every plot of a page, and a few of the last.
 const LAYERS: usize = 12;
 
@@ -41,9 +82,10 @@ fn offscreen() -> Option<HtmlCanvasElement> {
 }
 
 thread_local! {
-    /// A canvas outside the page that holds an image before it is stretched.
-    static SCRATCH: Option<(HtmlCanvasElement, CanvasRenderingContext2d)> =
-        offscreen().and_then(|c| Some((c.clone(), super::context_of(&c)?)));
+    /// Canvases outside the page that hold an image before it is stretched, one per size
+    /// (a heatmap and its colour bar differ): resizing a canvas clears it and sets its
+    /// storage up again, and a drag draws both every frame.
+    static SCRATCH: RefCell<Vec<Scratch>> = const { RefCell::new(Vec::new()) };
     /// The static layers of the canvases drawn last, most recent last.
     static KEPT: RefCell<Vec<Layer>> = const { RefCell::new(Vec::new()) };
 }
@@ -176,13 +218,8 @@ impl Direct for CanvasDirect {
         ) else {
             return;
         };
-        SCRATCH.with(|scratch| {
-            let Some((canvas, scratch)) = scratch else {
-                return;
-            };
-            // Resizing also clears it.
-            canvas.set_width(w);
-            canvas.set_height(h);
+        // Every pixel of the scratch canvas is put: nothing of an earlier image shows.
+        with_scratch((w, h), |canvas, scratch| {
             if scratch.put_image_data(&data, 0.0, 0.0).is_err() {
                 return;
             }
