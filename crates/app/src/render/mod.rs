@@ -179,6 +179,16 @@ impl Output<'_> {
     };
 }
 
+impl<'a> Output<'a> {
+    /// Output through `direct`, the legend placed afresh.
+    pub fn with_direct(direct: &'a dyn Direct) -> Self {
+        Output {
+            direct: Some(direct),
+            legend: None,
+        }
+    }
+}
+
 /// [`render`] for a backend that can do more (see [`Output`]).
 pub fn render_with<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,

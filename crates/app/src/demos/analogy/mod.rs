@@ -112,6 +112,9 @@ impl Results {
     }
 }
 
+/// One figure per declared plot, in order.
+const FIGURES: [fn(&Results) -> Figure; 2] = [figures::responses, figures::energy];
+
 impl Model for Analogy {
     type Params = P;
     type Results = Results;
@@ -121,11 +124,7 @@ impl Model for Analogy {
     }
 
     fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {
-        match plot {
-            0 => Some(figures::responses(r)),
-            1 => Some(figures::energy(r)),
-            _ => None,
-        }
+        FIGURES.get(plot).map(|draw| draw(r))
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

@@ -184,6 +184,10 @@ pub struct Results {
     t_end: f64,
 }
 
+/// One figure per declared plot, in order.
+const FIGURES: [fn(&Results) -> Figure; 3] =
+    [response::response, figures::settling, figures::sensitivity];
+
 impl Model for QuarterCar {
     type Params = P;
     type Results = Results;
@@ -246,12 +250,7 @@ impl Model for QuarterCar {
     }
 
     fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {
-        match plot {
-            0 => Some(response::response(r)),
-            1 => Some(figures::settling(r)),
-            2 => Some(figures::sensitivity(r)),
-            _ => None,
-        }
+        FIGURES.get(plot).map(|draw| draw(r))
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

@@ -62,6 +62,9 @@ impl P {
     }
 }
 
+/// One figure per declared plot, in order.
+const FIGURES: [fn(&Results) -> Figure; 2] = [figures::response, figures::poles];
+
 impl Model for Regimes {
     type Params = P;
     type Results = Results;
@@ -81,11 +84,7 @@ impl Model for Regimes {
     }
 
     fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {
-        match plot {
-            0 => Some(figures::response(r)),
-            1 => Some(figures::poles(r)),
-            _ => None,
-        }
+        FIGURES.get(plot).map(|draw| draw(r))
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

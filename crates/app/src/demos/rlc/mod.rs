@@ -118,11 +118,8 @@ impl Model for Rlc {
     }
 
     fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {
-        match plot {
-            0 => Some(figures::signal(r, figures::Signal::Current)),
-            1 => Some(figures::signal(r, figures::Signal::Voltage)),
-            _ => None,
-        }
+        let signal = [figures::Signal::Current, figures::Signal::Voltage];
+        signal.get(plot).map(|&s| figures::signal(r, s))
     }
 
     fn time_span(&self, _p: &P, r: &Results) -> Option<(f64, f64)> {

@@ -36,17 +36,7 @@ fn calls(fig: &Figure) -> Vec<String> {
     let rec = Recorder::default();
     let mut svg = String::new();
     let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
-    render_with(
-        &root,
-        fig,
-        &Theme::LIGHT,
-        1.0,
-        Output {
-            direct: Some(&rec),
-            legend: None,
-        },
-    )
-    .unwrap();
+    render_with(&root, fig, &Theme::LIGHT, 1.0, Output::with_direct(&rec)).unwrap();
     rec.1.into_inner()
 }
 
@@ -81,17 +71,7 @@ fn the_legend_trial_is_muted_and_the_static_layer_is_named_by_what_it_shows() {
         let rec = Recorder::default();
         let mut svg = String::new();
         let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
-        render_with(
-            &root,
-            &fig,
-            &Theme::DARK,
-            1.0,
-            Output {
-                direct: Some(&rec),
-                legend: None,
-            },
-        )
-        .unwrap();
+        render_with(&root, &fig, &Theme::DARK, 1.0, Output::with_direct(&rec)).unwrap();
         rec.1.into_inner()
     };
     assert_ne!(dark[2], seen[2]);
@@ -117,17 +97,7 @@ fn a_heatmap_is_one_image_of_a_pixel_per_cell_over_its_cells_and_so_is_its_colou
     let mut svg = String::new();
     let geo = {
         let root = SVGBackend::with_string(&mut svg, (320, 160)).into_drawing_area();
-        render_with(
-            &root,
-            &fig,
-            &Theme::LIGHT,
-            1.0,
-            Output {
-                direct: Some(&rec),
-                legend: None,
-            },
-        )
-        .unwrap()
+        render_with(&root, &fig, &Theme::LIGHT, 1.0, Output::with_direct(&rec)).unwrap()
     };
     let rgb = |c: RGBColor| [c.0, c.1, c.2];
     let images = rec.0.into_inner();
@@ -182,10 +152,7 @@ fn a_heatmap_is_one_image_of_a_pixel_per_cell_over_its_cells_and_so_is_its_colou
             &fig,
             &Theme::LIGHT,
             1.0,
-            Output {
-                direct: Some(&Recorder::default()),
-                legend: None,
-            },
+            Output::with_direct(&Recorder::default()),
         )
         .unwrap();
         drop(root);
