@@ -5,7 +5,7 @@
 // natively for the parameters then current.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, canvasFingerprint, readout } from './support/browser.mjs';
+import { open, canvasFingerprint, readout, drawn } from './support/browser.mjs';
 import { goldenState, assertReadoutsMatch } from './support/golden.mjs';
 import { readFileSync } from 'node:fs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -180,6 +180,7 @@ test('a plot off screen waits while a control is held, and is drawn when it come
   assert.notDeepEqual(await raw(), inView, 'at rest it is drawn');
   // With its text alternative: what a page opened afresh on these values shows.
   const fresh = await open(browser, page.url(), phone);
+  await drawn(fresh.page);
   assert.equal(await caption(page), await caption(fresh.page), 'at rest its caption is current');
   assert.deepEqual(errors, []);
   assert.deepEqual(fresh.errors, []);
@@ -263,6 +264,59 @@ test('integrators: a moved ζ shows a coarse convergence study marked provisiona
       assert.ok(closeToRecorded(key, f.readouts[key], want[key]), `only the study for the current ζ is shown as final (${key}: ${f.readouts[key]})`);
     }
   }
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a paused time cursor is on every time plot again once the plots out of view catch up', async () => {
+  const phone = { viewport: { width: 360, height: 740 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true };
+  const { page, errors, context } = await open(browser, `${server.url}?demo=quarter-car-2dof`, phone);
+  await drawn(page);
+  // Ink on each plot's overlay (where the cursor is drawn), by plot key.
+  const cursors = () =>
+    page.evaluate(() =>
+      Object.fromEntries(
+        [...document.querySelectorAll('[data-plot-wrap]')].map((w) => {
+          const c = w.querySelector('canvas:not([data-plot])');
+          const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+          let n = 0;
+          for (let i = 3; i < d.length; i += 4) if (d[i]) n++;
+          return [w.dataset.plotWrap, n];
+        }),
+      ),
+    );
+  await page.evaluate(() => {
+    const scrub = document.querySelector('input[type=range]:not([data-key])');
+    scrub.value = '500';
+    scrub.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+  // (The schematic below stays to be drawn when it comes into view: not `drawn` here.)
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const scrubbed = await cursors();
+  const timePlots = Object.keys(scrubbed).filter((k) => scrubbed[k] > 0);
+  assert.ok(timePlots.length >= 3, `a cursor on each time plot: ${JSON.stringify(scrubbed)}`);
+  // A slider moves while most plots are out of view (behind the picker); at rest they are
+  // drawn from the new results, and the cursor with them.
+  await page.evaluate(() => {
+    const r = document.querySelector('input[type=range][data-key]:not([disabled])');
+    r.value = String(Number(r.min) + 0.3 * (Number(r.max) - Number(r.min)));
+    r.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+  // The controls rest, the plots out of view catch up (a plot a frame), each with its cursor.
+  const back = await page
+    .waitForFunction(
+      (keys) =>
+        keys.every((k) => {
+          const c = document.querySelector(`[data-plot-wrap="${k}"] canvas:not([data-plot])`);
+          const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+          for (let i = 3; i < d.length; i += 4) if (d[i]) return true;
+          return false;
+        }),
+      timePlots,
+      { timeout: 5000 },
+    )
+    .then(() => true, () => false);
+  assert.ok(back, `every time plot has its cursor again: ${JSON.stringify(await cursors())}`);
   assert.deepEqual(errors, []);
   await context.close();
 });

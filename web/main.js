@@ -277,6 +277,7 @@ function drawStale(all) {
     app.staleLeft = out.left;
     showCaptions(out.descriptions);
     if (app.schematicStale && (all || app.schematicVisible)) drawTime(dpr, true);
+    else if (out.descriptions.length && app.view.animation && app.timeSpan) drawCursors(dpr); // the plots just drawn
   } catch (err) {
     reportFailure(err);
   }
@@ -466,7 +467,7 @@ function hostState() {
   return { demo: app.demoId, params, readouts };
 }
 
-/** What each time plot's overlay shows: the cursor key drawTime drew last (absent: redraw). */
+/** What each time plot's overlay shows: the cursor key drawCursors drew last (absent: redraw). */
 const cursorDrawn = new WeakMap();
 
 /** Draws the schematic at the current time and the time cursor on every time plot. */
@@ -480,6 +481,15 @@ function drawTime(dpr = window.devicePixelRatio || 1, schematic = app.schematicV
   anim.scrub.value = String(Math.round(((app.time - t0) / (t1 - t0)) * 1000));
   setText(anim.time, `t = ${num(app.time, 2)} s`);
   setAttr(anim.scrub, 'aria-valuetext', t('timeWords', { t: num(app.time, 2) }));
+  drawCursors(dpr);
+}
+
+/**
+ * Draws the time cursor on every time plot drawn from the last update (a plot not drawn
+ * yet has no cursor until it is: drawStale calls this again).
+ */
+function drawCursors(dpr) {
+  const t0 = app.timeSpan[0];
   for (const [key, { overlay }] of app.view.overlays) {
     const at = app.session.timeToPixel(key, app.time);
     const x = at === undefined || (app.time === t0 && !app.playing) ? undefined : at;

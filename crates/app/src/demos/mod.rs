@@ -61,7 +61,7 @@ pub trait Demo {
     }
     /// The schematic at time `t` \[s\] (for demos whose spec sets `schematic`).
     fn schematic(&self, params: &Params, t: f64) -> Option<Figure>;
-    /// Parameters the last [`Demo::update`] derived from others (e.g. `c` from a moved
+    /// Parameters the last [`Demo::recompute`] derived from others (e.g. `c` from a moved
     /// `zeta`); the page moves those controls and the URL follows.
     fn derived_params(&self) -> Vec<(&'static str, f64)>;
     /// A click or tap at data point `(x, y)` of plot `plot` (e.g. choosing a design on a
@@ -70,20 +70,20 @@ pub trait Demo {
     /// The main response at time `t` \[s\], normalised to about −1…1, for sonification
     /// (pitch follows displacement). `None` for demos without a time response.
     fn sonify(&self, params: &Params, t: f64) -> Option<f64>;
-    /// The guided tour of the last [`Demo::update`], for the page that checks the paper
+    /// The guided tour of the last [`Demo::recompute`], for the page that checks the paper
     /// (`paper`): exhibits with links and claims with verdicts. `None` for other demos.
     fn tour(&self) -> Option<paper::Tour>;
     /// Progressive studies (issue 13): when `on`, a demo with a heavy study (a large sweep,
-    /// a Monte Carlo run) answers [`Demo::update`] with a coarse study at once and leaves
+    /// a Monte Carlo run) answers [`Demo::recompute`] with a coarse study at once and leaves
     /// the full one to [`Demo::refine`]. Off (the default, and in every native test) the
     /// full study runs inside `update`, as before.
     fn set_progressive(&mut self, on: bool);
     /// Does up to about `budget_ms` of the pending full study. `None`: nothing pending;
     /// `Some(f)` with `f < 1`: that fraction done; `Some(1.0)`: the full study just
-    /// finished and the next [`Demo::update`] shows it. A study started for parameters that
+    /// finished and the next [`Demo::recompute`] shows it. A study started for parameters that
     /// have since moved on is dropped by the next `update`, never shown.
     fn refine(&mut self, budget_ms: f64) -> Option<f64>;
-    /// Keys of the readouts and plots of the last [`Demo::update`] that show a coarse,
+    /// Keys of the readouts and plots of the last [`Demo::recompute`] that show a coarse,
     /// provisional study while the full one runs (empty when everything shown is final).
     fn provisional(&self) -> Vec<&'static str>;
 }
@@ -106,7 +106,10 @@ pub trait Model: 'static {
     fn step(&mut self, p: &Self::Params) -> Option<Self::Results>;
 
     /// The figure of declared plot number `plot` from the results; `None` past the last
-    /// plot (the registry test checks there is one for each declared plot).
+    /// plot (the registry test checks there is one for each declared plot). Built when the
+    /// plot is drawn, possibly frames after the step: what it reads of `self` (a kept sweep
+    /// or study) must still be that step's. A finished progressive study changes `self`
+    /// only for the next step; the page then recomputes before it draws anything.
     fn figure(&self, plot: usize, p: &Self::Params, r: &Self::Results) -> Option<Figure>;
 
     /// Time span \[s\] of the animation, for demos with a schematic.

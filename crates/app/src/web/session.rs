@@ -136,7 +136,7 @@ impl Session {
         self.figures.fill(None);
         self.stale.fill(true);
         let built: Vec<bool> = (0..self.figures.len())
-            .map(|i| (i == 0 || self.visible[i]) && self.build(i).is_some())
+            .map(|i| (i == 0 || self.visible[i] && self.attached(i)) && self.build(i).is_some())
             .collect();
         self.draw_plots(&self.visible.clone(), Drawn { scale, dark })?;
         let descriptions = self.descriptions(&built);
@@ -183,8 +183,12 @@ impl Session {
         let wanted: Vec<bool> = (self.stale.iter().zip(&self.visible).enumerate())
             .map(|(i, (stale, on))| *stale && if all { Some(i) == next } else { *on })
             .collect();
+        // A plot the page shows no canvas for (an embed's `plots=`) is not built; drawing
+        // clears its mark.
         for (i, _) in wanted.iter().enumerate().filter(|(_, w)| **w) {
-            self.build(i);
+            if self.attached(i) {
+                self.build(i);
+            }
         }
         self.draw_plots(&wanted, Drawn { scale, dark })?;
         to_js(&StaleResult {
@@ -260,8 +264,9 @@ impl Session {
     }
 
     /// Tells the session a control is being dragged (`true`) or was released (`false`).
-    /// While dragging, every plot keeps its axis ranges unless the data would leave them;
-    /// the next update after release draws each figure with its own ranges again.
+    /// While dragging, every plot keeps its axis ranges unless the data would leave them,
+    /// and its legend where it was; the next update after release draws each figure with
+    /// its own ranges and legend place again.
     #[wasm_bindgen(js_name = setDragging)]
     pub fn set_dragging(&mut self, on: bool) {
         if self.dragging && !on {
@@ -293,6 +298,11 @@ impl Session {
     fn figure(&self, key: &str) -> Option<(usize, &Figure)> {
         let i = self.spec.plots.iter().position(|p| p.key == key)?;
         Some((i, self.figures.get(i)?.as_ref()?))
+    }
+
+    /// Whether the page gave plot `i` a canvas.
+    fn attached(&self, i: usize) -> bool {
+        self.canvases.get(i).is_some_and(Option::is_some)
     }
 
     /// Builds plot `key`'s figure of the last update unless it has been (see
