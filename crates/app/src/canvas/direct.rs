@@ -9,7 +9,7 @@ use std::rc::Rc;
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
 
-/// The canvas's [`Direct`] drawing (see [`HtmlCanvas::direct`]).
+/// The canvas's [`Direct`] drawing (see [`super::direct`]).
 pub struct CanvasDirect {
     pub(super) canvas: HtmlCanvasElement,
     pub(super) context: CanvasRenderingContext2d,

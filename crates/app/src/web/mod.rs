@@ -3,10 +3,14 @@
 //! page, which then instantiates the module afresh and opens a new session there.
 //!
 //! - this file: start-up (panic hook), the interface language, the demo list;
-//! - [`session`]: [`Session`], one open demo with its canvases;
-//! - [`translate`]: the spec, figures and notices in the page's language;
-//! - [`result`]: what `Session::set` and `Session::update` return.
+//! - `session`: [`Session`], one open demo with its canvases;
+//! - `draw`: how a session builds and draws its figures;
+//! - `plots`: what the page asks of one drawn plot (pointer, exports);
+//! - `translate`: the spec, figures and notices in the page's language;
+//! - `result`: what `Session::set` and `Session::update` return.
 
+mod draw;
+mod plots;
 mod result;
 mod session;
 mod translate;
