@@ -33,11 +33,18 @@ impl Direct for Recorder {
 
 /// The calls a backend that draws itself gets for `fig`.
 fn calls(fig: &Figure) -> Vec<String> {
+    drawn(fig).0
+}
+
+/// The calls a backend that draws itself gets for `fig`, and what was drawn (SVG).
+fn drawn(fig: &Figure) -> (Vec<String>, String) {
     let rec = Recorder::default();
     let mut svg = String::new();
-    let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
-    render_with(&root, fig, &Theme::LIGHT, 1.0, Output::with_direct(&rec)).unwrap();
-    rec.1.into_inner()
+    {
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        render_with(&root, fig, &Theme::LIGHT, 1.0, Output::with_direct(&rec)).unwrap();
+    }
+    (rec.1.into_inner(), svg)
 }
 
 #[test]
@@ -57,9 +64,17 @@ fn the_legend_trial_is_muted_and_the_static_layer_is_named_by_what_it_shows() {
     moved.series[0].points[0].1 = 0.7;
     moved.markers[0].at = (0.2, 0.1);
     assert_eq!(calls(&moved)[2], seen[2]);
-    // Another title, range, axis name or theme: another layer.
+    // Another title of the same height: the same layer, the title drawn over it (a map's
+    // title names its data's range, which a drag moves every frame).
+    let mut retitled = fig.clone();
+    retitled.title = "test 2".into();
+    let (again, svg) = drawn(&retitled);
+    assert_eq!(again[2], seen[2]);
+    assert_eq!(svg.matches("test 2").count(), 1, "{svg}");
+    // A title long enough to be drawn smaller (a lower band), a range, an axis name or
+    // the theme: another layer.
     let mut titled = fig.clone();
-    titled.title = "test 2".into();
+    titled.title = "a title much longer than the room a plot of 640 pixels gives it".repeat(2);
     let mut ranged = fig.clone();
     ranged.y.range = (-1.0, 2.0);
     let mut named = fig.clone();
