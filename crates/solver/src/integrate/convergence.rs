@@ -316,7 +316,12 @@ pub fn nested_study<const N: usize, S: System<N>, M: FixedStep>(
     let mut resolved = false;
     let mut spent = 0usize;
     let study = convergence_study(&grids.steps(), window, |h| {
-        let stride = 1usize << level.min(MAX_LEVELS);
+        // 2^level steps per check interval; beyond usize (level ≥ 32 on wasm32) it saturates,
+        // which the budget then skips.
+        let stride = u32::try_from(level)
+            .ok()
+            .and_then(|l| 1usize.checked_shl(l))
+            .unwrap_or(usize::MAX);
         level += 1;
         spent = spent.saturating_add(grids.n0.saturating_mul(stride));
         if resolved || spent > grids.budget {
