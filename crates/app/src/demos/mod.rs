@@ -80,7 +80,8 @@ pub trait Demo {
     fn set_progressive(&mut self, on: bool);
     /// Does up to about `budget_ms` of the pending full study. `None`: nothing pending;
     /// `Some(f)` with `f < 1`: that fraction done; `Some(1.0)`: the full study just
-    /// finished and the next [`Demo::recompute`] shows it. A study started for parameters that
+    /// finished: [`Demo::figure`] shows it at once, the readouts from the next
+    /// [`Demo::recompute`]. A study started for parameters that
     /// have since moved on is dropped by the next `update`, never shown.
     fn refine(&mut self, budget_ms: f64) -> Option<f64>;
     /// Keys of the readouts and plots of the last [`Demo::recompute`] that show a coarse,
@@ -234,7 +235,15 @@ impl<M: Model> Demo for Typed<M> {
     }
 
     fn refine(&mut self, budget_ms: f64) -> Option<f64> {
-        self.model.refine(budget_ms)
+        let done = self.model.refine(budget_ms);
+        // The model now holds the full study, which figures read: step again so that a
+        // figure built before the next recompute (an export) pairs it with its own results.
+        if done.is_some_and(|f| f >= 1.0) {
+            if let Some((p, _)) = self.last.take() {
+                self.last = self.model.step(&p).map(|r| (p, r));
+            }
+        }
+        done
     }
 
     fn provisional(&self) -> Vec<&'static str> {

@@ -230,6 +230,10 @@ fn progressive_updates_show_a_marked_coarse_sweep_then_exactly_the_full_one() {
         assert!(slices <= 100, "one row per slice at least");
     }
     assert!(demo.provisional().is_empty());
+    // Before the page's next update a figure built now (an export) shows the full sweep
+    // with the results it belongs to, not the full maps read on the coarse grid.
+    let early: Vec<_> = (0..).map_while(|i| demo.figure(i)).collect();
+    assert!(format!("{early:?}") == format!("{:?}", want.figures));
     assert_eq!(demo.refine(5.0), None, "nothing left to do");
     let full = demo.update(&params("m=500"));
     // Debug text: the figures hold NaN gaps, which `==` never equates.
