@@ -3,10 +3,8 @@
 
 use super::draw::{device_scale, draw_on};
 use super::session::Session;
-use super::{js_err, theme, to_js};
+use super::{js_err, to_js};
 use crate::export;
-use crate::render::render;
-use plotters::prelude::IntoDrawingArea;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
 
@@ -68,7 +66,8 @@ impl Session {
             let svg = plotters::prelude::SVGBackend::with_string(&mut buf, size);
             let backend = crate::canvas::Web::svg(svg, &measure)
                 .ok_or_else(|| js_err("no 2D context to measure text"))?;
-            render(&backend.into_drawing_area(), fig, &theme(dark), 1.0).map_err(js_err)?;
+            let area = plotters::prelude::IntoDrawingArea::into_drawing_area(backend);
+            crate::render::render(&area, fig, &super::theme(dark), 1.0).map_err(js_err)?;
         }
         Ok(buf)
     }
