@@ -551,11 +551,8 @@ function requestDraw() {
 }
 
 function syncUrl() {
-  try {
-    writeState(app.demoId, app.session.values());
-  } catch (err) {
-    reportFailure(err);
-  }
+  const { demoId, session } = app;
+  writeState(demoId, () => session.values());
 }
 
 function setParam(control, raw) {

@@ -37,12 +37,21 @@ export function cancelPendingWrite() {
   pending = null;
 }
 
-/** Replaces the URL (no history entry), coalescing bursts of slider moves. */
-export function writeState(demoId, values) {
-  const query = queryFor(demoId, values);
+/**
+ * Replaces the URL (no history entry), coalescing bursts of slider moves: `readValues()`
+ * ([[key, value], …]) is asked once the burst is over, not on every move. A read that
+ * throws (the session was replaced meanwhile) leaves the URL as it is.
+ */
+export function writeState(demoId, readValues) {
   if (pending !== null) clearTimeout(pending);
   pending = setTimeout(() => {
     pending = null;
+    let query;
+    try {
+      query = queryFor(demoId, readValues());
+    } catch {
+      return;
+    }
     if (query !== window.location.search) {
       history.replaceState(null, '', query + window.location.hash);
     }

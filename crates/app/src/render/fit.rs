@@ -21,8 +21,11 @@ fn width<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, text: &str, size: f6
 /// What was fitted: the backend type, the text, its size and room (as bits), and the answer.
 type Fitted = (&'static str, String, u64, u64, (String, f64));
 
-/// How many fits [`fit`] remembers: every title and label of the plots on a page.
-const REMEMBERED: usize = 24;
+/// How many fits [`fit`] remembers: every title, axis name and colour-bar label of the
+/// plots on a page, at rest and while a control is held (a held legend below the plot
+/// gives the axis names other room), so that catching up the plots out of view at rest
+/// does not push out those of the plot a drag redraws. A miss measures up to eight times.
+const REMEMBERED: usize = 64;
 
 thread_local! {
     /// Recent fits, newest last. A drag redraws the same titles into the same room every
