@@ -38,17 +38,15 @@ pub(super) fn build<'a, DB: DrawingBackend>(
     fig: &Figure,
     theme: &Theme,
     scale: f64,
-    title: Title,
 ) -> Result<Chart<'a, DB>, RenderError> {
-    let (text, size) = fit_title(area, fig, scale);
-    let font = (super::SANS, size).into_font().color(&theme.foreground);
-    // Left out, the title still takes its band: its height is the font size, not the text.
-    let text = match title {
-        Title::Drawn => text.as_str(),
-        Title::Room => "",
-    };
+    // The title's band, left blank for [`draw_title`]: as high as the title at its full
+    // size, whatever size it is drawn at, so a title that grows or shrinks with the data
+    // (a map's names its range) neither moves the plot nor changes its static layer.
+    let font = (super::SANS, TITLE_SIZE * scale)
+        .into_font()
+        .color(&theme.foreground);
     ChartBuilder::on(area)
-        .caption(text, font)
+        .caption("", font)
         .margin(px(10.0, scale))
         .margin_right(px(right_margin(fig), scale))
         .x_label_area_size(px(42.0, scale))
@@ -57,14 +55,8 @@ pub(super) fn build<'a, DB: DrawingBackend>(
         .map_err(err)
 }
 
-/// Whether [`build`] draws the title or only leaves its band (for [`draw_title`] to draw
-/// after a kept static layer: a title that changes with the data then does not make the
-/// layer draw whole).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum Title {
-    Drawn,
-    Room,
-}
+/// A title's full size (px at scale 1); a long one is drawn smaller (see [`fit`]).
+const TITLE_SIZE: f64 = 15.0;
 
 /// The right margin (px at scale 1): wider beside a colour bar.
 fn right_margin(fig: &Figure) -> f64 {
@@ -83,11 +75,11 @@ fn fit_title<DB: DrawingBackend>(
 ) -> (String, f64) {
     let (w, _) = area.dim_in_pixel();
     let room = f64::from(w) - f64::from(px(10.0, scale)) - f64::from(px(right_margin(fig), scale));
-    fit(area, &fig.title, 15.0 * scale, room)
+    fit(area, &fig.title, TITLE_SIZE * scale, room)
 }
 
-/// Draws the title where [`build`] with [`Title::Drawn`] would (the same margins and
-/// plotters' own title placement), on the band it left with [`Title::Room`].
+/// Draws the title on the band [`build`] left, centred between the margins (plotters'
+/// own title placement); drawn after a kept static layer, which holds only the band.
 fn draw_title<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     fig: &Figure,
@@ -104,19 +96,12 @@ fn draw_title<DB: DrawingBackend>(
 }
 
 /// What a plot's static layer (background, the title's band, grid, ticks and axis names)
-/// depends on, hashed: the title's height `title_h` (px; the title itself is drawn over
-/// the layer, see [`Title`]), the axes, whether a colour bar takes room on the right,
+/// depends on, hashed (the title itself is drawn over it, see [`draw_title`]): the axes,
+/// whether a colour bar takes room on the right,
 /// the theme, the scale, the backend's size and the legend band's height, and the
 /// language's way of writing numbers.
-pub(super) fn static_key(
-    fig: &Figure,
-    title_h: u32,
-    theme: &Theme,
-    scale: f64,
-    size: (u32, u32, u32),
-) -> u64 {
+pub(super) fn static_key(fig: &Figure, theme: &Theme, scale: f64, size: (u32, u32, u32)) -> u64 {
     let mut h = std::collections::hash_map::DefaultHasher::new();
-    title_h.hash(&mut h);
     for axis in [&fig.x, &fig.y] {
         (&axis.label, axis.unit, axis.scale == AxisScale::Log).hash(&mut h);
         (axis.range.0.to_bits(), axis.range.1.to_bits()).hash(&mut h);
@@ -152,11 +137,6 @@ pub(super) fn draw<DB: DrawingBackend>(
     // moved in just enough to fit): a legend that jumps between corners, or between a
     // corner and rows below, moves the plot under the pointer and makes it draw whole.
     let mut placement = Placement::None;
-    // On a canvas the title is drawn over the kept layer, which holds only its band.
-    let title = match out.direct {
-        Some(_) => Title::Room,
-        None => Title::Drawn,
-    };
     let held = out
         .legend
         .filter(|p| *p != Placement::None && !entries.is_empty());
@@ -166,7 +146,7 @@ pub(super) fn draw<DB: DrawingBackend>(
         if let Some(direct) = out.direct {
             direct.mute(true);
         }
-        let trial = build(root, fig, theme, scale, title);
+        let trial = build(root, fig, theme, scale);
         if let Some(direct) = out.direct {
             direct.mute(false);
         }
@@ -187,12 +167,11 @@ pub(super) fn draw<DB: DrawingBackend>(
         placement = Placement::Below(band_h);
     }
     let (area, band) = root.split_vertically(h.saturating_sub(band_h));
-    let title_h = fit_title(&area, fig, scale).1.ceil() as u32;
-    let key = static_key(fig, title_h, theme, scale, (w, h, band_h));
+    let key = static_key(fig, theme, scale, (w, h, band_h));
     if let Some(direct) = out.direct {
         direct.begin_layer(key);
     }
-    let mut chart = build(&area, fig, theme, scale, title)?;
+    let mut chart = build(&area, fig, theme, scale)?;
 
     // Axis names as long as the axes: one size for both, each cut only if it must be.
     let (px_w, px_h) = chart.plotting_area().dim_in_pixel();
@@ -221,9 +200,7 @@ pub(super) fn draw<DB: DrawingBackend>(
     if let Some(direct) = out.direct {
         direct.end_layer(key);
     }
-    if title == Title::Room {
-        draw_title(&area, fig, theme, scale)?;
-    }
+    draw_title(&area, fig, theme, scale)?;
 
     if let Some(h) = &fig.heatmap {
         if h.has_every_cell() {
