@@ -551,8 +551,18 @@ function requestDraw() {
 }
 
 function syncUrl() {
-  const { demoId, session } = app;
-  writeState(demoId, () => session.values());
+  const { demoId } = app;
+  // Read when the write happens, from the session then current (the full module may have
+  // replaced it); nothing if another demo has opened meanwhile.
+  writeState(demoId, () => {
+    if (app.demoId !== demoId) return null;
+    try {
+      return app.session.values();
+    } catch (err) {
+      reportFailure(err);
+      return null;
+    }
+  });
 }
 
 function setParam(control, raw) {

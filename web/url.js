@@ -39,19 +39,16 @@ export function cancelPendingWrite() {
 
 /**
  * Replaces the URL (no history entry), coalescing bursts of slider moves: `readValues()`
- * ([[key, value], …]) is asked once the burst is over, not on every move. A read that
- * throws (the session was replaced meanwhile) leaves the URL as it is.
+ * ([[key, value], …]) is asked once the burst is over, not on every move; when it gives
+ * null (another demo opened meanwhile) the URL stays as it is.
  */
 export function writeState(demoId, readValues) {
   if (pending !== null) clearTimeout(pending);
   pending = setTimeout(() => {
     pending = null;
-    let query;
-    try {
-      query = queryFor(demoId, readValues());
-    } catch {
-      return;
-    }
+    const values = readValues();
+    if (!values) return;
+    const query = queryFor(demoId, values);
     if (query !== window.location.search) {
       history.replaceState(null, '', query + window.location.hash);
     }

@@ -1,6 +1,6 @@
 //! [`CanvasDirect`]: what the canvas draws itself beside plotters' calls (see
 //! `render::Direct`): line dashes, images of a pixel per cell stretched over a heatmap, a
-//! muted trial layout, and each plot's static layer (background, grid, ticks, titles) kept
+//! muted trial layout, and each plot's static layer (background, grid, ticks, axis names) kept
 //! as a copy once it has come twice in a row, so a held drag starts each frame from it.
 
 use crate::render::{Direct, Stretched};
@@ -18,7 +18,7 @@ pub struct CanvasDirect {
 
 /// A canvas's static layer: the key of the layer last begun on it, in how many frames in
 /// a row, and a copy of it (`valid` once the layer has come twice in a row: a plot whose
-/// title changes every frame is never copied).
+/// axes change every frame is never copied).
 struct Layer {
     canvas: HtmlCanvasElement,
     key: u64,

@@ -109,8 +109,8 @@ pub trait Model: 'static {
     /// The figure of declared plot number `plot` from the results; `None` past the last
     /// plot (the registry test checks there is one for each declared plot). Built when the
     /// plot is drawn, possibly frames after the step: what it reads of `self` (a kept sweep
-    /// or study) must still be that step's. A finished progressive study changes `self`
-    /// only for the next step; the page then recomputes before it draws anything.
+    /// or study) must still be that step's: when a progressive study finishes, `Typed`
+    /// steps again at once (see [`Demo::refine`]).
     fn figure(&self, plot: usize, p: &Self::Params, r: &Self::Results) -> Option<Figure>;
 
     /// Time span \[s\] of the animation, for demos with a schematic.
@@ -240,7 +240,9 @@ impl<M: Model> Demo for Typed<M> {
         // figure built before the next recompute (an export) pairs it with its own results.
         if done.is_some_and(|f| f >= 1.0) {
             if let Some((p, _)) = self.last.take() {
-                self.last = self.model.step(&p).map(|r| (p, r));
+                let r = self.model.step(&p);
+                self.tour = r.as_ref().and_then(|r| self.model.tour(&p, r));
+                self.last = r.map(|r| (p, r));
             }
         }
         done

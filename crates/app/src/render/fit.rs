@@ -47,7 +47,16 @@ pub(super) fn fit<DB: DrawingBackend>(
     let same = |f: &&Fitted| {
         f.0 == backend && f.1 == text && f.2 == size.to_bits() && f.3 == room.to_bits()
     };
-    if let Some(hit) = RECENT.with_borrow(|r| r.iter().find(same).map(|f| f.4.clone())) {
+    // A hit moves to the back: a title that changes every frame of a drag adds an entry
+    // each frame, and must push out only entries no longer used.
+    let hit = RECENT.with_borrow_mut(|r| {
+        let i = r.iter().position(|f| same(&f))?;
+        let f = r.remove(i)?;
+        let answer = f.4.clone();
+        r.push_back(f);
+        Some(answer)
+    });
+    if let Some(hit) = hit {
         return hit;
     }
     let answer = measure_fit(area, text, size, room);

@@ -136,8 +136,8 @@ pub trait Direct {
     /// Stops (`true`) or resumes (`false`) drawing; text is still measured. For a trial
     /// layout that only gives pixels (a plot with a legend is laid out twice).
     fn mute(&self, on: bool);
-    /// At the start of a plot's static layer (background, title, grid, ticks and axis
-    /// names), which `key` names: a backend that holds that layer draws it at once and
+    /// At the start of a plot's static layer (background, the title's band, grid, ticks
+    /// and axis names; the title is drawn after [`Direct::end_layer`]), which `key` names: a backend that holds that layer draws it at once and
     /// then nothing until [`Direct::end_layer`]. While a control is held the axes hold
     /// still, so most frames need only the data drawn.
     fn begin_layer(&self, key: u64);
