@@ -168,6 +168,14 @@ pub struct Typed<M: Model> {
 }
 
 impl<M: Model> Typed<M> {
+    /// Steps the model for `p` and keeps the parameters and results (`None` when they
+    /// describe no valid system) and the tour they give.
+    fn step_and_keep(&mut self, p: M::Params) {
+        let r = self.model.step(&p);
+        self.tour = r.as_ref().and_then(|r| self.model.tour(&p, r));
+        self.last = r.map(|r| (p, r));
+    }
+
     /// Wraps `model` with its declaration.
     pub fn new(model: M) -> Self {
         Self {
@@ -185,23 +193,14 @@ impl<M: Model> Demo for Typed<M> {
     }
 
     fn recompute(&mut self, params: &Params) -> Frame {
-        let p = self.decl.read(params);
-        self.last = None;
-        match self.model.step(&p) {
-            Some(r) => {
-                self.tour = self.model.tour(&p, &r);
-                let frame = Frame {
-                    readouts: self.decl.readouts(&r),
-                    figures: Vec::new(),
-                    time_span: self.model.time_span(&p, &r),
-                };
-                self.last = Some((p, r));
-                frame
-            }
-            None => {
-                self.tour = None;
-                self.decl.undefined_frame()
-            }
+        self.step_and_keep(self.decl.read(params));
+        match &self.last {
+            Some((p, r)) => Frame {
+                readouts: self.decl.readouts(r),
+                figures: Vec::new(),
+                time_span: self.model.time_span(p, r),
+            },
+            None => self.decl.undefined_frame(),
         }
     }
 
@@ -240,9 +239,7 @@ impl<M: Model> Demo for Typed<M> {
         // figure built before the next recompute (an export) pairs it with its own results.
         if done.is_some_and(|f| f >= 1.0) {
             if let Some((p, _)) = self.last.take() {
-                let r = self.model.step(&p);
-                self.tour = r.as_ref().and_then(|r| self.model.tour(&p, r));
-                self.last = r.map(|r| (p, r));
+                self.step_and_keep(p);
             }
         }
         done

@@ -47,7 +47,7 @@ pub(super) fn build<'a, DB: DrawingBackend>(
         .color(&theme.foreground);
     ChartBuilder::on(area)
         .caption("", font)
-        .margin(px(10.0, scale))
+        .margin(px(MARGIN, scale))
         .margin_right(px(right_margin(fig), scale))
         .x_label_area_size(px(42.0, scale))
         .y_label_area_size(px(64.0, scale))
@@ -58,12 +58,16 @@ pub(super) fn build<'a, DB: DrawingBackend>(
 /// A title's full size (px at scale 1); a long one is drawn smaller (see [`fit`]).
 const TITLE_SIZE: f64 = 15.0;
 
+/// The chart's margin (px at scale 1): [`build`] leaves it, and [`fit_title`] and
+/// [`draw_title`] place the title inside it as [`build`]'s caption would be.
+const MARGIN: f64 = 10.0;
+
 /// The right margin (px at scale 1): wider beside a colour bar.
 fn right_margin(fig: &Figure) -> f64 {
     if fig.heatmap.is_some() {
         COLOUR_BAR_WIDTH
     } else {
-        10.0
+        MARGIN
     }
 }
 
@@ -74,7 +78,8 @@ fn fit_title<DB: DrawingBackend>(
     scale: f64,
 ) -> (String, f64) {
     let (w, _) = area.dim_in_pixel();
-    let room = f64::from(w) - f64::from(px(10.0, scale)) - f64::from(px(right_margin(fig), scale));
+    let room =
+        f64::from(w) - f64::from(px(MARGIN, scale)) - f64::from(px(right_margin(fig), scale));
     fit(area, &fig.title, TITLE_SIZE * scale, room)
 }
 
@@ -88,7 +93,7 @@ fn draw_title<DB: DrawingBackend>(
 ) -> Result<(), RenderError> {
     let (text, size) = fit_title(area, fig, scale);
     let font = (super::SANS, size).into_font().color(&theme.foreground);
-    let m = px(10.0, scale);
+    let m = px(MARGIN, scale);
     area.margin(m, m, m, px(right_margin(fig), scale))
         .titled(&text, font)
         .map(|_| ())
