@@ -41,6 +41,9 @@ test('choosing normal parts redraws the histograms and says so', async () => {
 
 test('the same seed gives the same histogram; another seed a different one', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&system=1&dR=20&dL=20&dC=20`);
+  // The full run's numbers, not the coarse run's drawn first (marked provisional).
+  const settled = (p) => p.waitForFunction(() => !document.querySelector('[data-provisional]'));
+  await settled(page);
   const q5 = await readout(page, 'Q_p5');
   const z95 = await readout(page, 'zeta_p95');
   const y = await readout(page, 'yield');
@@ -48,16 +51,19 @@ test('the same seed gives the same histogram; another seed a different one', asy
   await page.focus('#p-seed');
   await page.keyboard.press('ArrowRight');
   await waitForUrlParam(page, 'seed', '2');
+  await settled(page);
   assert.notEqual(await readout(page, 'Q_p5'), q5, 'another seed, other draws');
   assert.notDeepEqual(await canvasFingerprint(page, 'zeta_hist'), prints[0]);
   await page.keyboard.press('ArrowLeft');
   await waitForUrlParam(page, 'seed', '1');
+  await settled(page);
   assert.equal(await readout(page, 'Q_p5'), q5, 'Q_p5 identical after restoring the seed');
   assert.equal(await readout(page, 'zeta_p95'), z95);
   assert.equal(await readout(page, 'yield'), y);
   assert.deepEqual([await canvasFingerprint(page, 'zeta_hist'), await canvasFingerprint(page, 'hist')], prints);
   // The same seed in a fresh page gives the same numbers too.
   const again = await open(browser, `${server.url}?demo=uncertainty&system=1&dR=20&dL=20&dC=20&seed=1`);
+  await settled(again.page);
   assert.equal(await readout(again.page, 'Q_p5'), q5);
   await again.context.close();
   assert.deepEqual(errors, []);
