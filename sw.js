@@ -6,8 +6,10 @@ const FILES = ['./'];
 const CACHE = `zeta-lab-${BUILD}`;
 // Language catalogues are not installed up front: a visitor downloads only the one the
 // page asks for, and the fetch handler below keeps it for the next (or an offline) visit.
+// Nor are the demos' first modules (zeta-first-<demo>): they serve a first visit, and a
+// page this worker serves starts from the full module, which it installs (web/preload.js).
 const CATALOGUE = /\/locales\/[^/]+\.ftl$/;
-const INSTALL = FILES.filter((f) => !/^locales\//.test(f));
+const INSTALL = FILES.filter((f) => !/^locales\//.test(f) && !/^zeta-first-/.test(f));
 
 self.addEventListener('install', (event) => {
   event.waitUntil(

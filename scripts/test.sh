@@ -35,9 +35,10 @@ step "cargo clippy" cargo clippy --workspace --all-targets -- -D warnings
 step "cargo clippy (wasm32)" cargo clippy -p zeta-app --target wasm32-unknown-unknown --all-targets -- -D warnings
 step "cargo clippy (wasm32, first module)" cargo clippy -p zeta-app --target wasm32-unknown-unknown --all-targets --features first -- -D warnings
 step "cargo test" cargo test --workspace
-# The first module links only the default demo: its registry checks, its demo tests and its
-# snapshot (the same numbers on screen as the full module shows).
-step "cargo test (first module)" cargo test -p zeta-app --features first --lib --test snapshots -- demos::tests demos::regimes every_demo
+# A first module links only its demo (here the default one; the release build makes one per
+# demo): its registry checks, its English messages, its demo tests and its snapshot (the
+# same numbers on screen as the full module shows).
+step "cargo test (first module)" cargo test -p zeta-app --features first --lib --test snapshots -- demos::tests demos::regimes every_demo i18n::catalogue
 step "cargo doc" env RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
 step "wasm-pack test (app, headless Chromium)" wasm-pack test --headless --chrome crates/app
 step "wasm-pack test (solver, Node)" wasm-pack test --node crates/solver

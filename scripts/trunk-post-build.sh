@@ -13,37 +13,56 @@ if grep -q 'TrunkApplicationStarted' "$html"; then
   exit 1
 fi
 
-# Release builds: also the "first" module (feature `first`: only the default demo), which
-# the page starts with for that demo while the full module loads behind it (web/main.js).
-# Same crate, same profile and target dir, so only zeta-app itself is compiled again.
+# Release builds: also a "first" module per demo (feature `first`, ZETA_FIRST_DEMO=<id>:
+# only that demo linked), which the page starts with for that demo while the full module
+# loads behind it (web/main.js). Same crate, same profile and target dir, so only zeta-app
+# itself is compiled again. The ids are the registry's lines (crates/app/src/demos/mod.rs)
+# but those marked #[runs_other_demos] (they start from the full module); a name the
+# registry lacks fails the build. wasm-opt (below) shrinks each module in the background
+# while the next one compiles. ZETA_FIRST_DEMOS="<id> …" builds only those (a quicker
+# local build; the others then start from the full module).
 src="${TRUNK_SOURCE_DIR:-.}"
-if [ "${TRUNK_PROFILE:-}" = "release" ]; then
-  target_dir="${CARGO_TARGET_DIR:-$src/target}"
-  (cd "$src" && cargo build --quiet -p zeta-app --release --target wasm32-unknown-unknown --features first)
-  wasm-bindgen --target web --no-typescript --out-dir "$stage" --out-name zeta-first \
-    "$target_dir/wasm32-unknown-unknown/release/zeta_app.wasm"
-fi
-
-# Release builds: shrink the wasm with binaryen's wasm-opt from npm (package-lock.json).
-# Not Debian's binaryen: its wasm-opt 108 rewrites the externref table that wasm-bindgen
-# emits into one browsers reject at start-up.
-# `-Os --converge` rather than `-Oz`: about 2 KB less brotli (what the page downloads),
-# though 7 KB more before compression; -Os gives up less speed for size (docs/wasm-size.md).
 opt="$src/node_modules/.bin/wasm-opt"
+optimise() { # the final wasm: see the flags' note below
+  "$opt" -Os --converge --strip-debug --strip-producers \
+    --enable-bulk-memory --enable-sign-ext --enable-mutable-globals \
+    --enable-nontrapping-float-to-int --enable-reference-types --enable-multivalue \
+    "$1" -o "$1.opt" && mv "$1.opt" "$1"
+}
+pids=()
 if [ "${TRUNK_PROFILE:-}" = "release" ]; then
   if [ ! -x "$opt" ]; then
     echo "post-build: $opt is missing; run scripts/setup.sh" >&2
     exit 1
   fi
-  for wasm in "$stage/zeta-app_bg.wasm" "$stage/zeta-first_bg.wasm"; do
-    "$opt" -Os --converge --strip-debug --strip-producers \
-      --enable-bulk-memory --enable-sign-ext --enable-mutable-globals \
-      --enable-nontrapping-float-to-int --enable-reference-types --enable-multivalue \
-      "$wasm" -o "$wasm.opt"
-    mv "$wasm.opt" "$wasm"
+  target_dir="${CARGO_TARGET_DIR:-$src/target}"
+  optimise "$stage/zeta-app_bg.wasm" &
+  pids+=($!)
+  ids="$(perl -ne 'print "$1\n" if /^\s*"([a-z0-9-]+)", "[^"]*" => /' "$src/crates/app/src/demos/mod.rs")"
+  if [ "$(printf '%s\n' "$ids" | grep -c .)" -lt 2 ]; then
+    echo "post-build: found no demo ids in the registry" >&2
+    exit 1
+  fi
+  for id in ${ZETA_FIRST_DEMOS:-$ids}; do
+    (cd "$src" && ZETA_FIRST_DEMO="$id" cargo build --quiet -p zeta-app --release --target wasm32-unknown-unknown --features first)
+    wasm-bindgen --target web --no-typescript --out-dir "$stage" --out-name "zeta-first-$id" \
+      "$target_dir/wasm32-unknown-unknown/release/zeta_app.wasm"
+    optimise "$stage/zeta-first-${id}_bg.wasm" &
+    pids+=($!)
   done
+  for pid in "${pids[@]}"; do
+    wait "$pid" || { echo "post-build: wasm-opt failed" >&2; exit 1; }
+  done
+fi
+
+# The flags of `optimise`: binaryen's wasm-opt from npm (package-lock.json), not Debian's
+# binaryen, whose wasm-opt 108 rewrites the externref table that wasm-bindgen emits into
+# one browsers reject at start-up. `-Os --converge` rather than `-Oz`: about 2 KB less
+# brotli (what the page downloads), though 7 KB more before compression; -Os gives up less
+# speed for size (docs/wasm-size.md).
+if [ "${TRUNK_PROFILE:-}" = "release" ]; then
   # Trunk's static preloads name the full module: web/preload.js preloads the one module
-  # the address starts with instead (the first module for the default demo), so the full
+  # the address starts with instead (the demo's first module on a first visit), so the full
   # module takes no bandwidth from the first plot and other demos do not download both.
   perl -0pi -e 's#<link rel="(?:module)?preload" href="\./zeta-app(?:\.js|_bg\.wasm)"[^>]*>##g' "$html"
   if grep -q 'preload" href="./zeta-app' "$html"; then
@@ -54,8 +73,7 @@ fi
 # Release builds: minify the page's JavaScript and CSS with esbuild from npm
 # (package-lock.json), file by file: no bundling, so each module keeps its imports and the
 # ones loaded on first use stay separate files. About 11 KB brotli less before the first
-# plot (docs/wasm-size.md). Before the hashes below, which are over the final files;
-# preload.js, which receives them, after.
+# plot (docs/wasm-size.md). preload.js after it has received the demos' list (below).
 esbuild="$src/node_modules/.bin/esbuild"
 minify() {
   for f in "$@"; do
@@ -72,20 +90,33 @@ if [ "${TRUNK_PROFILE:-}" = "release" ]; then
     [ "$(basename "$f")" = preload.js ] || minify "$f"
   done
 fi
-for f in zeta-app_bg.wasm zeta-app.js zeta-first_bg.wasm zeta-first.js; do
-  [ -f "$stage/$f" ] || continue
-  hash="sha384-$(openssl dgst -sha384 -binary "$stage/$f" | openssl base64 -A)"
-  perl -pi -e "s#(href=\"\\./\Q$f\E\"[^>]*?integrity=\")[^\"]*#\${1}$hash#g" "$html"
-  perl -pi -e "s#('\Q$f\E': ')__HASH__#\${1}$hash#" "$stage/web/preload.js"
-done
-
+# web/preload.js: the demos that have a first module, then (minified in release builds)
+# into index.html itself, allowed by its SHA-256 in the page's Content-Security-Policy: as
+# a file of its own it cost a round trip before any module was requested.
+first_demos="$(cd "$stage" && for f in zeta-first-*_bg.wasm; do [ -f "$f" ] && printf "'%s'," "$(basename "$f" _bg.wasm | sed 's/^zeta-first-//')"; done)"
+perl -pi -e "s#const FIRST_DEMOS = \[\];#const FIRST_DEMOS = [${first_demos%,}];#" "$stage/web/preload.js"
 if [ "${TRUNK_PROFILE:-}" = "release" ]; then
-  if grep -q "__HASH__" "$stage/web/preload.js"; then
-    echo "post-build: preload.js did not receive every integrity hash" >&2
+  if ! grep -q "const FIRST_DEMOS = \['" "$stage/web/preload.js"; then
+    echo "post-build: preload.js did not receive the demos' first modules" >&2
     exit 1
   fi
   minify "$stage/web/preload.js"
 fi
+PRELOAD="$stage/web/preload.js" perl -0pi -e '
+  BEGIN {
+    use Digest::SHA qw(sha256_base64);
+    open(my $f, "<", $ENV{PRELOAD}) or die "preload.js: $!";
+    local $/;
+    $js = <$f>;
+    $js =~ s/\n+\z//;
+    die "preload.js must not contain </script>" if $js =~ m#</script#i;
+    $sha = sha256_base64($js);
+    $sha .= "=" while length($sha) % 4;
+  }
+  s#<script src="web/preload\.js"></script>#<script>$js</script># or die "index.html: no preload.js script";
+  s#(script-src [^;"]*)#$1 \x27sha256-$sha\x27# or die "index.html: no script-src";
+' "$html"
+rm "$stage/web/preload.js"
 
 # Version the service worker's cache by the build and list every file it must cache.
 build="$(cat "$stage"/zeta-*.wasm "$stage"/zeta-*.js "$stage"/web/* | openssl dgst -sha256 | awk '{print substr($NF, 1, 16)}')"

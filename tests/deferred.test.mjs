@@ -91,7 +91,7 @@ test('a module that cannot be downloaded is reported on the page, and the next c
 test('a predict= page loads the prediction form with the page; an embed the host API', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&predict=regime&embed=1`, { serviceWorkers: 'block' });
   try {
-    assert.equal(await page.getAttribute('html', 'data-start-module'), 'full');
+    assert.equal(await page.getAttribute('html', 'data-start-module'), 'first');
     assert.ok(await page.locator('.zeta-predict').count(), 'the prediction form is there when the page is ready');
     const { requested, firstDraw } = await timings(page, ['predict.js', 'embed.js', 'lecturer.css']);
     for (const file of ['predict.js', 'embed.js', 'lecturer.css']) assert.ok(requested[file] < firstDraw, `${file} before the first plot`);

@@ -92,7 +92,8 @@ test('plots= chooses plots; the page runs under the strict CSP with no violation
   assert.equal(await page.isHidden('[data-plot-wrap="poles"]'), true);
   assert.equal(await page.isVisible('[data-plot-wrap="response"]'), true);
   const csp = await page.getAttribute('meta[http-equiv="Content-Security-Policy"]', 'content');
-  assert.match(csp, /default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; style-src 'self'/);
+  // One inline script, allowed by its hash: web/preload.js, written into the page at build.
+  assert.match(csp, /default-src 'self'; script-src 'self' 'wasm-unsafe-eval' 'sha256-[A-Za-z0-9+/]{43}='; style-src 'self'/);
   // Exercise the features that draw, export and build UI.
   await page.focus('#p-zeta');
   await page.keyboard.press('PageUp');

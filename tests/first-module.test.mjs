@@ -1,5 +1,5 @@
-// End to end: the default demo starts from the small "first" module (issue 13: bytes
-// before the first plot), then the full module takes over behind the page with nothing
+// End to end: a demo starts from its small "first" module (issue 13: bytes before the
+// first plot; one per demo, only that demo linked), then the full module takes over behind the page with nothing
 // the user sees changing: readouts, slider values, URL, pixels and focus stay; a drag in
 // progress is not interrupted; the menu works before, during and after the switch.
 // The full module's wasm is held back by a gate so each test chooses when it arrives.
@@ -133,7 +133,7 @@ test('choosing another demo before the full module is ready waits for it, visibl
   await context.close();
 });
 
-test('the menu works after the switch, and other demos start with the full module', async () => {
+test('the menu works after the switch; every demo starts from its own first module, embedded too; a served page from the full one', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes`);
   await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
   await page.selectOption('#demo-select', 'resonance');
@@ -143,12 +143,51 @@ test('the menu works after the switch, and other demos start with the full modul
   await waitForUrlParam(page, 'demo', 'regimes');
   await waitForReadouts(page);
   assert.equal(await moduleOf(page), 'full');
+  // A second visit, which the service worker serves: the full module, from its cache.
+  await page.evaluate(() => navigator.serviceWorker.ready);
+  await page.goto(`${server.url}?demo=design`);
+  await page.waitForSelector('html[data-ready="true"]');
+  assert.equal(await page.evaluate(() => Boolean(navigator.serviceWorker.controller)), true);
+  assert.equal(await page.getAttribute('html', 'data-start-module'), 'full');
+  assert.equal(await moduleOf(page), 'full');
   assert.deepEqual(errors, []);
   await context.close();
-  const other = await open(browser, `${server.url}?demo=quarter-car`);
-  assert.equal(await moduleOf(other.page), 'full');
-  assert.deepEqual(other.errors, []);
-  await other.context.close();
+  for (const [query, module] of [['?demo=quarter-car', 'first'], ['?demo=integrators&embed=1', 'first'], ['?demo=nope', 'full']]) {
+    const other = await open(browser, `${server.url}${query}`, { serviceWorkers: 'block' });
+    assert.equal(await other.page.getAttribute('html', 'data-start-module'), module, query);
+    assert.deepEqual(other.errors, [], query);
+    await other.context.close();
+  }
+});
+
+test('another demo draws from its own first module, then switches to the full one unseen', async () => {
+  const { page, errors, context, release } = await openGated('?demo=design');
+  assert.equal(await moduleOf(page), 'first');
+  assert.equal(await page.getAttribute('html', 'data-start-demo'), 'design');
+  // Before the first plot, only this demo's first module was fetched.
+  const modules = await page.evaluate(() => {
+    const drawn = performance.getEntriesByName('zeta:first-draw')[0].startTime;
+    return performance.getEntriesByType('resource').filter((e) => e.startTime < drawn).map((e) => new URL(e.name).pathname.split('/').pop()).filter((n) => n.startsWith('zeta-'));
+  });
+  assert.deepEqual(modules.sort(), ['zeta-first-design.js', 'zeta-first-design_bg.wasm']);
+  // The full map (the study runs in slices after a coarse one) on the first module…
+  const settled = () => page.waitForFunction(() => window.zetaDiagnostics.drawn() && !document.querySelector('[data-provisional]'));
+  await settled();
+  // All but the study's compute time, which is measured each time it runs.
+  const numbers = async () => {
+    const all = await shown(page);
+    return { ...all, readouts: all.readouts.filter(([key]) => key !== 'compute_time') };
+  };
+  const before = await numbers();
+  const map = await canvasFingerprint(page, 'map');
+  release();
+  // …and the same on the full one.
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
+  await settled();
+  assert.deepEqual(await numbers(), before);
+  assert.deepEqual(await canvasFingerprint(page, 'map'), map);
+  assert.deepEqual(errors, []);
+  await context.close();
 });
 
 test('an SVG export asked for on the first module (which has no SVG backend) waits for the full module', async () => {

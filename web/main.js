@@ -1,8 +1,9 @@
 // Zeta Lab front end: loads the wasm module, builds the chosen demo from its Rust
 // declaration, and redraws at most once per animation frame while controls move.
 // No physics here: every number comes from the Session (Rust).
-// The default demo starts from a small "first" module (only that demo linked, issue 13);
-// the full module loads after the first plot and takes over between two bursts of input.
+// A demo starts from a small "first" module that links only it (issue 13; web/preload.js
+// decides); the full module loads after the first plot and takes over between two bursts
+// of input.
 // Modules needed only on a user's action (share dialog, downloads, sound, the paper's tour,
 // the host-page API outside a frame) are not imported here: they load when first used, and
 // at idle after the first plot, so a click does not wait on the network (see `later`).
@@ -19,7 +20,6 @@ const DEFAULT_DEMO = 'regimes';
 const ANNOUNCE_DELAY_MS = 1200;
 const REFINE_SLICE_MS = 8; // one slice of a pending full study: well inside a frame
 const WASM_URL = new URL('../zeta-app_bg.wasm', import.meta.url);
-const FIRST_WASM_URL = new URL('../zeta-first_bg.wasm', import.meta.url);
 /**
  * The controls rest when none is held and none has moved for a while; three things wait
  * for it, each as long as its own cost to an input it would delay calls for (ms):
@@ -62,8 +62,10 @@ const app = {
   wasm: null,
   /** That instance's wasm exports (its memory). */
   exports: null,
-  /** Which module is in use: 'first' (the default demo only) or 'full'. */
+  /** Which module is in use: 'first' (only the demo `firstDemo`) or 'full'. */
   module: 'full',
+  /** The one demo the first module links (while `module` is 'first'). */
+  firstDemo: null,
   /** The full module loading while the first one is in use: a promise of {glue, exports}. */
   fullLoading: null,
   /** When the user last touched a control (the full module takes over between bursts). */
@@ -878,11 +880,11 @@ function openDemo(id, query) {
 }
 
 /**
- * openDemo for embed.js (a restored token): the first module holds only the default
- * demo, so another demo reloads the page at its address, which starts the full module.
+ * openDemo for embed.js (a restored token): the first module holds only its own demo, so
+ * another demo reloads the page at its address, which starts from that demo's module.
  */
 function openFromHost(id, query) {
-  if (app.module === 'first' && id !== DEFAULT_DEMO) {
+  if (app.module === 'first' && id !== app.firstDemo) {
     window.location.replace(query + window.location.hash);
     return;
   }
@@ -904,7 +906,7 @@ function wireMenu() {
   const select = document.getElementById('demo-select');
   select.addEventListener('change', () => {
     if (app.module === 'first' && select.value !== app.demoId) {
-      // The first module holds only the default demo: wait for the full one, visibly.
+      // The first module holds only its own demo: wait for the full one, visibly.
       const note = document.createElement('p');
       note.className = 'notice notice-info';
       note.textContent = t('loading');
@@ -1099,16 +1101,18 @@ async function main() {
   const framed = app.embed.embed || window.parent !== window;
   const hostModule = framed ? later('embed') : null;
   const prediction = app.embed.predict ? loadPrediction() : null;
-  // The first module serves the default demo on the main page (web/preload.js decides; a
-  // dev page without it starts with the full module).
-  const first = root.dataset.startModule === 'first';
+  // A first module serves its one demo on the main page (web/preload.js decides; a dev
+  // build has none and starts with the full module).
+  const firstDemo = root.dataset.startModule === 'first' ? root.dataset.startDemo : null;
   try {
-    if (first) {
+    if (firstDemo) {
       try {
-        const glue = await import('../zeta-first.js');
-        app.exports = await glue.default({ module_or_path: FIRST_WASM_URL });
+        const glue = await import(`../zeta-first-${firstDemo}.js`);
+        const wasm = new URL(`../zeta-first-${firstDemo}_bg.wasm`, import.meta.url);
+        app.exports = await glue.default({ module_or_path: wasm });
         app.wasm = glue;
         app.module = 'first';
+        app.firstDemo = firstDemo;
       } catch (err) {
         console.warn('Zeta Lab: starting with the full module:', err && err.message);
       }
@@ -1123,7 +1127,7 @@ async function main() {
     // Read-only diagnostics for the soak test and curious lecturers.
     window.zetaDiagnostics = Object.freeze({
       wasmBytes: () => app.exports.memory.buffer.byteLength,
-      /** 'first' (the small module the default demo starts with) or 'full'. */
+      /** 'first' (the small module that links only the demo the page opened) or 'full'. */
       module: () => app.module,
       /** Whether every canvas shows the last update (or a control is held: then plots off
        * screen wait, see observeVisibility). */

@@ -1,30 +1,31 @@
 // The page's decisions from its address, made once, here, in <head> before the first paint
 // (a classic script without `async`: it runs before the body is parsed and before
-// web/main.js, which reads what it records on <html>):
+// web/main.js, which reads what it records on <html>). The post-build hook writes it into
+// index.html itself, allowed by its hash in the page's Content-Security-Policy: as a file
+// it cost a round trip before any module was requested.
 // - data-theme: the theme= of the address (light, dark or projector), else the system's
 //   light or dark, following the system while the page is open. style.css themes by it,
 //   main.js draws the plots by it.
-// - data-start-module: 'first' (the small module with only the default demo, on the main
-//   page) or 'full' (every other demo, and embeds, whose host may open any demo at once).
+// - data-start-module: 'first' (a small module that links only the demo the address opens,
+//   on a first visit, embedded or not: a host that opens another demo at once reloads the
+//   frame at its address, see main.js openFromHost) or 'full' (a page the service worker
+//   serves, which has the full module in its cache; an address naming no demo that has a
+//   first module; a dev build, which has none); data-start-demo: the demo of that first
+//   module.
 // It starts the download of that one module, and of what this address needs up front (the
 // lecturer styles for the projector theme, the host-page API in an embed, the prediction
 // form). A static preload in the HTML could not depend on the address, and would make
-// every other demo download both modules. The post-build hook writes the integrity hashes;
-// without them (a dev build) no module is preloaded.
+// every other demo download two modules.
 // web/state.js expands a `state=` token into the address after this has run; main.js then
 // sends 'zeta:address' and the decisions are made again on the expanded address (as when
 // a token is restored in place later: the theme follows it).
 (() => {
-  const HASHES = {
-    'zeta-first.js': '__HASH__',
-    'zeta-first_bg.wasm': '__HASH__',
-    'zeta-app.js': '__HASH__',
-    'zeta-app_bg.wasm': '__HASH__',
-  };
+  // The demos that have a first module (zeta-first-<demo>.js, zeta-first-<demo>_bg.wasm),
+  // written by the post-build hook; none in a dev build.
+  const FIRST_DEMOS = [];
   const DEFAULT_DEMO = 'regimes';
   const THEMES = ['light', 'dark', 'projector'];
   const root = document.documentElement;
-  const here = document.currentScript ? document.currentScript.src : window.location.href;
   const system = window.matchMedia('(prefers-color-scheme: dark)');
 
   const decide = () => {
@@ -33,9 +34,12 @@
     root.dataset.theme = THEMES.includes(theme) ? theme : system.matches ? 'dark' : 'light';
     // Which module starts is decided before the page starts, not again.
     if (root.dataset.ready !== 'true') {
-      const demo = q.get('demo');
-      const first = (demo === null || demo === DEFAULT_DEMO) && q.get('embed') !== '1';
+      const demo = q.get('demo') ?? DEFAULT_DEMO;
+      const cached = 'serviceWorker' in navigator && navigator.serviceWorker.controller !== null;
+      const first = FIRST_DEMOS.includes(demo) && !cached;
       root.dataset.startModule = first ? 'first' : 'full';
+      if (first) root.dataset.startDemo = demo;
+      else delete root.dataset.startDemo;
     }
     return q;
   };
@@ -52,18 +56,13 @@
   document.addEventListener('zeta:address', decide);
 
   if (q.get('theme') === 'projector') {
-    link({ rel: 'stylesheet', href: new URL('lecturer.css', here).href }).dataset.lecturer = '1';
+    link({ rel: 'stylesheet', href: 'web/lecturer.css' }).dataset.lecturer = '1';
   }
-  if (q.get('embed') === '1') link({ rel: 'modulepreload', href: new URL('embed.js', here).href });
-  if (q.has('predict')) link({ rel: 'modulepreload', href: new URL('predict.js', here).href });
+  if (q.get('embed') === '1') link({ rel: 'modulepreload', href: 'web/embed.js' });
+  if (q.has('predict')) link({ rel: 'modulepreload', href: 'web/predict.js' });
 
   if (q.has('state')) return; // the demo is inside the token: main.js starts its module
-  const first = root.dataset.startModule === 'first';
-  const files = first ? ['zeta-first.js', 'zeta-first_bg.wasm'] : ['zeta-app.js', 'zeta-app_bg.wasm'];
-  for (const file of files) {
-    if (!HASHES[file].startsWith('sha384-')) continue;
-    const attrs = { crossOrigin: 'anonymous', integrity: HASHES[file], href: `./${file}` };
-    if (file.endsWith('.js')) link({ rel: 'modulepreload', ...attrs });
-    else link({ rel: 'preload', as: 'fetch', type: 'application/wasm', ...attrs });
-  }
+  const name = root.dataset.startModule === 'first' ? `zeta-first-${root.dataset.startDemo}` : 'zeta-app';
+  link({ rel: 'modulepreload', crossOrigin: 'anonymous', href: `./${name}.js` });
+  link({ rel: 'preload', as: 'fetch', type: 'application/wasm', crossOrigin: 'anonymous', href: `./${name}_bg.wasm` });
 })();

@@ -3,6 +3,9 @@
 //!   (regenerate with `ZETA_UPDATE_DOCS=1 cargo test -p zeta-app --test catalogues`);
 //! - every `t!("id")` in the Rust code and every `t('key')` in the page's scripts has an
 //!   English message, and every hand-written English message is used;
+//! - a demo's hand-written messages are named after it (`<id>-…`), sit in its `### <id>`
+//!   section and are used by its own code alone (a first module keeps only its demo's
+//!   section: build.rs);
 //! - every other catalogue parses, has every English id and no other, and uses no
 //!   variable its English source does not have.
 #![cfg(not(target_arch = "wasm32"))]
@@ -200,6 +203,67 @@ fn used_ids() -> BTreeSet<String> {
         used.extend(literals_after(&text, "message(", '\''));
     }
     used
+}
+
+/// The demo whose message `id` is (`<demo>-…`; the longest such demo id), if any.
+fn owner(id: &str) -> Option<&'static str> {
+    demos::menu()
+        .map(|(demo, _)| demo)
+        .filter(|demo| {
+            id.strip_prefix(demo)
+                .is_some_and(|rest| rest.starts_with('-'))
+        })
+        .max_by_key(|demo| demo.len())
+}
+
+#[test]
+fn a_demos_messages_are_in_its_section_and_used_by_its_code_alone() {
+    let text = std::fs::read_to_string(catalogue_path("en")).unwrap();
+    let mut section: Option<&str> = None;
+    for line in text.split(DECLARED).next().unwrap().lines() {
+        if let Some(id) = line.strip_prefix("### ") {
+            section = Some(id.trim());
+            assert_eq!(owner(&format!("{id}-x")), section, "### {id} is no demo");
+        } else if line.starts_with("## ") {
+            section = None;
+        } else if let Some((id, _)) = line
+            .split_once(" =")
+            .filter(|_| line.starts_with(|c: char| c.is_ascii_lowercase()))
+        {
+            assert_eq!(owner(id), section, "message {id} is in the wrong section");
+        }
+    }
+    // Every `t!("<demo>-…")` is in src/demos/<demo>.rs or src/demos/<demo>/ (`_` for `-`).
+    let src = root().join("src");
+    let mut rs = Vec::new();
+    files(&src, "rs", &mut rs);
+    let mut seen = 0;
+    for f in rs {
+        let rel = f
+            .strip_prefix(&src)
+            .unwrap()
+            .to_string_lossy()
+            .replace('\\', "/");
+        let home = rel
+            .strip_prefix("demos/")
+            .and_then(|r| r.split(['/', '.']).next())
+            .map(|d| d.replace('_', "-"));
+        for id in literals_after(
+            &code_only(&std::fs::read_to_string(&f).unwrap()),
+            "t!(",
+            '"',
+        ) {
+            seen += 1;
+            if let Some(demo) = owner(&id) {
+                assert_eq!(
+                    home.as_deref(),
+                    Some(demo),
+                    "{rel} uses {id}, a message of {demo}"
+                );
+            }
+        }
+    }
+    assert!(seen > 100, "found only {seen} t! calls");
 }
 
 #[test]

@@ -260,16 +260,37 @@ fn boxed<M: Model>(model: M) -> Box<dyn Demo> {
 
 /// The one list of demos, in menu order: `id, English title => factory;`. It defines
 /// `MENU` (every id and title) and `REGISTRY` (the factories). The ids and titles here
-/// must equal the declarations' (checked by the registry test).
+/// must equal the declarations' (checked by the registry test). `#[runs_other_demos]`
+/// marks a demo that creates others: it has no first module (the post-build hook builds
+/// one for each unmarked line; a first build of a marked one fails).
 macro_rules! registry {
-    ($($id:literal, $title:literal => $make:expr;)*) => {
-        /// Every demo's id and English title, in menu order: the `first` build, which
-        /// links only the default demo, still lists every demo in its menu.
+    ($($(#[$full:ident])? $id:literal, $title:literal => $make:expr;)*) => {
+        /// Every demo's id and English title, in menu order: a `first` build, which links
+        /// only one demo, still lists every demo in its menu.
         const MENU: &[(&str, &str)] = &[$(($id, $title)),*];
 
         /// Every demo with its factory.
         #[cfg(not(feature = "first"))]
         const REGISTRY: &[(&str, Factory)] = &[$(($id, $make)),*];
+
+        /// The `first` build (feature `first`): only [`FIRST_DEMO`] is linked, so its
+        /// module is small enough to draw the first plot soon on a slow network; the page
+        /// then switches to the full module (web/main.js). `cfg!` is decided at compile
+        /// time, so the other factories are never referenced.
+        #[cfg(feature = "first")]
+        const REGISTRY: &[(&str, Factory)] = &[(FIRST_DEMO, {
+            const fn only() -> Factory {
+                $(if cfg!(first_demo = $id) {
+                    $(panic!(concat!(
+                        $id, " is #[", stringify!($full), "]: it has no first module"
+                    ));)?
+                    #[allow(unreachable_code)]
+                    return $make;
+                })*
+                panic!("ZETA_FIRST_DEMO names no demo of the registry");
+            }
+            only()
+        })];
     };
 }
 
@@ -286,14 +307,13 @@ registry! {
     "quarter-car-2dof", "Quarter car with body and wheel" => || boxed(quarter_car_2dof::QuarterCar2Dof::default());
     "design", "Design space (k, c)" => || boxed(design::DesignSpace::default());
     "uncertainty", "Tolerance analysis" => || boxed(uncertainty::Uncertainty::default());
-    "paper", "The paper, checked" => || boxed(paper::Paper);
+    #[runs_other_demos] "paper", "The paper, checked" => || boxed(paper::Paper);
 }
 
-/// The `first` build (feature `first`): only the default demo is linked, so its module is
-/// small enough to draw the first plot soon on a slow network; the page then switches to
-/// the full module (web/main.js).
+/// The demo a `first` build links (`ZETA_FIRST_DEMO` when it was built, see build.rs; the
+/// default demo if unset). A name the registry lacks fails the build (`REGISTRY`).
 #[cfg(feature = "first")]
-const REGISTRY: &[(&str, Factory)] = &[("regimes", || boxed(regimes::Regimes))];
+pub const FIRST_DEMO: &str = env!("ZETA_FIRST_DEMO");
 
 /// Ids of every demo this build can create, in menu order.
 pub fn ids() -> impl ExactSizeIterator<Item = &'static str> {
@@ -324,11 +344,13 @@ mod tests {
         let declared: Vec<_> = ids()
             .map(|id| (id, create(id).unwrap().spec().title))
             .collect();
-        if cfg!(feature = "first") {
-            assert_eq!(declared, [("regimes", "Damping regimes")]);
-        } else {
-            assert_eq!(menu().collect::<Vec<_>>(), declared);
+        #[cfg(feature = "first")]
+        {
+            let title = menu().find(|(id, _)| *id == FIRST_DEMO).unwrap().1;
+            assert_eq!(declared, [(FIRST_DEMO, title)]);
         }
+        #[cfg(not(feature = "first"))]
+        assert_eq!(menu().collect::<Vec<_>>(), declared);
     }
 
     #[test]

@@ -224,4 +224,35 @@ mod tests {
         set_active(locale::english());
         assert!(load("xx", "a = b").is_err());
     }
+
+    /// A first module's English catalogue: every message of the page, the shared sections
+    /// and its own demo's `### <id>` section; none of another demo's (whose messages are
+    /// its own: `tests/catalogues.rs`).
+    #[cfg(feature = "first")]
+    #[test]
+    fn a_first_module_keeps_its_demos_and_the_shared_messages_only() {
+        let first = crate::demos::FIRST_DEMO;
+        let all = include_str!("../../locales/en.ftl");
+        let kept = |id: &str| {
+            ENGLISH_FTL
+                .lines()
+                .any(|l| l.strip_prefix(id).is_some_and(|r| r.starts_with(" =")))
+        };
+        let (mut section, mut checked) = (None, 0);
+        for line in all.split("## Declared strings").next().unwrap().lines() {
+            if let Some(id) = line.strip_prefix("### ") {
+                section = Some(id.trim());
+            } else if line.starts_with("## ") {
+                section = None;
+            } else if let Some((id, _)) = line
+                .split_once(" =")
+                .filter(|_| line.starts_with(|c: char| c.is_ascii_lowercase()))
+            {
+                let wanted = section.is_none_or(|demo| demo == first);
+                assert_eq!(kept(id), wanted, "{id} in the first module of {first}");
+                checked += 1;
+            }
+        }
+        assert!(checked > 400, "{checked} messages");
+    }
 }
