@@ -51,6 +51,8 @@ test('defaults and every preset show the readouts and text alternatives computed
   const { spec, states } = golden('integrators');
   for (const state of states) {
     const { page, errors, context } = await open(browser, `${server.url}?demo=integrators&${state.query}`);
+    // The recorded state is the full study: wait out the coarse one (marked provisional).
+    await page.waitForFunction(() => !document.querySelector('[data-provisional]'));
     await assertReadoutsMatch(page, state);
     // Drawn first: a plot's figure, and so its caption, comes when the plot is drawn.
     await assertInk(page);

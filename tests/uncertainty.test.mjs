@@ -17,6 +17,8 @@ const urlValue = (page, key) => page.evaluate((k) => new URLSearchParams(locatio
 for (const state of golden('uncertainty').states) {
   test(`"${state.name}" from the URL: readouts and text alternatives as recorded natively, every plot drawn`, async () => {
     const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&${state.query}`);
+    // The recorded state is the full run: wait out the coarse one (marked provisional).
+    await page.waitForFunction(() => !document.querySelector('[data-provisional]'));
     await assertReadoutsMatch(page, state);
     await assertFiguresMatch(page, state, PLOTS, 3000);
     await page.screenshot({ path: `${SHOTS}uncertainty-${stateSlug(state.name)}-1280.png`, fullPage: true });
