@@ -180,10 +180,19 @@ test('another demo draws from its own first module, then switches to the full on
   };
   const before = await numbers();
   const map = await canvasFingerprint(page, 'map');
+  // The full module computes its own map behind the page and takes over with it: nothing
+  // on the page is marked provisional (a coarse map shown again) on the way.
+  await page.evaluate(() => {
+    window.__provisional = 0;
+    new MutationObserver((records) => {
+      for (const r of records) if (r.target.hasAttribute('data-provisional')) window.__provisional += 1;
+    }).observe(document.body, { subtree: true, attributes: true, attributeFilter: ['data-provisional'] });
+  });
   release();
   // …and the same on the full one.
   await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
   await settled();
+  assert.equal(await page.evaluate(() => window.__provisional), 0, 'marked provisional during the switch');
   assert.deepEqual(await numbers(), before);
   assert.deepEqual(await canvasFingerprint(page, 'map'), map);
   assert.deepEqual(errors, []);

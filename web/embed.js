@@ -87,7 +87,9 @@ export function applyToken(h, token) {
   if (current.has('origin')) q.set('origin', current.get('origin'));
   const query = '?' + q.toString();
   const lang = (s) => new URLSearchParams(s).get('lang') || '';
-  if (lang(query) !== lang(window.location.search) || !h.openDemo) {
+  // Another language, or a demo this module cannot open (a demo's first module holds only
+  // that demo): the page opens at the token's address, and then says zeta:change.
+  if (lang(query) !== lang(window.location.search) || !h.openDemo || (h.canOpen && !h.canOpen(q.get('demo')))) {
     try { sessionStorage.setItem('zeta:reloaded', '1'); } catch { /* no storage: the host hears zeta:ready */ }
     window.location.replace(query + window.location.hash);
     return true;

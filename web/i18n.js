@@ -144,11 +144,23 @@ export async function useLanguage(module, requested) {
   return { entry, problem };
 }
 
-/** Brings a fresh module instance (after a recovery) to the active language. */
-export function adoptInstance(module) {
-  wasm = module;
+/**
+ * Gives a new module instance the catalogues fetched so far and the active language,
+ * without making it the page's (see adoptInstance). Returns that language's tag.
+ */
+export function prepareInstance(module) {
   for (const [tag, text] of fetched) module.loadCatalogue(tag, text);
   module.setLanguage(active.tag);
+  return active.tag;
+}
+
+/**
+ * Makes a fresh module instance (after a recovery, or the full module after the first) the
+ * page's, in the active language; `prepared`: the tag prepareInstance gave it, if any.
+ */
+export function adoptInstance(module, prepared = null) {
+  wasm = module;
+  if (prepared !== active.tag) prepareInstance(module);
 }
 
 /** Translates the static page (elements carrying data-i18n="key") and sets lang and dir. */

@@ -14,7 +14,7 @@ import { applyConditions } from './conditional.js';
 import { cancelPendingWrite, currentQuery, demoFromUrl, queryFor, writeState } from './url.js';
 import { applyEmbedView, connectPage, embedOptions, loadPrediction, loadStyles } from './view.js';
 import { useGlue } from './glue.js';
-import { activeLanguage, adoptInstance, languages, num, remember, requestedLanguages, t, translatePage, useLanguage } from './i18n.js';
+import { activeLanguage, adoptInstance, prepareInstance, languages, num, remember, requestedLanguages, t, translatePage, useLanguage } from './i18n.js';
 
 const DEFAULT_DEMO = 'regimes';
 const ANNOUNCE_DELAY_MS = 1200;
@@ -58,6 +58,8 @@ const app = {
   sound: { enabled: false, play() {} },
   dragging: false,
   layoutDirty: true,
+  /** A relayout is asked for the next frame (requestRelayout). */
+  relayoutPending: false,
   /** The glue of the module instance in use: replaced by a fresh instance after a trap. */
   wasm: null,
   /** That instance's wasm exports (its memory). */
@@ -78,6 +80,11 @@ const app = {
   staleLeft: false,
   /** The timer that draws everything once the controls rest (scheduleCatchUp). */
   catchUp: null,
+  /** The keys of the plots on screen (or within half a screen), as observeVisibility sees. */
+  onScreen: new Set(),
+  /** The full module has just taken over: the catch-up, not a plot coming into view,
+   * redraws the plots until none is left (takeOver). */
+  settling: false,
   /** Message ids the first instance showed in English, kept across the switch. */
   missing: [],
   /** How many times the module has been instantiated afresh (cache-busts the glue's URL). */
@@ -243,6 +250,7 @@ function restLeft(ms) {
 function observeVisibility() {
   app.visibility?.disconnect();
   app.schematicVisible = true;
+  app.onScreen = new Set(app.view.shownPlots);
   if (!('IntersectionObserver' in window)) return;
   const session = app.session;
   app.visibility = new IntersectionObserver(
@@ -255,6 +263,8 @@ function observeVisibility() {
           app.schematicVisible = e.isIntersecting;
           stale ||= e.isIntersecting && app.schematicStale;
         } else {
+          if (e.isIntersecting) app.onScreen.add(key);
+          else app.onScreen.delete(key);
           try {
             stale = session.setVisible(key, e.isIntersecting) || stale;
           } catch (err) {
@@ -262,7 +272,8 @@ function observeVisibility() {
           }
         }
       }
-      if (stale) requestAnimationFrame(() => drawStale(false));
+      // Right after the full module took over, the catch-up redraws (one plot a frame).
+      if (stale && !app.settling) requestAnimationFrame(() => drawStale(false));
     },
     { rootMargin: '50% 0px' },
   );
@@ -305,6 +316,7 @@ function prepareLayers() {
 function scheduleCatchUp(delay = REST_MS.offscreen) {
   clearTimeout(app.catchUp);
   if (!app.staleLeft && !app.schematicStale) {
+    app.settling = false;
     prepareLayers();
     return;
   }
@@ -321,15 +333,44 @@ function scheduleCatchUp(delay = REST_MS.offscreen) {
   }, delay);
 }
 
-function fit(canvas, key, dpr) {
+/** Whether `canvas` (size key `key`) is not sized to its box at `dpr`; `[w, h]` it needs. */
+function misfit(canvas, key, dpr) {
   const w = Math.max(1, Math.round(canvas.clientWidth * dpr));
   const h = Math.max(1, Math.round(canvas.clientHeight * dpr));
   const last = app.lastSize.get(key);
-  if (!last || last[0] !== w || last[1] !== h) {
-    canvas.width = w;
-    canvas.height = h;
-    app.lastSize.set(key, [w, h]);
+  return !last || last[0] !== w || last[1] !== h ? [w, h] : null;
+}
+
+function fit(canvas, key, dpr) {
+  const size = misfit(canvas, key, dpr);
+  if (size) {
+    [canvas.width, canvas.height] = size;
+    app.lastSize.set(key, size);
   }
+}
+
+/**
+ * The page's layout changed (its size, the window's): lays the stage out again, and
+ * redraws only if a canvas no longer fits its box (resizing clears it). The observer's
+ * first report, just after the first plot, usually changes none: a whole redraw then was
+ * 60-150 ms at 4x CPU for nothing.
+ */
+function requestRelayout() {
+  app.layoutDirty = true;
+  if (app.relayoutPending) return;
+  app.relayoutPending = true;
+  requestAnimationFrame(() => {
+    app.relayoutPending = false;
+    if (app.framePending || !app.session || !app.view) return; // that frame lays out anyway
+    if (!app.dragging) layoutStage();
+    const dpr = window.devicePixelRatio || 1;
+    const boxes = [...app.view.canvases].flatMap(([key, canvas]) => [[canvas, key], [app.view.overlays.get(key).overlay, `${key}:overlay`]]);
+    if (app.view.animation) boxes.push([app.view.animation.canvas, 'schematic']);
+    if (boxes.some(([canvas, key]) => misfit(canvas, key, dpr))) {
+      app.framePending = true;
+      drawFrame();
+    }
+  });
 }
 
 /**
@@ -879,18 +920,6 @@ function openDemo(id, query) {
   if (autoplay && !reducedMotion.matches) requestAnimationFrame(() => setPlaying(true));
 }
 
-/**
- * openDemo for embed.js (a restored token): the first module holds only its own demo, so
- * another demo reloads the page at its address, which starts from that demo's module.
- */
-function openFromHost(id, query) {
-  if (app.module === 'first' && id !== app.firstDemo) {
-    window.location.replace(query + window.location.hash);
-    return;
-  }
-  openDemo(id, query);
-}
-
 function buildMenu(list) {
   const select = document.getElementById('demo-select');
   select.replaceChildren();
@@ -945,11 +974,14 @@ function loadFull() {
   return app.fullLoading;
 }
 
-/** Resolves when the controls have rested (REST_MS.upgrade) and no frame is pending. */
+/**
+ * Resolves when the controls have rested (REST_MS.upgrade), no frame is pending, no study
+ * is being refined and the animation is not playing.
+ */
 function betweenBursts() {
   return new Promise((resolve) => {
     const check = () => {
-      const busy = app.framePending || app.recovering || app.needsRecovery;
+      const busy = app.framePending || app.recovering || app.needsRecovery || app.refineTimer || app.playing;
       const wait = restLeft(REST_MS.upgrade);
       if (busy || wait > 0) setTimeout(check, Math.max(50, wait));
       else resolve();
@@ -960,8 +992,10 @@ function betweenBursts() {
 
 /**
  * After the first plot from the first module: loads the full module behind the page and
- * switches to it between two bursts of input, with the same values, so nothing the user
- * sees changes.
+ * switches to it while the controls rest, with the same values, so nothing the user sees
+ * changes, and in steps that each fit in a frame at a slow device's speed: the full
+ * module's session computes behind the page (computeBehind), takes over (takeOver), and
+ * redraws the plots one a frame. Input in between starts again at the next rest.
  */
 async function upgrade() {
   let mod;
@@ -971,8 +1005,99 @@ async function upgrade() {
     console.warn('Zeta Lab: the full module could not be loaded yet:', err && err.message);
     return; // the next demo chosen from the menu tries again
   }
-  await betweenBursts();
-  if (app.module === 'first') adopt(mod);
+  while (app.module === 'first') {
+    await betweenBursts();
+    if (app.module !== 'first') return;
+    const behind = await computeBehind(mod);
+    if (behind) takeOver(mod, behind);
+  }
+}
+
+/**
+ * The full module's session for the open demo with the page's values, computed behind the
+ * page, each step a task of its own: its figures (no plot drawn: the first module's are on
+ * screen), then any study in slices. `null` if input came, the demo or language changed,
+ * or a step failed; `{session, language}` otherwise.
+ */
+async function computeBehind({ glue }) {
+  const { lastInput, demoId, session: shown } = app;
+  const language = activeLanguage().tag;
+  const moved = () =>
+    app.lastInput !== lastInput || app.dragging || app.session !== shown || app.demoId !== demoId ||
+    app.module !== 'first' || app.needsRecovery || activeLanguage().tag !== language;
+  const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
+  let session = null;
+  try {
+    prepareInstance(glue);
+    await nextTask();
+    if (moved()) return null;
+    glue.message('page-loading', {}); // builds its English catalogue (parsed on first use)
+    await nextTask();
+    if (moved()) return null;
+    session = new glue.Session(demoId);
+    session.applyQuery(currentQuery());
+    for (const [k, v] of shown.values()) session.set(k, String(v));
+    for (const key of app.view.shownPlots) {
+      session.attach(key, app.view.canvases.get(key));
+      session.setVisible(key, false);
+    }
+    if (app.view.animation) session.attach('schematic', app.view.animation.canvas);
+    await nextTask();
+    if (moved()) throw null;
+    session.update(window.devicePixelRatio || 1, isDark());
+    for (;;) {
+      await nextTask();
+      if (moved()) throw null;
+      const done = session.refine(REFINE_SLICE_MS);
+      if (done === undefined) break;
+      if (done >= 1) {
+        await nextTask();
+        if (moved()) throw null;
+        session.update(window.devicePixelRatio || 1, isDark());
+        break;
+      }
+    }
+    return { session, language };
+  } catch (err) {
+    if (err !== null) console.warn('Zeta Lab: the full module could not take over yet:', err && err.message);
+    try {
+      session?.free();
+    } catch {
+      // dropped either way
+    }
+    return null;
+  }
+}
+
+/**
+ * The full module's session (computeBehind) takes over from the first module's: the
+ * plots on screen show what it would draw, so it redraws them one a frame (a first
+ * drawing fills its kept layers and text fits) while the controls rest.
+ */
+function takeOver({ glue, exports }, { session, language }) {
+  const old = app.session;
+  try {
+    app.missing.push(...app.wasm.takeMissingMessages()); // reported by the diagnostics
+  } catch {
+    // a failed first instance cannot answer
+  }
+  adoptInstance(glue, language);
+  app.wasm = glue;
+  useGlue(glue);
+  app.exports = exports;
+  app.module = 'full';
+  app.session = session;
+  for (const key of app.view.shownPlots) session.setVisible(key, app.onScreen.has(key));
+  app.staleLeft = true;
+  app.schematicStale = Boolean(app.view.animation);
+  app.settling = true; // observeVisibility leaves the drawing to the catch-up meanwhile
+  observeVisibility();
+  scheduleCatchUp(0);
+  try {
+    old.free();
+  } catch {
+    // the first instance is dropped either way
+  }
 }
 
 /** Resolves once the open demo runs on the full module (switching to it now if needed). */
@@ -1158,23 +1283,19 @@ async function main() {
     notify(app.notices, t('noDemo', { id: wanted.slice(0, 40), fallback: DEFAULT_DEMO }), 'warn');
   }
   openDemo(known ? wanted : DEFAULT_DEMO, known ? currentQuery() : null);
-  new ResizeObserver(() => {
-    app.layoutDirty = true;
-    requestDraw();
-  }).observe(app.root);
+  new ResizeObserver(requestRelayout).observe(app.root);
   // A printout carries the explanation even when it is folded on screen.
   window.addEventListener('beforeprint', () => {
     for (const d of document.querySelectorAll('details')) d.open = true;
   });
-  window.addEventListener('resize', () => {
-    app.layoutDirty = true;
-    requestDraw();
-  });
+  window.addEventListener('resize', requestRelayout);
   for (const type of ['pointerup', 'pointercancel', 'keyup']) window.addEventListener(type, () => setDragging(false));
   darkQuery.addEventListener('change', () => requestDraw());
   document.addEventListener('keydown', onKey);
   wireShare();
-  const handlers = { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo: openFromHost, isDark, useFullModule };
+  // A demo's first module opens only that demo: embed.js reloads the page for another.
+  const canOpen = (id) => app.module !== 'first' || id === app.firstDemo;
+  const handlers = { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo, canOpen, isDark, useFullModule };
   connectPage(handlers);
   if (hostModule) {
     try {

@@ -8,7 +8,7 @@
 //   main.js draws the plots by it.
 // - data-start-module: 'first' (a small module that links only the demo the address opens,
 //   on a first visit, embedded or not: a host that opens another demo at once reloads the
-//   frame at its address, see main.js openFromHost) or 'full' (a page the service worker
+//   frame at its address, see embed.js applyToken) or 'full' (a page the service worker
 //   serves, which has the full module in its cache; an address naming no demo that has a
 //   first module; a dev build, which has none); data-start-demo: the demo of that first
 //   module.

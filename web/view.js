@@ -237,7 +237,7 @@ function wireRestore(h) {
  * Connects the page itself: applies the animation part of the address (`t=`, `play=`,
  * `speed=`), says when a token came from another version, and restores views from dropped
  * files and pasted links. `h`: {set(entries), state(), app, setPlaying, drawTime,
- * requestDraw, openDemo, isDark} from main.js. Inside a frame, embed.js's connectHost adds
+ * requestDraw, openDemo, canOpen, isDark} from main.js. Inside a frame, embed.js's connectHost adds
  * the host-page API.
  */
 export function connectPage(h) {
