@@ -113,7 +113,11 @@ async function main() {
           for (const e of list.getEntries()) if (e.startTime > since) longest = Math.max(longest, e.duration);
         });
         obs.observe({ type: 'longtask', buffered: true });
-        while (window.zetaDiagnostics.module() !== 'full' || !window.zetaDiagnostics.drawn()) await new Promise((r) => setTimeout(r, 50));
+        const deadline = performance.now() + 30000;
+        while ((window.zetaDiagnostics.module() !== 'full' || !window.zetaDiagnostics.drawn()) && performance.now() < deadline) {
+          await new Promise((r) => setTimeout(r, 50));
+        }
+        if (window.zetaDiagnostics.module() !== 'full') return NaN; // the switch never came
         await new Promise((r) => setTimeout(r, 500));
         obs.disconnect();
         return longest;

@@ -30,6 +30,8 @@ optimise() { # the final wasm: see the flags' note below
     "$1" -o "$1.opt" && mv "$1.opt" "$1"
 }
 pids=()
+# A failed step must not leave wasm-opt writing into the folder Trunk is about to replace.
+trap '[ ${#pids[@]} -eq 0 ] || kill "${pids[@]}" 2>/dev/null || true' EXIT
 if [ "${TRUNK_PROFILE:-}" = "release" ]; then
   if [ ! -x "$opt" ]; then
     echo "post-build: $opt is missing; run scripts/setup.sh" >&2
@@ -93,7 +95,10 @@ fi
 # web/preload.js: the demos that have a first module, then (minified in release builds)
 # into index.html itself, allowed by its SHA-256 in the page's Content-Security-Policy: as
 # a file of its own it cost a round trip before any module was requested.
-first_demos="$(cd "$stage" && for f in zeta-first-*_bg.wasm; do [ -f "$f" ] && printf "'%s'," "$(basename "$f" _bg.wasm | sed 's/^zeta-first-//')"; done)"
+first_demos="$(cd "$stage" && for f in zeta-first-*_bg.wasm; do
+  [ -f "$f" ] || continue # none in a dev build
+  printf "'%s'," "$(basename "$f" _bg.wasm | sed 's/^zeta-first-//')"
+done)"
 perl -pi -e "s#const FIRST_DEMOS = \[\];#const FIRST_DEMOS = [${first_demos%,}];#" "$stage/web/preload.js"
 if [ "${TRUNK_PROFILE:-}" = "release" ]; then
   if ! grep -q "const FIRST_DEMOS = \['" "$stage/web/preload.js"; then

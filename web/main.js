@@ -58,6 +58,9 @@ const app = {
   sound: { enabled: false, play() {} },
   dragging: false,
   layoutDirty: true,
+  /** Counts changes of the demo's values from any source (controls, reset, a click on a
+   * plot, the host page, a new demo): computeBehind starts again when it moves. */
+  revision: 0,
   /** A relayout is asked for the next frame (requestRelayout). */
   relayoutPending: false,
   /** The glue of the module instance in use: replaced by a fresh instance after a trap. */
@@ -200,6 +203,7 @@ function recover() {
   app.recovering ??= reinstantiate()
     .then(() => {
       app.changed = true;
+      app.revision += 1;
       requestDraw();
     })
     .finally(() => {
@@ -453,6 +457,7 @@ function drawFrame() {
   try {
     const dpr = sizeCanvases();
     const out = app.session.update(dpr, isDark());
+    app.settling = false; // this update drew the plots on screen (see takeOver)
     app.staleLeft = true; // plots out of view were skipped; drawStale(true) says for sure
     showReadouts(app.view.readouts, out.readouts, new Set(out.provisional));
     markProvisional(out.provisional);
@@ -623,6 +628,7 @@ function setParam(control, raw) {
     reportFailure(err);
   }
   app.changed = true;
+  app.revision += 1;
   requestDraw();
   syncUrl();
 }
@@ -697,6 +703,7 @@ function wireControls() {
     app.session.reset();
     showAllValues();
     app.changed = true;
+    app.revision += 1;
     requestDraw();
     syncUrl();
   });
@@ -828,6 +835,7 @@ function wireProbes() {
           if (control) showValue(control, v);
         }
         app.changed = true;
+        app.revision += 1;
         requestDraw();
         syncUrl();
       } catch (err) {
@@ -902,6 +910,7 @@ function openDemo(id, query) {
   app.view.shownPlots = applyEmbedView(app.view, app.embed);
   app.time = 0;
   app.changed = true;
+  app.revision += 1;
   app.dragging = false;
   app.layoutDirty = true;
   document.title = `${spec.title} — Zeta Lab`;
@@ -1009,6 +1018,14 @@ async function upgrade() {
     await betweenBursts();
     if (app.module !== 'first') return;
     const behind = await computeBehind(mod);
+    if (behind?.failed) {
+      try {
+        adopt(mod); // at once, as a menu choice does
+      } catch (err) {
+        reportFailure(err);
+      }
+      return;
+    }
     if (behind) takeOver(mod, behind);
   }
 }
@@ -1017,14 +1034,16 @@ async function upgrade() {
  * The full module's session for the open demo with the page's values, computed behind the
  * page, each step a task of its own: its figures (no plot drawn: the first module's are on
  * screen), then any study in slices. `null` if input came, the demo or language changed,
- * or a step failed; `{session, language}` otherwise.
+ * (then again at the next rest); `{failed: true}` if a step failed; `{session, language}`
+ * otherwise.
  */
 async function computeBehind({ glue }) {
-  const { lastInput, demoId, session: shown } = app;
+  const { lastInput, revision, demoId, session: shown } = app;
   const language = activeLanguage().tag;
   const moved = () =>
-    app.lastInput !== lastInput || app.dragging || app.session !== shown || app.demoId !== demoId ||
-    app.module !== 'first' || app.needsRecovery || activeLanguage().tag !== language;
+    app.lastInput !== lastInput || app.revision !== revision || app.dragging || app.playing ||
+    app.refineTimer || app.session !== shown || app.demoId !== demoId || app.module !== 'first' ||
+    app.needsRecovery || activeLanguage().tag !== language;
   const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
   let session = null;
   try {
@@ -1059,13 +1078,14 @@ async function computeBehind({ glue }) {
     }
     return { session, language };
   } catch (err) {
-    if (err !== null) console.warn('Zeta Lab: the full module could not take over yet:', err && err.message);
     try {
       session?.free();
     } catch {
       // dropped either way
     }
-    return null;
+    if (err === null) return null; // moved on: again at the next rest
+    console.warn('Zeta Lab: the full module could not compute behind the page:', err && err.message);
+    return { failed: true };
   }
 }
 

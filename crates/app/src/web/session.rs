@@ -166,8 +166,9 @@ impl Session {
     }
 
     /// Draws the plots that show an older frame than the last update's, from that update's
-    /// results (nothing is recomputed): those on screen, or with `all` the first one of any
-    /// (the page calls that once per task while the controls rest, so no task grows long).
+    /// results (nothing is recomputed): those on screen, or with `all` one of any, the first
+    /// on screen if one is (the page calls that once per task while the controls rest, so
+    /// no task grows long).
     /// Returns `{left, descriptions}`: whether any plot is still stale, and the text
     /// alternatives of those drawn.
     #[wasm_bindgen(js_name = drawStale)]
@@ -178,7 +179,9 @@ impl Session {
                 descriptions: Vec::new(),
             });
         }
-        let next = self.stale.iter().position(|s| *s);
+        let next = (0..self.stale.len())
+            .filter(|&i| self.stale[i])
+            .min_by_key(|&i| !self.visible.get(i).copied().unwrap_or(true));
         let wanted: Vec<bool> = (self.stale.iter().zip(&self.visible).enumerate())
             .map(|(i, (stale, on))| *stale && if all { Some(i) == next } else { *on })
             .collect();
