@@ -30,6 +30,8 @@ const WASM_URL = new URL('../zeta-app_bg.wasm', import.meta.url);
  * - `upgrade`: the full module takes over from the first (a new instance and a redraw).
  */
 const REST_MS = { study: 100, offscreen: 200, upgrade: 300 };
+/** Within this many screen heights above or below the view, a plot counts as on screen. */
+const NEAR_SCREEN = 0.5;
 const darkQuery = window.matchMedia('(prefers-color-scheme: dark)');
 const root = document.documentElement;
 const reducedMotion = window.matchMedia('(prefers-reduced-motion: reduce)');
@@ -77,6 +79,8 @@ const app = {
   lastInput: 0,
   /** Which canvases are on screen (see observeVisibility); plots off screen wait. */
   visibility: null,
+  /** Whether the observer has reported since it began watching (until then readVisibility). */
+  visibilityKnown: false,
   schematicVisible: true,
   /** Whether the schematic, or any plot, shows an older frame than the last update's. */
   schematicStale: false,
@@ -255,11 +259,13 @@ function observeVisibility() {
   app.visibility?.disconnect();
   app.schematicVisible = true;
   app.onScreen = new Set(app.view.shownPlots);
+  app.visibilityKnown = false;
   if (!('IntersectionObserver' in window)) return;
   const session = app.session;
   app.visibility = new IntersectionObserver(
     (entries) => {
       if (app.session !== session) return;
+      app.visibilityKnown = true;
       let stale = false;
       for (const e of entries) {
         const key = e.target.dataset.plot;
@@ -279,10 +285,32 @@ function observeVisibility() {
       // Right after the full module took over, the catch-up redraws (one plot a frame).
       if (stale && !app.settling) requestAnimationFrame(() => drawStale(false));
     },
-    { rootMargin: '50% 0px' },
+    { rootMargin: `${NEAR_SCREEN * 100}% 0px` },
   );
   for (const key of app.view.shownPlots) app.visibility.observe(app.view.canvases.get(key));
   if (app.view.animation) app.visibility.observe(app.view.animation.canvas);
+}
+
+/**
+ * Which plots are on screen, read from the layout, for a frame drawn before the observer's
+ * first report (it reports after the first frame is rendered): the first frame then draws
+ * only those, and the catch-up the others once the controls rest. Drawing every plot made
+ * integrators' first frame 450 ms at 4× CPU, at 360 × 740, where one plot is in view.
+ */
+function readVisibility() {
+  if (app.visibilityKnown || !app.visibility) return;
+  const vh = window.innerHeight;
+  const near = (el) => {
+    const r = el.getBoundingClientRect();
+    return (r.width > 0 || r.height > 0) && r.bottom >= -NEAR_SCREEN * vh && r.top <= (1 + NEAR_SCREEN) * vh;
+  };
+  for (const key of app.view.shownPlots) {
+    const on = near(app.view.canvases.get(key));
+    if (on) app.onScreen.add(key);
+    else app.onScreen.delete(key);
+    app.session.setVisible(key, on);
+  }
+  if (app.view.animation) app.schematicVisible = near(app.view.animation.canvas);
 }
 
 /** Draws the plots (and the schematic) showing an older frame: those on screen, or all. */
@@ -456,6 +484,7 @@ function drawFrame() {
   }
   try {
     const dpr = sizeCanvases();
+    readVisibility();
     const out = app.session.update(dpr, isDark());
     app.settling = false; // this update drew the plots on screen (see takeOver)
     app.staleLeft = true; // plots out of view were skipped; drawStale(true) says for sure

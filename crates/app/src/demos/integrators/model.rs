@@ -5,6 +5,7 @@
 use super::progressive::{self, StudyJob};
 use super::P;
 use crate::demos::progressive::Progressive;
+use std::cell::OnceCell;
 use zeta_solver::integrate::analysis::{error_norms, FitWindow, StepLimit};
 use zeta_solver::integrate::convergence::{nested_study, NestedGrids, NestedStudy};
 use zeta_solver::integrate::stability::{region_boundary, Stability, REGION_RAYS};
@@ -130,7 +131,8 @@ pub struct Results {
 #[derive(Debug, Clone, Default)]
 pub(super) struct Cache {
     pub(super) study: Option<Study>,
-    regions: Option<[Vec<(f64, f64)>; 3]>,
+    /// The stability regions' outlines: parameter-free, traced when first drawn.
+    regions: OnceCell<[Vec<(f64, f64)>; 3]>,
     /// The stable steps of the system `(ζ, ωₙ)`, which moving h, T, x₀ or the tolerance
     /// leaves as they are.
     limits: Option<([f64; 2], Limits)>,
@@ -156,9 +158,18 @@ impl Limits {
 }
 
 impl Cache {
-    /// The stability-region boundaries of Euler, Heun and RK4 (empty before the first step).
+    /// The stability-region boundaries of Euler, Heun and RK4, traced on the first call
+    /// (only the stability plot needs them: a page that does not draw it yet, such as a
+    /// phone showing the first plot, does not wait for them).
     pub fn regions(&self) -> &[Vec<(f64, f64)>] {
-        self.regions.as_ref().map_or(&[], |r| r.as_slice())
+        self.regions.get_or_init(|| {
+            let outline = |pts: Vec<Complex>| pts.into_iter().map(|z| (z.re, z.im)).collect();
+            [
+                outline(region_boundary(&Euler, REGION_RAYS)),
+                outline(region_boundary(&Heun, REGION_RAYS)),
+                outline(region_boundary(&Rk4, REGION_RAYS)),
+            ]
+        })
     }
 
     /// One step for `p`; `progress` decides whether a new study is the full one or a
@@ -199,15 +210,6 @@ impl Cache {
                 true => progress.job = StudyJob::start(sys, p, key, limits),
                 false => progress.finished(),
             }
-        }
-        if self.regions.is_none() {
-            let outline =
-                |pts: Vec<Complex>| pts.into_iter().map(|z| (z.re, z.im)).collect::<Vec<_>>();
-            self.regions = Some([
-                outline(region_boundary(&Euler, REGION_RAYS)),
-                outline(region_boundary(&Heun, REGION_RAYS)),
-                outline(region_boundary(&Rk4, REGION_RAYS)),
-            ]);
         }
         let study = self.study.clone()?;
         run_current(
