@@ -6,7 +6,7 @@ use super::progressive::{self, StudyJob};
 use super::P;
 use crate::demos::progressive::Progressive;
 use std::cell::OnceCell;
-use zeta_solver::integrate::analysis::{error_norms, FitWindow, StepLimit};
+use zeta_solver::integrate::analysis::{error_norms, error_norms_at, FitWindow, StepLimit};
 use zeta_solver::integrate::convergence::{nested_study, NestedGrids, NestedStudy};
 use zeta_solver::integrate::stability::{region_boundary, Stability, REGION_RAYS};
 use zeta_solver::integrate::work_precision::{
@@ -372,14 +372,6 @@ fn run_current(
     let n = grid.steps();
     let h = grid.h();
     let exact: Vec<[f64; 2]> = (0..=n).map(|i| resp.state(grid.time(i))).collect();
-    let lookup = |t: f64| {
-        let i = if t >= p.t_end {
-            n
-        } else {
-            ((t / h).round().max(0.0) as usize).min(n)
-        };
-        exact.get(i).copied().unwrap_or([f64::NAN; 2])
-    };
     let mut max_err = [None; 4];
     let mut runs = Vec::with_capacity(FIXED.len());
     for (k, m) in FIXED.iter().enumerate() {
@@ -395,7 +387,8 @@ fn run_current(
             Err(_) => overflow = Some(0.0),
         }
         if overflow.is_none() {
-            let e = error_norms(&sol, lookup)[0].max;
+            // Every run is on `grid`: `exact[i]` is the exact state at its point `i`.
+            let e = error_norms_at(&sol, &exact)[0].max;
             max_err[k] = e.is_finite().then_some(e);
         }
         runs.push(Run { sol, overflow });
