@@ -1,7 +1,7 @@
 // Saves a Blob as a file through a temporary object URL. PNG, SVG and CSV files get the
 // view's state token and the app version written in (see view.js, embed.js and export.rs), so that
 // dropping the file back onto the page reopens the same view.
-import { glue } from './glue.js';
+import { fullGlue } from './glue.js';
 import { tokenNow } from './view.js';
 
 function save(blob, name) {
@@ -22,8 +22,9 @@ export function download(blob, name) {
     save(blob, name);
     return;
   }
-  blob.arrayBuffer().then(
-    (buf) => save(new Blob([glue().stampExport(format[1], new Uint8Array(buf), token)], { type: blob.type }), name),
+  // The stamp is written by the full module (see fullGlue).
+  Promise.all([fullGlue(), blob.arrayBuffer()]).then(
+    ([glue, buf]) => save(new Blob([glue.stampExport(format[1], new Uint8Array(buf), token)], { type: blob.type }), name),
     () => save(blob, name),
   );
 }

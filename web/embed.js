@@ -46,11 +46,12 @@ export async function exportPlot(h, key, format) {
   const canvas = app.view.canvases.get(key);
   const w = canvas.clientWidth || 800;
   const hgt = canvas.clientHeight || 500;
+  // A first module has no exports and no stamps: the full one takes over first.
+  if (h.useFullModule) await h.useFullModule();
   if (format === 'csv') {
     return { mime: 'text/csv', bytes: glue().stampExport('csv', bytesOf(app.session.csv(key)), token) };
   }
   if (format === 'svg') {
-    if (h.useFullModule) await h.useFullModule(); // the first module has no SVG export
     const svg = app.session.svg(key, w, hgt, h.isDark(), document.createElement('canvas'));
     return { mime: 'image/svg+xml', bytes: glue().stampExport('svg', bytesOf(svg), token) };
   }
@@ -173,6 +174,7 @@ export function connectHost(opts, handlers) {
         const data = format === 'png' ? dataUrl(file.bytes, file.mime) : new TextDecoder().decode(file.bytes);
         post({ type: 'zeta:file', plot, format, mime: file.mime, data });
       } else if (msg.type === 'zeta:describe') {
+        if (h.useFullModule) await h.useFullModule(); // the schema is the full module's
         post({ type: 'zeta:schema', schema: glue().describeDemo(h.app.demoId, window.location.search) });
       }
     } catch (err) {

@@ -13,3 +13,22 @@ export function glue() {
 export function useGlue(module) {
   current = module;
 }
+
+let moveToFull = async () => {};
+
+/**
+ * The glue of the full module, once the open demo runs on it. A first module holds only
+ * what the first plot needs: exports (CSV, SVG, the stamp written into every file), the
+ * stamp read from a dropped file, the prediction form's number parser and the host's
+ * schema wait for the full module, which the page fetches right after the first plot.
+ * Rejects if it cannot be loaded (a later call tries again).
+ */
+export async function fullGlue() {
+  await moveToFull();
+  return current;
+}
+
+/** Called once by main.js: how the page moves the open demo to the full module. */
+export function useFullModuleWith(move) {
+  moveToFull = move;
+}

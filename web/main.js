@@ -13,7 +13,7 @@ import { fillLiveCells } from './live-table.js';
 import { applyConditions } from './conditional.js';
 import { cancelPendingWrite, currentQuery, demoFromUrl, queryFor, writeState } from './url.js';
 import { applyEmbedView, connectPage, embedOptions, loadPrediction, loadStyles } from './view.js';
-import { useGlue } from './glue.js';
+import { useFullModuleWith, useGlue } from './glue.js';
 import { activeLanguage, adoptInstance, prepareInstance, languages, num, remember, requestedLanguages, t, translatePage, useLanguage } from './i18n.js';
 
 const DEFAULT_DEMO = 'regimes';
@@ -98,6 +98,9 @@ const app = {
   instances: 0,
   recovering: null,
 };
+
+// What the first module lacks (exports, stamps, the lecturer API) waits for the full one.
+useFullModuleWith(useFullModule);
 
 /** The theme web/preload.js resolved from the address and the system (data-theme). */
 function isDark() {
@@ -884,39 +887,36 @@ function wireProbes() {
 
 function wireExports() {
   for (const { key, format, button } of app.view.exports) {
-    button.addEventListener('click', () => {
-      const canvas = app.view.canvases.get(key);
-      const name = `zeta-${app.demoId}-${key}`;
-      try {
-        if (format === 'csv') {
-          download(new Blob([app.session.csv(key)], { type: 'text/csv' }), `${name}.csv`);
-        } else if (format === 'svg') {
-          exportSvg(key, canvas, name);
-        } else {
-          const big = document.createElement('canvas');
-          big.width = canvas.clientWidth * 2;
-          big.height = canvas.clientHeight * 2;
-          app.session.renderTo(key, big, 2, isDark());
-          big.toBlob((blob) => blob && download(blob, `${name}.png`), 'image/png');
-        }
-      } catch (err) {
-        reportFailure(err);
-      }
-    });
+    button.addEventListener('click', () => exportPlot(key, format));
   }
 }
 
-/** SVG export; the first module has no SVG backend, so the full one takes over first. */
-async function exportSvg(key, canvas, name) {
+/**
+ * Downloads plot `key` as `format` (csv, svg or png). A first module has no exports (nor
+ * the stamp written into each file): the full one takes over first (see fullGlue).
+ */
+async function exportPlot(key, format) {
   try {
     await useFullModule();
   } catch (err) {
-    console.warn('Zeta Lab: the full module could not be loaded for the SVG export:', err && err.message);
+    console.warn(`Zeta Lab: the full module could not be loaded for the ${format} export:`, err && err.message);
     return; // a later click tries again
   }
+  const canvas = app.view.canvases.get(key);
+  const name = `zeta-${app.demoId}-${key}`;
   try {
-    const svg = app.session.svg(key, canvas.clientWidth, canvas.clientHeight, isDark(), document.createElement('canvas'));
-    download(new Blob([svg], { type: 'image/svg+xml' }), `${name}.svg`);
+    if (format === 'csv') {
+      download(new Blob([app.session.csv(key)], { type: 'text/csv' }), `${name}.csv`);
+    } else if (format === 'svg') {
+      const svg = app.session.svg(key, canvas.clientWidth, canvas.clientHeight, isDark(), document.createElement('canvas'));
+      download(new Blob([svg], { type: 'image/svg+xml' }), `${name}.svg`);
+    } else {
+      const big = document.createElement('canvas');
+      big.width = canvas.clientWidth * 2;
+      big.height = canvas.clientHeight * 2;
+      app.session.renderTo(key, big, 2, isDark());
+      big.toBlob((blob) => blob && download(blob, `${name}.png`), 'image/png');
+    }
   } catch (err) {
     reportFailure(err);
   }

@@ -9,7 +9,7 @@
 // `tol=0.5` is an absolute tolerance in the readout's unit; `tol=5%` is relative to the
 // value (default 10 %). The form works with the keyboard alone (type, Enter); the result
 // is announced through a polite live region and receives focus.
-import { glue } from './glue.js';
+import { fullGlue, glue } from './glue.js';
 import { numberLocale, t } from './i18n.js';
 import { el } from './ui.js';
 
@@ -79,8 +79,19 @@ export function setupPrediction(view, opts, io) {
     }
   });
   button.addEventListener('click', () => reveal());
-  const reveal = () => {
-    if (button.disabled) return;
+  let parsing = false;
+  const reveal = async () => {
+    if (button.disabled || parsing) return;
+    // The number parser is the full module's (see fullGlue).
+    parsing = true;
+    try {
+      await fullGlue();
+    } catch (err) {
+      console.warn('Zeta Lab: the full module could not be loaded:', err && err.message);
+      return; // a later click tries again
+    } finally {
+      parsing = false;
+    }
     const prediction = glue().parseNumber(input.value.replace(',', '.'));
     const value = Number(item.getAttribute('data-value'));
     if (prediction === undefined) {

@@ -3,7 +3,7 @@
 // a dropped file or a pasted link. Every page needs this before its first plot; the host-page
 // API over postMessage (embed.js), the prediction form (predict.js) and the lecturer styles
 // (lecturer.css) load only when the page needs them.
-import { glue } from './glue.js';
+import { fullGlue } from './glue.js';
 import { notify } from './ui.js';
 import { encodeToken, parsePresets, tokenInText, tokenNotice, viewQuery } from './state.js';
 import { t } from './i18n.js';
@@ -218,7 +218,12 @@ function wireRestore(h) {
     const file = ev.dataTransfer && ev.dataTransfer.files && ev.dataTransfer.files[0];
     if (!file) return;
     ev.preventDefault();
-    const token = file.size <= 20e6 ? glue().readStamp(new Uint8Array(await file.arrayBuffer())) : undefined;
+    let token;
+    try {
+      token = file.size <= 20e6 ? (await fullGlue()).readStamp(new Uint8Array(await file.arrayBuffer())) : undefined;
+    } catch (err) {
+      console.warn('Zeta Lab: the dropped file could not be read:', err && err.message);
+    }
     if (token) (await import('./embed.js')).applyToken(h, token);
     else notify(document.getElementById('notices'), t('noStamp'), 'warn');
   });

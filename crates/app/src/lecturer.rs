@@ -168,7 +168,9 @@ fn slider_mut<'a>(spec: &'a mut DemoSpec, key: &str) -> Option<&'a mut ParamSpec
         .find(|p| p.key == key && p.kind == Kind::Slider)
 }
 
-#[cfg(target_arch = "wasm32")]
+/// Not in a first module (feature `first`): the page calls these through `fullGlue`
+/// (web/glue.js), after the full module has taken over.
+#[cfg(all(target_arch = "wasm32", not(feature = "first")))]
 mod wasm {
     use super::*;
     use wasm_bindgen::prelude::*;

@@ -34,7 +34,9 @@ impl Session {
         }
     }
 
-    /// CSV of plot `key`'s data, with the parameters and units in a header.
+    /// CSV of plot `key`'s data, with the parameters and units in a header. Not in the
+    /// first module (feature `first`), like every export: the page waits for the full one.
+    #[cfg(not(feature = "first"))]
     pub fn csv(&mut self, key: &str) -> Result<String, JsError> {
         let i = self.build_plot(key).ok_or_else(|| js_err("no such plot"))?;
         let fig = self.built(i).ok_or_else(|| js_err("no such plot"))?;
