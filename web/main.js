@@ -209,8 +209,7 @@ function shownValues() {
 function recover() {
   app.recovering ??= reinstantiate()
     .then(() => {
-      app.changed = true;
-      app.revision += 1;
+      valuesChanged();
       requestDraw();
     })
     .finally(() => {
@@ -630,6 +629,16 @@ function requestDraw() {
   requestAnimationFrame(drawFrame);
 }
 
+/**
+ * The demo's values changed (a control, reset, a click on a plot, the host page, a new
+ * demo, a recovery): the host hears of it after the next frame, and a computation behind
+ * the page for the old values starts again (computeBehind).
+ */
+function valuesChanged() {
+  app.changed = true;
+  app.revision += 1;
+}
+
 function syncUrl() {
   const { demoId } = app;
   // Read when the write happens, from the session then current (the full module may have
@@ -659,8 +668,7 @@ function setParam(control, raw) {
   } catch (err) {
     reportFailure(err);
   }
-  app.changed = true;
-  app.revision += 1;
+  valuesChanged();
   requestDraw();
   syncUrl();
 }
@@ -734,8 +742,7 @@ function wireControls() {
   app.view.reset.addEventListener('click', () => {
     app.session.reset();
     showAllValues();
-    app.changed = true;
-    app.revision += 1;
+    valuesChanged();
     requestDraw();
     syncUrl();
   });
@@ -866,8 +873,7 @@ function wireProbes() {
           const control = app.view.controls.get(k);
           if (control) showValue(control, v);
         }
-        app.changed = true;
-        app.revision += 1;
+        valuesChanged();
         requestDraw();
         syncUrl();
       } catch (err) {
@@ -938,8 +944,7 @@ function openDemo(id, query) {
   app.view = buildDemo(app.root, spec);
   app.view.shownPlots = applyEmbedView(app.view, app.embed);
   app.time = 0;
-  app.changed = true;
-  app.revision += 1;
+  valuesChanged();
   app.dragging = false;
   app.layoutDirty = true;
   document.title = `${spec.title} — Zeta Lab`;
