@@ -398,9 +398,7 @@ function requestRelayout() {
     if (app.framePending || !app.session || !app.view) return; // that frame lays out anyway
     if (!app.dragging) layoutStage();
     const dpr = window.devicePixelRatio || 1;
-    const boxes = [...app.view.canvases].flatMap(([key, canvas]) => [[canvas, key], [app.view.overlays.get(key).overlay, `${key}:overlay`]]);
-    if (app.view.animation) boxes.push([app.view.animation.canvas, 'schematic']);
-    if (boxes.some(([canvas, key]) => misfit(canvas, key, dpr))) {
+    if (sizedCanvases().some(([canvas, key]) => misfit(canvas, key, dpr))) {
       app.framePending = true;
       drawFrame();
     }
@@ -450,13 +448,15 @@ function sizeCanvases() {
   // (and a resized canvas is cleared and drawn whole). It is laid out on release.
   if (app.layoutDirty && !app.dragging) layoutStage();
   const dpr = window.devicePixelRatio || 1;
-  for (const [key, canvas] of app.view.canvases) {
-    fit(canvas, key, dpr);
-    const { overlay } = app.view.overlays.get(key);
-    fit(overlay, `${key}:overlay`, dpr);
-  }
-  if (app.view.animation) fit(app.view.animation.canvas, 'schematic', dpr);
+  for (const [canvas, key] of sizedCanvases()) fit(canvas, key, dpr);
   return dpr;
+}
+
+/** Every canvas sized to its box, with its size key: each plot, its overlay, the schematic. */
+function sizedCanvases() {
+  const boxes = [...app.view.canvases].flatMap(([key, canvas]) => [[canvas, key], [app.view.overlays.get(key).overlay, `${key}:overlay`]]);
+  if (app.view.animation) boxes.push([app.view.animation.canvas, 'schematic']);
+  return boxes;
 }
 
 function announce(text) {
