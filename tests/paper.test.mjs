@@ -3,7 +3,7 @@
 // tour reads well on a laptop and a phone, prints, and is accessible.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, SHOTS } from './support/browser.mjs';
+import { drawn, open, SHOTS } from './support/browser.mjs';
 import { useSession, server, browser } from './support/session.mjs';
 
 useSession();
@@ -50,7 +50,9 @@ test('every required claim is on the page with its verdict, and every exhibit ha
     const e = exhibits.find((x) => x.id === id);
     assert.ok(e && e.canvas && e.link, `${id}: thumbnail and link`);
   }
-  // Every thumbnail has its text alternative.
+  // Every thumbnail has its text alternative (built when it is drawn: the first frame draws
+  // the thumbnails in view, the others follow once the page rests).
+  await drawn(page);
   const alts = await page.$$eval('[data-exhibit] canvas[data-plot]', (cs) =>
     cs.map((c) => document.getElementById(c.getAttribute('aria-describedby'))?.textContent ?? ''),
   );
