@@ -96,29 +96,28 @@ pub(crate) fn first_instability(scan: Scan, is_stable: impl Fn(f64) -> bool) -> 
         return None;
     }
     let mut lo = scan.start;
-    // The scan has a fixed number of points, ln(end/start)/ln(ratio).
-    let mut y = scan.start;
-    while y < scan.end {
-        let next = y * scan.ratio;
+    for next in scan.points().skip(1) {
         if !is_stable(next) {
             return Some(bisect(lo, next, is_stable));
         }
         lo = next;
-        y = next;
     }
     Some(f64::INFINITY)
 }
 
-/// The points [`first_instability`] tests along `scan`, in order: `start`, then each
-/// times `ratio` until one reaches `end` (that one included).
-pub(crate) fn scan_points(scan: Scan) -> Vec<f64> {
-    let mut points = vec![scan.start];
-    let mut y = scan.start;
-    while scan.ratio > 1.0 && y < scan.end {
-        y *= scan.ratio;
-        points.push(y);
+impl Scan {
+    /// The points [`first_instability`] tests, in order: `start`, then each times `ratio`
+    /// until one reaches `end` (that one included): ln(end/start)/ln(ratio) of them.
+    pub(crate) fn points(self) -> impl Iterator<Item = f64> {
+        std::iter::successors(Some(self.start), move |&y| {
+            (self.ratio > 1.0 && y < self.end).then_some(y * self.ratio)
+        })
     }
-    points
+}
+
+/// [`Scan::points`], collected (for a search that halves their range).
+pub(crate) fn scan_points(scan: Scan) -> Vec<f64> {
+    scan.points().collect()
 }
 
 /// [`first_instability`] over `points` (its scan, [`scan_points`]) when the stable points
