@@ -78,6 +78,33 @@ test('a host page on another origin drives one sandboxed embed and hears its cha
   }
 });
 
+test('a host API that loads after the first plot still says the embed is ready', async () => {
+  // On a slow line web/embed.js may arrive after the first frame has been drawn: the
+  // embed must still send zeta:ready (once), not only on the next change.
+  const host = await hostServer(app.url);
+  const context = await browser.newContext();
+  const page = await context.newPage();
+  await context.route('**/web/embed.js', async (route) => {
+    await new Promise((ok) => setTimeout(ok, 2500));
+    await route.continue();
+  });
+  try {
+    await page.goto(host.url);
+    const frameA = () => page.frames().find((f) => f.url().includes('zeta=0.2'));
+    await page.waitForFunction(() => window.messages.some((m) => m.from === 'a' && m.data.type === 'zeta:ready'), null, { timeout: 15000 });
+    // The first plot came before the host API did (the delay is what this test is about).
+    const drawnAt = await frameA().evaluate(() => performance.getEntriesByName('zeta:first-draw')[0]?.startTime);
+    const embedAt = await frameA().evaluate(() => performance.getEntriesByType('resource').find((r) => r.name.endsWith('/web/embed.js'))?.responseEnd);
+    assert.ok(drawnAt < embedAt, `first plot at ${drawnAt} ms, host API loaded at ${embedAt} ms`);
+    const ready = await page.evaluate(() => window.messages.filter((m) => m.from === 'a' && m.data.type === 'zeta:ready').map((m) => m.data));
+    assert.equal(ready.length, 1);
+    assert.equal(ready[0].params.zeta, 0.2);
+  } finally {
+    await context.close();
+    await host.close();
+  }
+});
+
 test('plots= chooses plots; the page runs under the strict CSP with no violations', async () => {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
   await context.addInitScript(() => {

@@ -28,43 +28,10 @@ import { t } from './i18n.js';
 
 const MAX_KEYS = 64;
 
-function bytesOf(text) {
-  return new TextEncoder().encode(text);
-}
-
 function dataUrl(bytes, mime) {
   let bin = '';
   for (let i = 0; i < bytes.length; i += 0x8000) bin += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
   return `data:${mime};base64,${btoa(bin)}`;
-}
-
-/** Plot `key` as a stamped file: {mime, bytes}. */
-export async function exportPlot(h, key, format) {
-  const app = h.app;
-  if (!app.view.canvases.has(key)) throw new Error(`no plot “${String(key).slice(0, 40)}”`);
-  const token = currentToken(h);
-  const canvas = app.view.canvases.get(key);
-  const w = canvas.clientWidth || 800;
-  const hgt = canvas.clientHeight || 500;
-  // A first module has no exports and no stamps: the full one takes over first.
-  if (h.useFullModule) await h.useFullModule();
-  if (format === 'csv') {
-    return { mime: 'text/csv', bytes: glue().stampExport('csv', bytesOf(app.session.csv(key)), token) };
-  }
-  if (format === 'svg') {
-    const svg = app.session.svg(key, w, hgt, h.isDark(), document.createElement('canvas'));
-    return { mime: 'image/svg+xml', bytes: glue().stampExport('svg', bytesOf(svg), token) };
-  }
-  if (format === 'png') {
-    const big = document.createElement('canvas');
-    big.width = w * 2;
-    big.height = hgt * 2;
-    app.session.renderTo(key, big, 2, h.isDark());
-    const blob = await new Promise((ok) => big.toBlob(ok, 'image/png'));
-    if (!blob) throw new Error('the browser could not encode the PNG');
-    return { mime: 'image/png', bytes: glue().stampExport('png', new Uint8Array(await blob.arrayBuffer()), token) };
-  }
-  throw new Error(`unknown format “${String(format).slice(0, 8)}” (png, svg or csv)`);
 }
 
 /**
@@ -170,7 +137,7 @@ export function connectHost(opts, handlers) {
       } else if (msg.type === 'zeta:export') {
         const { plot, format } = msg;
         if (typeof plot !== 'string' || typeof format !== 'string') return;
-        const file = await exportPlot(h, plot, format);
+        const file = await (await import('./download.js')).plotFile(h, plot, format);
         const data = format === 'png' ? dataUrl(file.bytes, file.mime) : new TextDecoder().decode(file.bytes);
         post({ type: 'zeta:file', plot, format, mime: file.mime, data });
       } else if (msg.type === 'zeta:describe') {

@@ -162,11 +162,6 @@ function withModule(name, use) {
   });
 }
 
-/** Saves a file through download.js (which stamps the view's state token into it). */
-function download(blob, name) {
-  withModule('download', (m) => m.download(blob, name));
-}
-
 /** Lays out the paper's tour (tour.js) once it is loaded, if the same demo is still open. */
 function showTour(tour) {
   const view = app.view;
@@ -898,8 +893,9 @@ function wireExports() {
 }
 
 /**
- * Downloads plot `key` as `format` (csv, svg or png). A first module has no exports (nor
- * the stamp written into each file): the full one takes over first (see fullGlue).
+ * Downloads plot `key` as `format` (csv, svg or png), stamped (download.js). A first module
+ * has no exports (nor the stamp written into each file): the full one takes over first
+ * (see fullGlue).
  */
 async function exportPlot(key, format) {
   try {
@@ -908,24 +904,7 @@ async function exportPlot(key, format) {
     console.warn(`Zeta Lab: the full module could not be loaded for the ${format} export:`, err && err.message);
     return; // a later click tries again
   }
-  const canvas = app.view.canvases.get(key);
-  const name = `zeta-${app.demoId}-${key}`;
-  try {
-    if (format === 'csv') {
-      download(new Blob([app.session.csv(key)], { type: 'text/csv' }), `${name}.csv`);
-    } else if (format === 'svg') {
-      const svg = app.session.svg(key, canvas.clientWidth, canvas.clientHeight, isDark(), document.createElement('canvas'));
-      download(new Blob([svg], { type: 'image/svg+xml' }), `${name}.svg`);
-    } else {
-      const big = document.createElement('canvas');
-      big.width = canvas.clientWidth * 2;
-      big.height = canvas.clientHeight * 2;
-      app.session.renderTo(key, big, 2, isDark());
-      big.toBlob((blob) => blob && download(blob, `${name}.png`), 'image/png');
-    }
-  } catch (err) {
-    reportFailure(err);
-  }
+  withModule('download', (m) => m.downloadPlot({ app, isDark }, key, format).catch(reportFailure));
 }
 
 function showAllValues() {
@@ -1354,6 +1333,8 @@ async function main() {
   if (hostModule) {
     try {
       app.host = (await hostModule).connectHost(app.embed, handlers);
+      // The first frame may have come before the host API: it says it is ready now.
+      if (app.firstDrawn && !app.changed) app.host.notify();
     } catch (err) {
       console.warn('Zeta Lab: the host-page API could not be loaded:', err && err.message);
     }

@@ -188,16 +188,6 @@ export function currentToken(h) {
   }));
 }
 
-let tokenProvider = null;
-/** The token of the view on screen, or null before the page is connected (for download.js). */
-export function tokenNow() {
-  try {
-    return tokenProvider ? tokenProvider() : null;
-  } catch {
-    return null;
-  }
-}
-
 /** The animation part of a query (`t=`, `play=`, `speed=`). */
 export function applyAnimation(h, q) {
   const app = h.app;
@@ -246,7 +236,6 @@ function wireRestore(h) {
  * the host-page API.
  */
 export function connectPage(h) {
-  tokenProvider = () => currentToken(h);
   applyAnimation(h, new URLSearchParams(window.location.search));
   const notices = document.getElementById('notices');
   const note = tokenNotice(h.app.session.spec().params.map((p) => p.key));
