@@ -154,7 +154,43 @@ test('a state= token that forces a theme is followed once state.js has expanded 
   } finally {
     await again.context.close();
   }
+  // <head>'s preload.js reads the token itself (main.js never runs here): the theme and the
+  // demo's first module are decided, and that module's download started, before any
+  // module script; the address's own keys win over the token's, as in state.js; an
+  // unreadable token is dropped (the default demo).
+  const cases = [
+    [`?state=${token}`, 'dark', 'regimes'],
+    [`?state=${await tokenOf('demo=integrators&theme=dark')}&theme=light`, 'light', 'integrators'],
+    [`?state=${await tokenOf('demo=design')}&demo=rlc`, 'light', 'rlc'],
+    ['?state=1.%%%&demo=flutter', 'light', 'flutter'],
+    ['?state=2.ZGVtbz1ybGM', 'light', 'regimes'],
+  ];
+  for (const [query, theme, demo] of cases) {
+    const context = await browser.newContext({ colorScheme: 'light', serviceWorkers: 'block' });
+    try {
+      await context.route('**/web/main.js', (route) => route.abort());
+      const page = await context.newPage();
+      await page.goto(`${server.url}${query}`);
+      await page.waitForSelector('#loading');
+      assert.equal(await page.getAttribute('html', 'data-theme'), theme, query);
+      assert.equal(await page.getAttribute('html', 'data-start-demo'), demo, query);
+      const preloaded = await page.$$eval('link[rel=preload][as=fetch]', (ls) => ls.map((l) => l.getAttribute('href')));
+      assert.deepEqual(preloaded, [`./zeta-first-${demo}_bg.wasm`], query);
+    } finally {
+      await context.close();
+    }
+  }
 });
+
+/** The state token of `query`, made by the page's own state.js. */
+async function tokenOf(query) {
+  const { page, context } = await open(browser, `${server.url}?demo=regimes`, { serviceWorkers: 'block' });
+  try {
+    return await page.evaluate((q) => import('./web/state.js').then((m) => m.encodeToken(q)), query);
+  } finally {
+    await context.close();
+  }
+}
 
 test('the theme is on the page before main.js runs (no flash of the wrong theme)', async () => {
   for (const [scheme, query, theme, colour] of [['dark', '', 'dark', DARK], ['light', '&theme=dark', 'dark', DARK], ['dark', '&theme=projector', 'projector', LIGHT]]) {

@@ -16,9 +16,11 @@
 // lecturer styles for the projector theme, the host-page API in an embed, the prediction
 // form). A static preload in the HTML could not depend on the address, and would make
 // every other demo download two modules.
-// web/state.js expands a `state=` token into the address after this has run; main.js then
-// sends 'zeta:address' and the decisions are made again on the expanded address (as when
-// a token is restored in place later: the theme follows it).
+// A `state=` token (web/state.js: "1." + base64url of a query) is read here too, with the
+// address's own keys winning as there, so a shared link starts its demo's module as early
+// as a plain address does. state.js expands it into the address after this has run;
+// main.js then sends 'zeta:address' and the decisions are made again on the expanded
+// address (as when a token is restored in place later: the theme follows it).
 (() => {
   // The demos that have a first module (zeta-first-<demo>.js, zeta-first-<demo>_bg.wasm),
   // written by the post-build hook; none in a dev build.
@@ -28,8 +30,27 @@
   const root = document.documentElement;
   const system = window.matchMedia('(prefers-color-scheme: dark)');
 
-  const decide = () => {
+  /** The address's query, a version-1 `state=` token expanded (an unreadable one dropped). */
+  const address = () => {
     const q = new URLSearchParams(window.location.search);
+    const token = q.get('state');
+    if (token === null) return q;
+    q.delete('state');
+    try {
+      const [, data] = /^\s*1\.([A-Za-z0-9_-]+)\s*$/.exec(token) ?? [];
+      if (!data) return q;
+      const bin = atob(data.replace(/-/g, '+').replace(/_/g, '/'));
+      const text = new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(bin, (c) => c.charCodeAt(0)));
+      const expanded = new URLSearchParams(text);
+      for (const [k, v] of q) expanded.set(k, v);
+      return expanded;
+    } catch {
+      return q;
+    }
+  };
+
+  const decide = () => {
+    const q = address();
     const theme = q.get('theme');
     root.dataset.theme = THEMES.includes(theme) ? theme : system.matches ? 'dark' : 'light';
     // Which module starts is decided before the page starts, not again.
@@ -61,7 +82,6 @@
   if (q.get('embed') === '1') link({ rel: 'modulepreload', href: 'web/embed.js' });
   if (q.has('predict')) link({ rel: 'modulepreload', href: 'web/predict.js' });
 
-  if (q.has('state')) return; // the demo is inside the token: main.js starts its module
   const name = root.dataset.startModule === 'first' ? `zeta-first-${root.dataset.startDemo}` : 'zeta-app';
   link({ rel: 'modulepreload', crossOrigin: 'anonymous', href: `./${name}.js` });
   link({ rel: 'preload', as: 'fetch', type: 'application/wasm', crossOrigin: 'anonymous', href: `./${name}_bg.wasm` });
