@@ -83,6 +83,21 @@ async function checkSize(url, [w, h], label) {
     await switchTo(page, id);
     const found = await page.evaluate(checkEveryControl);
     failures.push(...found.map((f) => `${id} at ${w}×${h}${label}: ${f}`));
+    // The equation is shrunk to fit (at most to 60 %), never left to scroll sideways.
+    const eq = await page.evaluate(() => {
+      const box = document.querySelector('.equation');
+      return box && !box.closest('[hidden]') && box.clientWidth > 0 ? [box.scrollWidth, box.clientWidth] : null;
+    });
+    if (eq && eq[0] > eq[1] + 1) failures.push(`${id} at ${w}×${h}${label}: the equation is ${eq[0]} px wide in ${eq[1]}`);
+    if (!label) {
+      // With a control in use (the page scrolled to it), the staged plot is no mere strip,
+      // on a phone held sideways too (740 × 360).
+      const tall = await page.evaluate(() => {
+        document.querySelector('.controls input, .controls select')?.scrollIntoView({ block: 'center' });
+        return document.querySelector('.stage canvas')?.clientHeight ?? null;
+      });
+      if (tall !== null && tall < 200) failures.push(`${id} at ${w}×${h}: the staged plot is ${tall} px tall`);
+    }
   }
   assert.deepEqual(errors, []);
   await context.close();

@@ -400,6 +400,31 @@ function requestRelayout() {
   });
 }
 
+/** The least height (px) the staged plot is given while the stage fits the window. */
+const MIN_STAGED_PLOT = 200;
+/** The smallest a demo's equation is shrunk to fit its box (then it scrolls sideways). */
+const EQUATION_MIN_SCALE = 0.6;
+
+/**
+ * Shrinks the demo's equation to fit its box, down to EQUATION_MIN_SCALE: five demos'
+ * equations were wider than a phone and scrolled sideways (flutter's 440 px in 341 at
+ * 360 × 740, in 275 on a phone held sideways). Its width at full size is that of its
+ * widest row (MathML is not broken into lines) over its scale.
+ */
+function fitEquation() {
+  const box = app.view.workspace.querySelector('.equation');
+  const math = box?.querySelector('math');
+  if (!math) return;
+  const scale = Number(math.dataset.scale || 1);
+  const natural = Math.max(0, ...[...math.children].map((c) => c.getBoundingClientRect().width)) / scale;
+  const room = box.clientWidth;
+  if (!(natural > 0 && room > 0)) return;
+  const next = Math.max(EQUATION_MIN_SCALE, Math.min(1, Math.floor((room / natural) * 100) / 100));
+  if (next === scale) return;
+  math.dataset.scale = String(next);
+  math.style.fontSize = next === 1 ? '' : `${next * 100}%`;
+}
+
 /**
  * Caps the staged plot's height so the whole stage (picker, plot, readouts) fits in the
  * window beside the controls (wide screens) or in the top 45 % above them (narrow), and
@@ -408,6 +433,7 @@ function requestRelayout() {
 function layoutStage() {
   app.layoutDirty = false;
   const view = app.view;
+  fitEquation();
   const canvas = view.canvases.get(view.staged);
   for (const p of view.spec.plots) {
     const c = view.canvases.get(p.key);
@@ -433,7 +459,12 @@ function layoutStage() {
     room = Math.max(room, vh - top - form.offsetHeight - 3 * margin);
   }
   const extra = view.stage.offsetHeight - canvas.offsetHeight;
-  canvas.style.maxHeight = `${Math.max(120, Math.floor(room - extra))}px`;
+  let cap = Math.floor(room - extra);
+  // A short window beside the controls (a phone held sideways: 360 px, a third of it the
+  // site's header) would leave a strip of a plot: it is sized for the stage stuck at the
+  // top once the page scrolls to the controls, as it does when one is used.
+  if (wide && cap < MIN_STAGED_PLOT) cap = Math.floor(vh - 2 * margin - extra);
+  canvas.style.maxHeight = `${Math.max(120, cap)}px`;
   view.workspace.style.setProperty('--stage-h', `${view.stage.offsetHeight}px`);
 }
 

@@ -23,7 +23,7 @@ pub(super) const SUMMARY: &str =
      acceleration on the full ISO 8608 road, unweighted and weighted by ISO 2631-1's W_k \
      (a_w, the comfort measure), from the Lyapunov equation of the car.";
 
-pub(super) const EQUATION: &str = "<math display=\"block\"><mtable>\
+pub(super) const EQUATION: &str = "<math display=\"block\"><mtable class=\"lines\">\
 <mtr><mtd><msub><mi>m</mi><mi>s</mi></msub><msub><mover><mi>z</mi><mo>¨</mo></mover><mi>s</mi></msub>\
 <mo>=</mo><mo>−</mo><msub><mi>k</mi><mi>s</mi></msub><mo>(</mo><msub><mi>z</mi><mi>s</mi></msub><mo>−</mo>\
 <msub><mi>z</mi><mi>u</mi></msub><mo>)</mo><mo>−</mo><msub><mi>c</mi><mi>s</mi></msub><mo>(</mo>\
@@ -33,7 +33,8 @@ pub(super) const EQUATION: &str = "<math display=\"block\"><mtable>\
 <mo>=</mo><msub><mi>k</mi><mi>s</mi></msub><mo>(</mo><msub><mi>z</mi><mi>s</mi></msub><mo>−</mo>\
 <msub><mi>z</mi><mi>u</mi></msub><mo>)</mo><mo>+</mo><msub><mi>c</mi><mi>s</mi></msub><mo>(</mo>\
 <msub><mover><mi>z</mi><mo>˙</mo></mover><mi>s</mi></msub><mo>−</mo>\
-<msub><mover><mi>z</mi><mo>˙</mo></mover><mi>u</mi></msub><mo>)</mo><mo>−</mo><mi>min</mi><mo>(</mo>\
+<msub><mover><mi>z</mi><mo>˙</mo></mover><mi>u</mi></msub><mo>)</mo></mtd></mtr>\
+<mtr><mtd><mspace width=\"4em\"/><mo>−</mo><mi>min</mi><mo>(</mo>\
 <msub><mi>k</mi><mi>t</mi></msub><mo>(</mo><msub><mi>z</mi><mi>u</mi></msub><mo>−</mo><mi>u</mi><mo>(</mo>\
 <mi>t</mi><mo>)</mo><mo>)</mo><mo>,</mo><mo>(</mo><msub><mi>m</mi><mi>s</mi></msub><mo>+</mo>\
 <msub><mi>m</mi><mi>u</mi></msub><mo>)</mo><mi>g</mi><mo>)</mo></mtd></mtr></mtable></math>";
