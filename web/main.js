@@ -433,7 +433,6 @@ function fitEquation() {
 function layoutStage() {
   app.layoutDirty = false;
   const view = app.view;
-  fitEquation();
   const canvas = view.canvases.get(view.staged);
   for (const p of view.spec.plots) {
     const c = view.canvases.get(p.key);
@@ -442,12 +441,16 @@ function layoutStage() {
       c.style.aspectRatio = String(p.aspect);
     }
   }
-  if (!canvas) return;
+  if (!canvas) {
+    fitEquation();
+    return;
+  }
   const vh = window.innerHeight;
   const wide = getComputedStyle(view.workspace).getPropertyValue('--layout').trim() === 'wide';
   // On the stage a wide plot may grow taller than its usual shape, up to the room left.
   const aspect = view.spec.plots.find((p) => p.key === view.staged).aspect;
   canvas.style.aspectRatio = String(wide ? Math.min(aspect, 1.5) : aspect);
+  fitEquation(); // its read lays the page out once for the reads below (a write: rarely)
   const anchor = wide ? view.workspace : view.stage.previousElementSibling;
   const box = anchor.getBoundingClientRect();
   const top = (wide ? box.top : box.bottom) + window.scrollY;
