@@ -2,7 +2,8 @@
 # Every benchmark: the solver's criterion benches natively, then the release site in headless
 # Chromium (per-demo slider-event p50/p95, cold-load time to first plot, bytes shipped), then
 # the same site as a low-end device (4× CPU, phone screen, Slow 4G; bench/lowend.mjs).
-# `bash scripts/bench.sh --low-end` runs only the low-end part.
+# `bash scripts/bench.sh --low-end` runs only the low-end part; `ZETA_RUNS=3` before it
+# reports each demo's median of three runs (a single run's p95 moves by several ms).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/ready.sh"
 echo "== machine: $(nproc) cores, $(uname -m), $(date -u +%Y-%m-%d)"
