@@ -2,7 +2,7 @@
 // (embed.js): CSV, SVG or PNG, each with the view's state token and the app version written
 // in (see view.js and export.rs), so that dropping the file back onto the page reopens the
 // same view.
-import { glue } from './glue.js';
+import { fullGlue } from './glue.js';
 import { currentToken } from './view.js';
 
 function bytesOf(text) {
@@ -10,19 +10,19 @@ function bytesOf(text) {
 }
 
 /**
- * Plot `key` as a stamped file: {mime, bytes}. `h`: {app, isDark, useFullModule} from
- * main.js. A first module has no exports and no stamps: the full one takes over first.
+ * Plot `key` as a stamped file: {mime, bytes}. `h`: {app, isDark} from main.js. A first
+ * module has no exports and no stamps: the full one takes over first (fullGlue).
  */
 export async function plotFile(h, key, format) {
   const app = h.app;
   if (!app.view.canvases.has(key)) throw new Error(`no plot “${String(key).slice(0, 40)}”`);
   if (!['csv', 'svg', 'png'].includes(format)) throw new Error(`unknown format “${String(format).slice(0, 8)}” (png, svg or csv)`);
-  if (h.useFullModule) await h.useFullModule();
+  const full = await fullGlue();
   const token = currentToken(h);
   const canvas = app.view.canvases.get(key);
   const w = canvas.clientWidth || 800;
   const hgt = canvas.clientHeight || 500;
-  const stamped = (mime, bytes) => ({ mime, bytes: glue().stampExport(format, bytes, token) });
+  const stamped = (mime, bytes) => ({ mime, bytes: full.stampExport(format, bytes, token) });
   if (format === 'csv') return stamped('text/csv', bytesOf(app.session.csv(key)));
   if (format === 'svg') return stamped('image/svg+xml', bytesOf(app.session.svg(key, w, hgt, h.isDark(), document.createElement('canvas'))));
   const big = document.createElement('canvas');

@@ -19,7 +19,7 @@
 // Messages are accepted only from the parent window and, when the page was given
 // `origin=<host origin>`, only from that origin; every message goes to the parent window
 // only, and with `origin=` only to that origin. Anything malformed is ignored.
-import { glue } from './glue.js';
+import { fullGlue, glue } from './glue.js';
 import { notify } from './ui.js';
 import { decodeToken, loaded, tokenNotice } from './state.js';
 import { SPEED_RANGE, applyAnimation, currentToken, embedOptions, host } from './view.js';
@@ -141,8 +141,8 @@ export function connectHost(opts, handlers) {
         const data = format === 'png' ? dataUrl(file.bytes, file.mime) : new TextDecoder().decode(file.bytes);
         post({ type: 'zeta:file', plot, format, mime: file.mime, data });
       } else if (msg.type === 'zeta:describe') {
-        if (h.useFullModule) await h.useFullModule(); // the schema is the full module's
-        post({ type: 'zeta:schema', schema: glue().describeDemo(h.app.demoId, window.location.search) });
+        const full = await fullGlue(); // the schema is the full module's
+        post({ type: 'zeta:schema', schema: full.describeDemo(h.app.demoId, window.location.search) });
       }
     } catch (err) {
       fail(msg.type, err);

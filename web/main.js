@@ -1362,7 +1362,7 @@ async function main() {
   wireShare();
   // A demo's first module opens only that demo: embed.js reloads the page for another.
   const canOpen = (id) => app.module !== 'first' || id === app.firstDemo;
-  const handlers = { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo, canOpen, isDark, useFullModule };
+  const handlers = { set: setFromHost, state: hostState, app, setPlaying, drawTime, requestDraw, openDemo, canOpen, isDark };
   connectPage(handlers);
   if (hostModule) {
     try {
