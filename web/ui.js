@@ -303,10 +303,14 @@ export function showValue(control, value) {
     control.input.value = String(value);
     return;
   }
-  control.range.value = String(toSlider(control.param, value));
-  control.number.value = formatValue(control.param, value);
+  // Written only when they differ (a held drag sets the value the slider already shows):
+  // setting an input's value, even to the same, has the page style and paint it again.
+  const position = String(toSlider(control.param, value));
+  if (control.range.value !== position) control.range.value = position;
+  const shown = formatValue(control.param, value);
+  if (control.number.value !== shown) control.number.value = shown;
   const unit = control.param.unit ? ` ${control.param.unit}` : '';
-  setAttr(control.range, 'aria-valuetext', `${control.param.label} ${formatValue(control.param, value)}${unit}`);
+  setAttr(control.range, 'aria-valuetext', `${control.param.label} ${shown}${unit}`);
 }
 
 /** Writes readouts ([{key, text, data_value}]) into their elements. */

@@ -37,6 +37,29 @@ fn count_colour(c: &HtmlCanvasElement, rgb: (u8, u8, u8)) -> usize {
         .count()
 }
 
+/// Text is measured in the font asked for, however often: the canvas backend remembers
+/// widths by font and text (`canvas::measure`), so a font's width must not answer for
+/// another's, nor a text's for another text's.
+#[wasm_bindgen_test]
+fn text_is_measured_in_the_font_and_text_asked_for() {
+    use plotters::prelude::*;
+    use plotters_backend::DrawingBackend;
+    let c = canvas(200, 100);
+    let b = zeta_app::canvas::HtmlCanvas::new(&c).unwrap();
+    let small = ("sans-serif", 12.0).into_font().color(&BLACK);
+    let large = ("sans-serif", 24.0).into_font().color(&BLACK);
+    let width = |text: &str, style: &TextStyle<'_>| b.estimate_text_size(text, style).unwrap().0;
+    let (s, l) = (width("Wwww 123", &small), width("Wwww 123", &large));
+    assert!(s > 20, "12 px text measured {s} px wide");
+    assert!((2 * s).abs_diff(l) <= 2, "12 px: {s} px, 24 px: {l} px");
+    // Asked again, in either order: the same answers.
+    assert_eq!(
+        (width("Wwww 123", &large), width("Wwww 123", &small)),
+        (l, s)
+    );
+    assert!(width("Wwww 1234", &small) > s);
+}
+
 #[wasm_bindgen_test]
 fn regimes_draws_its_curve_and_poles_onto_canvases() {
     let response = canvas(760, 400);

@@ -136,7 +136,11 @@ impl HtmlCanvas {
 
     /// Sets the font of `style` (the CSS shorthand `"<style> <size>px <family>"`).
     fn font(&self, style: &impl BackendTextStyle) {
-        let font = super::css_font(style);
+        self.set_font(super::css_font(style));
+    }
+
+    /// Makes `font` (a CSS font shorthand) the context's font, unless it is already.
+    fn set_font(&self, font: String) {
         let mut last = self.font.borrow_mut();
         if *last != font {
             self.context.set_font(&font);
@@ -367,7 +371,8 @@ impl DrawingBackend for HtmlCanvas {
     }
 
     fn estimate_text_size<S: BackendTextStyle>(&self, text: &str, style: &S) -> Result<(u32, u32)> {
-        self.font(style);
-        Ok(super::measure(&self.context, text, style))
+        Ok(super::measure(&self.context, text, style, |font| {
+            self.set_font(font)
+        }))
     }
 }

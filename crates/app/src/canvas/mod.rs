@@ -18,6 +18,7 @@ mod web;
 pub use direct::{prepare, CanvasDirect};
 pub use html::{CanvasError, HtmlCanvas};
 use plotters_backend::BackendTextStyle;
+use std::cell::RefCell;
 use wasm_bindgen::JsCast;
 #[cfg(not(feature = "first"))]
 pub use web::{Web, WebError};
@@ -59,23 +60,76 @@ pub(crate) fn css_font(style: &impl BackendTextStyle) -> String {
     )
 }
 
-/// Width and height (px) of `text` in the font already set on `context` (`style`'s).
+/// Slots of the memory of measured widths (see [`measure`]).
+const WIDTH_SLOTS: usize = 256;
+
+thread_local! {
+    /// Widths of text already measured, px, by [`width_hash`] (slot: the hash modulo
+    /// [`WIDTH_SLOTS`]; hash 0 marks an empty slot and is never looked up). The page loads
+    /// no web fonts, so a font and a text always measure the same, and a held drag redraws
+    /// the same legend entries, titles and marker labels every frame: each `measureText`
+    /// (with the font set before it) is a call into JavaScript and a trip through the
+    /// browser's text shaper, about a tenth of drawing quarter-car's plot at 4× CPU
+    /// slowdown (profiled 2026-12-01). Hashes rather than the strings: no allocation per
+    /// label, and less code than a `HashMap`; among the few thousand labels a session
+    /// measures, two share a 64-bit hash with odds below 10⁻¹².
+    static WIDTHS: RefCell<Vec<(u64, f64)>> = const { RefCell::new(Vec::new()) };
+}
+
+/// FNV-1a (64-bit) of `font`, a NUL and `text`.
+fn width_hash(font: &str, text: &str) -> u64 {
+    let bytes = font.bytes().chain(std::iter::once(0)).chain(text.bytes());
+    bytes.fold(0xcbf2_9ce4_8422_2325, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+/// Whether measured widths are remembered ([`WIDTHS`]): in the full module. A first
+/// module draws the first frames only, until the full one takes over, and is within its
+/// download budget by a few hundred bytes, which the memory's code would take.
+const REMEMBER_WIDTHS: bool = cfg!(not(feature = "first"));
+
+/// Width and height (px) of `text` in `style`: the width remembered, or measured on
+/// `context` after `set_font` has made the style's font (its CSS shorthand, see
+/// [`css_font`]) the context's (and then remembered in its slot, in place of what was
+/// there).
 pub(crate) fn measure(
     context: &CanvasRenderingContext2d,
     text: &str,
     style: &impl BackendTextStyle,
+    set_font: impl FnOnce(String),
 ) -> (u32, u32) {
-    let width = context.measure_text(text).map(|m| m.width()).unwrap_or(0.0);
+    let font = css_font(style);
+    let hash = width_hash(&font, text);
+    let slot = (hash % WIDTH_SLOTS as u64) as usize;
+    let known = match REMEMBER_WIDTHS {
+        true => WIDTHS.with_borrow(|w| {
+            w.get(slot)
+                .filter(|k| k.0 == hash && hash != 0)
+                .map(|k| k.1)
+        }),
+        false => None,
+    };
+    let width = known.unwrap_or_else(|| {
+        set_font(font);
+        let width = context.measure_text(text).map(|m| m.width()).unwrap_or(0.0);
+        if REMEMBER_WIDTHS {
+            WIDTHS.with_borrow_mut(|w| {
+                w.resize(WIDTH_SLOTS, (0, 0.0));
+                w[slot] = (hash, width);
+            });
+        }
+        width
+    });
     (
         width.ceil().max(0.0) as u32,
         style.size().ceil().max(0.0) as u32,
     )
 }
 
+/// `canvas`'s 2D context; `None` if it has another kind. A canvas answers `"2d"` with a
+/// `CanvasRenderingContext2d` or with null, so the object is not checked again (an
+/// `instanceof` call into JavaScript per plot per frame).
 pub(crate) fn context_of(canvas: &HtmlCanvasElement) -> Option<CanvasRenderingContext2d> {
-    canvas
-        .get_context("2d")
-        .ok()??
-        .dyn_into::<CanvasRenderingContext2d>()
-        .ok()
+    Some(canvas.get_context("2d").ok()??.unchecked_into())
 }

@@ -1,6 +1,6 @@
 //! [`Web`]: the page's canvas and SVG export's backend as one type (full module only).
 
-use super::{context_of, css_font, CanvasError, HtmlCanvas};
+use super::{context_of, CanvasError, HtmlCanvas};
 use plotters::prelude::SVGBackend;
 use plotters_backend::{
     BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind,
@@ -105,10 +105,9 @@ impl DrawingBackend for Web<'_> {
             Web::Canvas(b) => b
                 .estimate_text_size(text, style)
                 .map_err(lift(WebError::Canvas)),
-            Web::Svg { measure, .. } => {
-                measure.set_font(&css_font(style));
-                Ok(super::measure(measure, text, style))
-            }
+            Web::Svg { measure, .. } => Ok(super::measure(measure, text, style, |font| {
+                measure.set_font(&font)
+            })),
         }
     }
 }
