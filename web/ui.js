@@ -313,13 +313,27 @@ export function showValue(control, value) {
   setAttr(control.range, 'aria-valuetext', `${control.param.label} ${shown}${unit}`);
 }
 
-/** Writes readouts ([{key, text, data_value}]) into their elements. */
+/** Each readout's value element (its `dd`), found once: a readout is written every frame. */
+const valueOf = new WeakMap();
+
+/** Stands for a readout's text in the provisional label's message (a private-use character). */
+const TEXT = '\uE000';
+
+/**
+ * Writes readouts ([{key, text, data_value}]) into their elements; those in `provisional`
+ * get the provisional label ("0.012 (provisional)"), formatted once per call rather than once
+ * per readout (each is a call into the module's message formatting, seven a frame while
+ * integrators' sliders move).
+ */
 export function showReadouts(elements, readouts, provisional = new Set()) {
+  const label = provisional.size > 0 ? t('provisional', { value: TEXT }).split(TEXT) : null;
   for (const r of readouts) {
     const item = elements.get(r.key);
     if (!item) continue;
     setAttr(item, 'data-value', r.data_value);
-    setText(item.querySelector('dd'), provisional.has(r.key) ? t('provisional', { value: r.text }) : r.text);
+    let dd = valueOf.get(item);
+    if (!dd) valueOf.set(item, (dd = item.querySelector('dd')));
+    setText(dd, label && provisional.has(r.key) ? label.join(r.text) : r.text);
   }
 }
 
