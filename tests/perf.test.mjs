@@ -227,6 +227,41 @@ test('a held drag draws the same pixels from the kept static layer as a fresh dr
   await context.close();
 });
 
+test('a window resized while a slider is held gets its plots redrawn at their new size on the next move', async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=resonance&zeta=0.2`, { viewport: { width: 1280, height: 800 } });
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
+  await drawn(page);
+  const frames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  // Each plot in view: its bitmap's size against its box's (device pixels).
+  const sizes = () => page.evaluate(() => [...document.querySelectorAll('canvas[data-plot]')]
+    .filter((c) => c.getBoundingClientRect().top < innerHeight)
+    .map((c) => ({ key: c.dataset.plot, bitmap: [c.width, c.height], box: [Math.round(c.clientWidth * devicePixelRatio), Math.round(c.clientHeight * devicePixelRatio)] })));
+  const box = await page.locator('#p-zeta').boundingBox();
+  const y = box.y + box.height / 2;
+  const move = async (f) => {
+    const old = await readout(page, 'Q');
+    await page.mouse.move(box.x + box.width * f, y);
+    await page.waitForFunction((o) => document.querySelector('[data-readout="Q"]').dataset.value !== o, old);
+    await frames();
+  };
+  await page.mouse.move(box.x + box.width * 0.57, y);
+  await page.mouse.down();
+  await move(0.6);
+  await move(0.65);
+  const held = await sizes();
+  assert.ok(held.length > 0 && held.every((p) => p.bitmap.join() === p.box.join()), JSON.stringify(held));
+  // Still held: the window narrows, and the plots' boxes with it.
+  await page.setViewportSize({ width: 1100, height: 800 });
+  await frames();
+  await move(0.7);
+  const after = await sizes();
+  assert.ok(after.some((p, i) => p.box.join() !== held[i]?.box.join()), `some plot's box changed: ${JSON.stringify(after)}`);
+  assert.ok(after.every((p) => p.bitmap.join() === p.box.join()), `every plot in view drawn at its box's size: ${JSON.stringify(after)}`);
+  await page.mouse.up();
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 /**
  * Whether an integrators readout equals the recorded one: DP45's controller and the fitted
  * orders depend on the last bits of powf, exp and cos, which differ between native code and

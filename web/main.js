@@ -60,6 +60,10 @@ const app = {
   sound: { enabled: false, play() {} },
   dragging: false,
   layoutDirty: true,
+  /** A canvas's box may have changed size since sizeCanvases last read them (see there). */
+  sizesDirty: true,
+  /** Tells of canvas boxes changing size (observeCanvasSizes). */
+  canvasSizes: null,
   /** Counts changes of the demo's values from any source (controls, reset, a click on a
    * plot, the host page, a new demo): computeBehind starts again when it moves. */
   revision: 0,
@@ -232,6 +236,7 @@ async function reinstantiate() {
 
 function attachCanvases() {
   app.lastSize.clear();
+  observeCanvasSizes();
   for (const key of app.view.shownPlots) app.session.attach(key, app.view.canvases.get(key));
   if (app.view.animation) app.session.attach('schematic', app.view.animation.canvas);
   observeVisibility();
@@ -477,8 +482,24 @@ function sizeCanvases() {
   // (and a resized canvas is cleared and drawn whole). It is laid out on release.
   if (app.layoutDirty && !app.dragging) layoutStage();
   const dpr = window.devicePixelRatio || 1;
+  // Held, the boxes keep their sizes unless an observer says otherwise, and reading them
+  // would lay out what the input just changed (the slider, its number) a second time in
+  // the frame: the readouts this frame writes need the layout done again anyway.
+  if (app.dragging && !app.sizesDirty && app.sizedFor === dpr) return dpr;
+  app.sizesDirty = false;
+  app.sizedFor = dpr;
   for (const [canvas, key] of sizedCanvases()) fit(canvas, key, dpr);
   return dpr;
+}
+
+/** Watches every canvas's box: a change marks the sizes to be read again (sizeCanvases). */
+function observeCanvasSizes() {
+  app.sizesDirty = true;
+  app.canvasSizes?.disconnect();
+  app.canvasSizes = new ResizeObserver(() => {
+    app.sizesDirty = true;
+  });
+  for (const [canvas] of sizedCanvases()) app.canvasSizes.observe(canvas);
 }
 
 /** Every canvas sized to its box, with its size key: each plot, its overlay, the schematic. */
@@ -620,17 +641,27 @@ function drawCursors(dpr) {
   }
 }
 
-/** Marks readouts and plots drawn from a coarse study while the full one runs (issue 13). */
+/** The provisional keys each view last marked (markProvisional), joined. */
+const provisionalMarked = new WeakMap();
+
+/**
+ * Marks readouts and plots drawn from a coarse study while the full one runs (issue 13);
+ * the marks are written when the set changes (each frame of a drag gives the same one).
+ */
 function markProvisional(keys) {
-  const now = new Set(keys);
-  // The readouts' text says so too (showReadouts).
-  for (const [key, item] of app.view.readouts) item.toggleAttribute('data-provisional', now.has(key));
-  for (const fig of document.querySelectorAll('[data-plot-wrap]')) {
-    const on = now.has(fig.dataset.plotWrap);
-    fig.toggleAttribute('data-provisional', on);
-    setAttr(fig, 'aria-busy', String(on));
+  const joined = keys.join(' ');
+  if (provisionalMarked.get(app.view) !== joined) {
+    provisionalMarked.set(app.view, joined);
+    const now = new Set(keys);
+    // The readouts' text says so too (showReadouts).
+    for (const [key, item] of app.view.readouts) item.toggleAttribute('data-provisional', now.has(key));
+    for (const fig of document.querySelectorAll('[data-plot-wrap]')) {
+      const on = now.has(fig.dataset.plotWrap);
+      fig.toggleAttribute('data-provisional', on);
+      setAttr(fig, 'aria-busy', String(on));
+    }
   }
-  if (now.size) scheduleRefine();
+  if (keys.length) scheduleRefine();
 }
 
 /** Runs the pending full study in short slices between frames; redraws when it is done. */
