@@ -89,15 +89,23 @@ impl HtmlCanvas {
     /// Draws on `canvas`; `None` if it has no 2D context.
     pub fn new(canvas: &HtmlCanvasElement) -> Option<Self> {
         let context = super::context_of(canvas)?;
+        Some(Self::with_context(canvas.clone(), context))
+    }
+
+    /// Draws on `canvas` through `context`, its 2D context.
+    pub(super) fn with_context(
+        canvas: HtmlCanvasElement,
+        context: CanvasRenderingContext2d,
+    ) -> Self {
         // Solid until told otherwise, even after a drawing that failed half-way.
         set_line_dash(&context, &[]);
-        Some(Self {
-            canvas: canvas.clone(),
+        Self {
+            canvas,
             context,
             set: Set::default(),
             font: RefCell::default(),
             muted: Rc::default(),
-        })
+        }
     }
 
     fn stroke_style(&mut self, style: &impl BackendStyle) {

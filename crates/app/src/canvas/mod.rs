@@ -44,10 +44,33 @@ pub fn direct(backend: &Canvas) -> Option<CanvasDirect> {
 
 /// Draws on `canvas`; `None` if it has no 2D context.
 pub fn on(canvas: &HtmlCanvasElement) -> Option<Canvas> {
-    let backend = HtmlCanvas::new(canvas)?;
+    Some(on_surface(&Surface::of(canvas.clone())?))
+}
+
+/// A page canvas with its 2D context, taken once: a session draws on the same canvases
+/// every frame, and `getContext` is a call into JavaScript (about 0.4 ms a frame at 4×
+/// CPU slowdown for one plot, profiled 2026-12-01). Resizing a canvas resets its context's
+/// state but keeps the object.
+pub struct Surface {
+    /// The canvas.
+    pub canvas: HtmlCanvasElement,
+    context: CanvasRenderingContext2d,
+}
+
+impl Surface {
+    /// `canvas` and its 2D context; `None` if it has none (another kind was taken).
+    pub fn of(canvas: HtmlCanvasElement) -> Option<Self> {
+        let context = context_of(&canvas)?;
+        Some(Self { canvas, context })
+    }
+}
+
+/// Draws on `surface`.
+pub fn on_surface(surface: &Surface) -> Canvas {
+    let backend = HtmlCanvas::with_context(surface.canvas.clone(), surface.context.clone());
     #[cfg(not(feature = "first"))]
     let backend = Web::Canvas(backend);
-    Some(backend)
+    backend
 }
 
 /// The CSS font shorthand of `style`: `"<style> <size>px <family>"`.

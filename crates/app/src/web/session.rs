@@ -6,6 +6,7 @@ use super::draw::{device_scale, Drawn};
 use super::result::{SetResult, StaleResult, UpdateResult};
 use super::translate::translate_spec;
 use super::{js_err, theme, to_js};
+use crate::canvas::Surface;
 use crate::demos::{self, Demo, Frame};
 use crate::figure::Figure;
 use crate::params::{resolve_query, Params};
@@ -21,13 +22,13 @@ pub struct Session {
     pub(super) demo: Box<dyn Demo>,
     pub(super) spec: DemoSpec,
     pub(super) params: Params,
-    pub(super) canvases: Vec<Option<HtmlCanvasElement>>,
+    pub(super) canvases: Vec<Option<Surface>>,
     /// Whether each plot's canvas is on screen, as the page observes it. An update draws
     /// only those; the others wait, [`stale`](Self::stale), for [`Session::draw_stale`].
     pub(super) visible: Vec<bool>,
     /// Plots whose canvas shows an older frame than the last update's.
     pub(super) stale: Vec<bool>,
-    pub(super) schematic_canvas: Option<HtmlCanvasElement>,
+    pub(super) schematic_canvas: Option<Surface>,
     /// The last update's readouts and time span (its figures are in `figures`).
     pub(super) frame: Option<Frame>,
     /// The last update's figures, each built when it is first drawn or asked for (see
@@ -58,7 +59,7 @@ impl Session {
             demo,
             spec,
             params,
-            canvases: vec![None; n],
+            canvases: std::iter::repeat_with(|| None).take(n).collect(),
             visible: vec![true; n],
             stale: vec![false; n],
             schematic_canvas: None,
@@ -105,13 +106,13 @@ impl Session {
     /// Gives the canvas for plot `key` (or `"schematic"`); returns whether the key exists.
     pub fn attach(&mut self, key: &str, canvas: HtmlCanvasElement) -> bool {
         if key == "schematic" && self.spec.schematic {
-            self.schematic_canvas = Some(canvas);
+            self.schematic_canvas = Surface::of(canvas);
             return true;
         }
         match self.plot_index(key) {
             Some(i) => {
                 if let Some(slot) = self.canvases.get_mut(i) {
-                    *slot = Some(canvas);
+                    *slot = Surface::of(canvas);
                 }
                 true
             }
@@ -203,8 +204,8 @@ impl Session {
     /// canvas that keeps each attached plot's static layer (see `canvas::prepare`).
     #[wasm_bindgen(js_name = prepareLayers)]
     pub fn prepare_layers(&self) {
-        for canvas in self.canvases.iter().flatten() {
-            crate::canvas::prepare(canvas);
+        for surface in self.canvases.iter().flatten() {
+            crate::canvas::prepare(&surface.canvas);
         }
     }
 
@@ -224,10 +225,9 @@ impl Session {
         ) else {
             return Ok(String::new());
         };
-        if let Some(backend) = crate::canvas::on(canvas) {
-            let scale = device_scale(scale, 4.0);
-            render(&backend.into_drawing_area(), &fig, &theme(dark), scale).map_err(js_err)?;
-        }
+        let backend = crate::canvas::on_surface(canvas);
+        let scale = device_scale(scale, 4.0);
+        render(&backend.into_drawing_area(), &fig, &theme(dark), scale).map_err(js_err)?;
         Ok(fig.description)
     }
 
