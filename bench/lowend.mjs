@@ -90,7 +90,7 @@ async function main() {
   console.log('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |');
   for (const r of rows) {
     const range = RUNS > 1 ? ` [${r.p95Range.map((v) => v.toFixed(1)).join('–')}]` : '';
-    console.log(`| ${r.id} | ${r.sliders} | ${r.n} | ${r.p50.toFixed(1)} | ${r.p95.toFixed(1)}${range} | ${r.longest.toFixed(0)} | ${r.switchTask.toFixed(0)} | ${r.firstPlot.toFixed(0)} | ${(r.bytes / 1000).toFixed(0)} | ${r.secondPlot.toFixed(0)} | ${(r.secondBytes / 1000).toFixed(0)} |`);
+    console.log(`| ${r.id} | ${r.sliders} | ${r.n} | ${r.p50.toFixed(1)} | ${r.p95.toFixed(1)}${range} | ${r.longest.toFixed(0)} | ${r.switchTask.toFixed(0)} | ${r.firstPlot.toFixed(0)} | ${(r.bytes / 1000).toFixed(1)} | ${r.secondPlot.toFixed(0)} | ${(r.secondBytes / 1000).toFixed(0)} |`);
   }
 }
 

@@ -68,6 +68,21 @@ test('the deferred modules are requested after the first plot, and Share opens a
   }
 });
 
+test('the icon is in the page itself (no request before the first plot) and is the manifest\'s icon.svg', async () => {
+  const { page, errors, context } = await open(browser, server.url);
+  await page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0);
+  const href = await page.$eval('link[rel=icon]', (l) => l.getAttribute('href'));
+  const prefix = 'data:image/svg+xml,';
+  assert.ok(href.startsWith(prefix), href.slice(0, 40));
+  const file = await (await fetch(new URL('web/icon.svg', server.url))).text();
+  // The same drawing: the data URL is the file with its double quotes written as single ones.
+  assert.equal(decodeURIComponent(href.slice(prefix.length)), file.trim().replaceAll('"', "'"));
+  const requested = await page.evaluate(() => performance.getEntriesByType('resource').map((e) => e.name).filter((n) => n.includes('icon')));
+  assert.deepEqual(requested, []);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('a module that cannot be downloaded is reported on the page, and the next click fetches it again', async () => {
   let blocked = true;
   const before = (context) => context.route('**/web/share.js', (route) => (blocked ? route.abort('internetdisconnected') : route.continue()));
