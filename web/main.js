@@ -64,6 +64,8 @@ const app = {
   sizesDirty: true,
   /** Tells of canvas boxes changing size (observeCanvasSizes). */
   canvasSizes: null,
+  /** The device pixel ratio sizeCanvases last read the boxes at. */
+  sizedFor: 0,
   /** Counts changes of the demo's values from any source (controls, reset, a click on a
    * plot, the host page, a new demo): computeBehind starts again when it moves. */
   revision: 0,

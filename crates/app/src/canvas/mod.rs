@@ -44,7 +44,7 @@ pub fn direct(backend: &Canvas) -> Option<CanvasDirect> {
 
 /// Draws on `canvas`; `None` if it has no 2D context.
 pub fn on(canvas: &HtmlCanvasElement) -> Option<Canvas> {
-    Some(on_surface(&Surface::of(canvas.clone())?))
+    on_surface(&Surface::of(canvas.clone()))
 }
 
 /// A page canvas with its 2D context, taken once: a session draws on the same canvases
@@ -54,23 +54,26 @@ pub fn on(canvas: &HtmlCanvasElement) -> Option<Canvas> {
 pub struct Surface {
     /// The canvas.
     pub canvas: HtmlCanvasElement,
-    context: CanvasRenderingContext2d,
+    /// Its 2D context; `None` if it has none (another kind was taken): the canvas is still
+    /// the page's, its plot built and described, only not drawn.
+    context: Option<CanvasRenderingContext2d>,
 }
 
 impl Surface {
-    /// `canvas` and its 2D context; `None` if it has none (another kind was taken).
-    pub fn of(canvas: HtmlCanvasElement) -> Option<Self> {
-        let context = context_of(&canvas)?;
-        Some(Self { canvas, context })
+    /// `canvas` and its 2D context, if it has one.
+    pub fn of(canvas: HtmlCanvasElement) -> Self {
+        let context = context_of(&canvas);
+        Self { canvas, context }
     }
 }
 
-/// Draws on `surface`.
-pub fn on_surface(surface: &Surface) -> Canvas {
-    let backend = HtmlCanvas::with_context(surface.canvas.clone(), surface.context.clone());
+/// Draws on `surface`; `None` if its canvas has no 2D context.
+pub fn on_surface(surface: &Surface) -> Option<Canvas> {
+    let context = surface.context.clone()?;
+    let backend = HtmlCanvas::with_context(surface.canvas.clone(), context);
     #[cfg(not(feature = "first"))]
     let backend = Web::Canvas(backend);
-    backend
+    Some(backend)
 }
 
 /// The CSS font shorthand of `style`: `"<style> <size>px <family>"`.

@@ -89,7 +89,7 @@ impl Session {
             }
             let Some((fig, backend)) = fig
                 .as_ref()
-                .zip(canvas.as_ref().map(crate::canvas::on_surface))
+                .zip(canvas.as_ref().and_then(crate::canvas::on_surface))
             else {
                 continue;
             };

@@ -106,13 +106,13 @@ impl Session {
     /// Gives the canvas for plot `key` (or `"schematic"`); returns whether the key exists.
     pub fn attach(&mut self, key: &str, canvas: HtmlCanvasElement) -> bool {
         if key == "schematic" && self.spec.schematic {
-            self.schematic_canvas = Surface::of(canvas);
+            self.schematic_canvas = Some(Surface::of(canvas));
             return true;
         }
         match self.plot_index(key) {
             Some(i) => {
                 if let Some(slot) = self.canvases.get_mut(i) {
-                    *slot = Surface::of(canvas);
+                    *slot = Some(Surface::of(canvas));
                 }
                 true
             }
@@ -225,9 +225,10 @@ impl Session {
         ) else {
             return Ok(String::new());
         };
-        let backend = crate::canvas::on_surface(canvas);
-        let scale = device_scale(scale, 4.0);
-        render(&backend.into_drawing_area(), &fig, &theme(dark), scale).map_err(js_err)?;
+        if let Some(backend) = crate::canvas::on_surface(canvas) {
+            let scale = device_scale(scale, 4.0);
+            render(&backend.into_drawing_area(), &fig, &theme(dark), scale).map_err(js_err)?;
+        }
         Ok(fig.description)
     }
 
