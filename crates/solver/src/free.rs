@@ -143,6 +143,46 @@ impl FreeResponse {
             *o = self.displacement(ti);
         }
     }
+
+    /// `(t_i, x(t_i))` at the `n` times `t_i = start + i·Δ`, `Δ = (end − start)/(n − 1)`
+    /// ([`linspace`]'s), by the exact step from one to the next instead of the closed form
+    /// at each: `[x, x']_{i+1} = Φ·[x, x']_i` with the transition matrix
+    ///
+    /// `Φ = [[C + α·S, S], [−ω_n²·S, C − α·S]]`, `(C, S)` the damped basis at `Δ` (module
+    /// docs), which is the closed form's own map from one state to the state `Δ` later.
+    ///
+    /// One basis evaluation (an `exp` and a `sin_cos`) instead of one per point, then four
+    /// products per point: a redraw samples several curves of hundreds of points each per
+    /// frame (about 1 µs a point in the browser at 4× CPU slowdown). Each step rounds once
+    /// more, so the error grows with the number of points: against the closed form the
+    /// points agree within `2·(n + 8)·ε` of the curve's largest `|x|` (`ε` = 2.2e-16;
+    /// 2.3e-13 of it at 500 points), tested across the regimes, growing ones included.
+    /// Units as [`FreeResponse::displacement`].
+    pub fn trace(&self, (start, end): (f64, f64), n: usize) -> Vec<(f64, f64)> {
+        let times = linspace(start, end, n);
+        let Some(&t0) = times.first() else {
+            return Vec::new();
+        };
+        let step = if n > 1 {
+            (end - start) / (n - 1) as f64
+        } else {
+            0.0
+        };
+        let (c, s) = damped_basis(self.alpha, self.d, step);
+        let phi = [[c + self.alpha * s, s], [-self.wn2 * s, c - self.alpha * s]];
+        let mut z = self.state(t0);
+        times
+            .into_iter()
+            .map(|t| {
+                let x = z[0];
+                z = [
+                    phi[0][0] * z[0] + phi[0][1] * z[1],
+                    phi[1][0] * z[0] + phi[1][1] * z[1],
+                ];
+                (t, x)
+            })
+            .collect()
+    }
 }
 
 /// `n ≥ 2` evenly spaced points from `start` to `end` inclusive (`n < 2` gives `[start]`
@@ -187,6 +227,32 @@ mod tests {
         // Neutral and divergent systems.
         assert!(residual(1.0, 1.0, 0.0, 1.0, 1.0, 0.8) < 1e-12);
         assert!(residual(1.0, 1.0, -4.0, 1.0, 1.0, 0.8) < 1e-12);
+    }
+
+    #[test]
+    fn a_trace_follows_the_closed_form_in_every_regime() {
+        let wn = 8.944_271_909_999_16;
+        let zetas = [
+            -0.3, -0.01, 0.0, 1e-9, 0.05, 0.3, 0.999_999, 1.0, 1.000_001, 2.0, 1e3,
+        ];
+        for &zeta in &zetas {
+            let r = FreeResponse::new(SecondOrder::from_natural(wn, zeta).unwrap(), 0.06, -0.4);
+            for &(range, n) in &[((0.0, 3.0), 500), ((0.0, 3.0), 10_000), ((0.25, 1.5), 2)] {
+                let traced = r.trace(range, n);
+                assert_eq!(traced.len(), n);
+                let biggest = traced.iter().fold(0.0f64, |m, p| m.max(p.1.abs()));
+                // Measured: at most 0.62·n·ε for n ≥ 500, 13·ε for one step.
+                let bound = 2.0 * (n as f64 + 8.0) * f64::EPSILON * biggest;
+                for (&(t, x), tk) in traced.iter().zip(linspace(range.0, range.1, n)) {
+                    assert_eq!(t, tk);
+                    let err = (x - r.displacement(t)).abs();
+                    assert!(err <= bound, "ζ={zeta} n={n} t={t}: off by {err:e}");
+                }
+            }
+        }
+        let r = FreeResponse::new(SecondOrder::from_natural(wn, 0.3).unwrap(), 1.0, 0.0);
+        assert!(r.trace((0.0, 1.0), 0).is_empty());
+        assert_eq!(r.trace((0.5, 1.0), 1), vec![(0.5, r.displacement(0.5))]);
     }
 
     #[test]

@@ -4,7 +4,7 @@
 use super::{text, DesignSpace, Results, Selected, KILO, P, X0};
 use crate::figure::{finite_extent, padded, Axis, Figure, Heatmap, LineStyle, Marker};
 use crate::format::{shortest, si};
-use crate::plot::{curve, Ink};
+use crate::plot::Ink;
 use crate::t;
 use zeta_solver::design::map::{lowest, MapColours};
 use zeta_solver::design::sweep::{iso_zeta_line_into, iso_zeta_span};
@@ -196,7 +196,7 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
     };
     let release = |sys| {
         let resp = FreeResponse::new(sys, X0, 0.0);
-        curve((0.0, t_end), SAMPLES, move |t| resp.displacement(t))
+        resp.trace((0.0, t_end), SAMPLES)
     };
     let h = r.band.fraction() * X0;
     let band = LineStyle::dotted(Ink::Black, 1.2);

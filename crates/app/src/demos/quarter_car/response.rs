@@ -4,7 +4,7 @@
 use super::{text, Results};
 use crate::figure::{finite_extent, Axis, Figure, LineStyle, Marker, MarkerShape, Series};
 use crate::format::si;
-use crate::plot::{curve, Ink};
+use crate::plot::Ink;
 use crate::t;
 use zeta_solver::grid::linspace;
 use zeta_solver::{FreeResponse, SecondOrder};
@@ -34,7 +34,10 @@ pub(super) fn response(r: &Results) -> Figure {
     let (car, t_end) = (&r.car, r.t_end);
     let sample = |sys: &SecondOrder| -> Vec<(f64, f64)> {
         let resp = FreeResponse::new(*sys, car.x0, 0.0);
-        curve((0.0, t_end), SAMPLES, |t| MM * resp.displacement(t))
+        resp.trace((0.0, t_end), SAMPLES)
+            .into_iter()
+            .map(|(t, x)| (t, MM * x))
+            .collect()
     };
     let mut series = Vec::with_capacity(9);
     let mut markers = Vec::new();

@@ -16,7 +16,7 @@ pub(super) const POLES_TITLE: &str = "Poles in the s-plane";
 
 /// x(t) over the window, with the envelope ±A·e^(−ζωₙt) when the response oscillates.
 pub(super) fn response(r: &Results) -> Figure {
-    let x = curve((0.0, r.t_end), SAMPLES, |t| r.response.displacement(t));
+    let x = r.response.trace((0.0, r.t_end), SAMPLES);
     let envelope = r.response.envelope_amplitude().map(|_| {
         curve((0.0, r.t_end), SAMPLES, |t| {
             r.response.envelope(t).unwrap_or(0.0)

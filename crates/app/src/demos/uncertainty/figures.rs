@@ -3,7 +3,7 @@
 
 use super::{text, HistOf, Results, System, P};
 use crate::figure::{finite_extent, padded, Axis, Figure, LineStyle, Marker};
-use crate::plot::{curve, Ink};
+use crate::plot::Ink;
 use crate::t;
 use zeta_solver::design::monte_carlo::{histogram_into, McSamples};
 use zeta_solver::grid::linspace;
@@ -64,7 +64,7 @@ pub(super) fn band(p: &P, r: &Results) -> Figure {
         let resp = FreeResponse::new(sys, x0, 0.0);
         fig = fig.with_line(
             text::band_label(member),
-            curve((0.0, t_end), SAMPLES, |t| resp.displacement(t)),
+            resp.trace((0.0, t_end), SAMPLES),
             style,
         );
         if let Some(t) = member.settling_time.filter(|&t| t <= t_end) {

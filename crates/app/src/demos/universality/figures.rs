@@ -4,9 +4,10 @@
 use super::params::Kind;
 use super::{drawings, machine, text, One, Results};
 use crate::figure::{Axis, Figure, LineStyle};
-use crate::plot::{curve, fit_range, Ink};
+use crate::plot::{fit_range, Ink};
 use crate::schematic::{mass_spring_damper, rlc_loop, MassLabels};
 use crate::t;
+use zeta_solver::grid::linspace;
 use zeta_solver::{FreeResponse, SecondOrder};
 
 /// Samples per curve on the normalised axis, and at least on the time axis.
@@ -51,7 +52,13 @@ pub(super) fn normalised(r: &Results) -> Figure {
         r.m.iter()
             .map(|one| {
                 let (resp, wn) = (released(one), one.wn());
-                curve((0.0, r.tau_end), SAMPLES, |tau| resp.displacement(tau / wn))
+                // On its own clock: τ = ωₙt.
+                let taus = linspace(0.0, r.tau_end, SAMPLES);
+                let traced = resp.trace((0.0, r.tau_end / wn), SAMPLES);
+                taus.into_iter()
+                    .zip(traced)
+                    .map(|(tau, (_, y))| (tau, y))
+                    .collect()
             })
             .collect();
     let gap = curves[0]
@@ -63,7 +70,7 @@ pub(super) fn normalised(r: &Results) -> Figure {
         .ok()
         .map(|sys| {
             let resp = FreeResponse::new(sys, 1.0, 0.0);
-            curve((0.0, r.tau_end), SAMPLES, |tau| resp.displacement(tau))
+            resp.trace((0.0, r.tau_end), SAMPLES)
         })
         .unwrap_or_default();
     let y = response_axis(curves.iter().flatten().map(|p| p.1));
@@ -97,7 +104,7 @@ pub(super) fn realtime(r: &Results) -> Figure {
         let periods = one.wn() * r.t_end / std::f64::consts::TAU;
         let n = ((20.0 * periods).ceil() as usize).clamp(SAMPLES, MAX_SAMPLES);
         let resp = released(one);
-        let points = curve((0.0, r.t_end), n, |t| resp.displacement(t));
+        let points = resp.trace((0.0, r.t_end), n);
         values.extend(points.iter().map(|p| p.1));
         fig = fig.with_line(legend(["A", "B"][i], one), points, STYLES[i]);
     }
