@@ -60,6 +60,67 @@ fn text_is_measured_in_the_font_and_text_asked_for() {
     assert!(width("Wwww 1234", &small) > s);
 }
 
+/// A canvas's backends remember what its 2D context holds from one drawing to the next
+/// (`canvas::Surface`), and forget it whenever something else may have changed it: a
+/// resize (even to the same size), or another backend's drawing on the same canvas. Each
+/// case draws text in one font, disturbs the context, and draws again: the context must
+/// hold the font (and the solid line) the second drawing asked for.
+#[wasm_bindgen_test]
+fn a_canvas_remembers_its_drawing_state_only_while_the_context_keeps_it() {
+    use plotters::prelude::*;
+    use plotters_backend::DrawingBackend;
+    use zeta_app::canvas::{on_surface, HtmlCanvas, Surface};
+    let c = canvas(200, 100);
+    let ctx: CanvasRenderingContext2d = c.get_context("2d").unwrap().unwrap().dyn_into().unwrap();
+    let surface = Surface::of(c.clone());
+    let draw = || {
+        let mut b = on_surface(&surface).unwrap();
+        let style = ("sans-serif", 17.0).into_font().color(&BLACK);
+        b.draw_text("x", &style, (5, 5)).unwrap();
+        b.draw_line((0, 50), (200, 50), &BLACK.stroke_width(1))
+            .unwrap();
+    };
+    let font = || ctx.font();
+    let dashed = || ctx.get_line_dash().length() > 0;
+    draw();
+    assert_eq!(font(), "17px sans-serif");
+
+    // Kept: the next frame's backend does not set the font again. (Shown by a font put on
+    // behind its back, which it then leaves alone.)
+    ctx.set_font("9px serif");
+    draw();
+    assert_eq!(
+        font(),
+        "9px serif",
+        "the memory was not kept between drawings"
+    );
+
+    // A resize resets the context: the memory is dropped with it.
+    c.set_width(201);
+    draw();
+    assert_eq!(font(), "17px sans-serif", "after a resize");
+    // Even to the same size.
+    c.set_width(c.width());
+    assert_eq!(font(), "10px sans-serif");
+    draw();
+    assert_eq!(font(), "17px sans-serif", "after a resize to the same size");
+
+    // Another backend draws on the canvas (a PNG export, a test): its font and dash stay
+    // on the context, and the surface's next backend must not trust its own memory.
+    {
+        let mut other = HtmlCanvas::new(&c).unwrap();
+        other
+            .draw_text("y", &("serif", 30.0).into_font().color(&BLACK), (5, 5))
+            .unwrap();
+        ctx.set_line_dash(&js_sys::Array::of2(&4.0.into(), &4.0.into()))
+            .unwrap();
+    }
+    draw();
+    assert_eq!(font(), "17px sans-serif", "after another backend drew");
+    // Every drawing starts solid, whatever dash was left on the context.
+    assert!(!dashed(), "a dash left by another drawing");
+}
+
 #[wasm_bindgen_test]
 fn regimes_draws_its_curve_and_poles_onto_canvases() {
     let response = canvas(760, 400);

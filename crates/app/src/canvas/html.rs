@@ -8,8 +8,12 @@
 //! colour strings alone were about a sixth of drawing a plot. The context keeps its state
 //! between calls, so the backend remembers what it last set and skips the repeats.
 //!
-//! A backend is made per drawing (`Session::update` makes one per plot per frame), and
-//! resizing a canvas resets its context, so the memory starts empty each time.
+//! A backend is made per drawing (`Session::update` makes one per plot per frame), so the
+//! memory ([`Memory`]) lives with the canvas (`canvas::Surface`) across frames: a held drag
+//! sets again only what differs from the end of the frame before. Anything that resets
+//! the context's state (resizing its canvas, even to the same size; a lost and restored
+//! context; another backend's drawing on it) must empty the memory; the context's
+//! `shadowOffsetX` carries the memory's stamp to tell (see [`Memory::claim`]).
 
 use super::direct::{set_line_dash, CanvasDirect};
 use crate::render::corners;
@@ -18,7 +22,7 @@ use plotters_backend::{
     BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind,
     FontTransform,
 };
-use std::cell::{Cell, RefCell};
+use std::cell::Cell;
 use std::rc::Rc;
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
@@ -65,22 +69,73 @@ impl Ink {
 }
 
 /// What the context was last given, per piece of state (`None`: not yet set by us).
-#[derive(Debug, Default)]
+#[derive(Debug, Default, Clone, Copy)]
 struct Set {
     stroke: Option<Ink>,
     fill: Option<Ink>,
     line_width: Option<u32>,
     align: Option<&'static str>,
     baseline: Option<&'static str>,
+    /// The CSS font shorthand, as its hash (`canvas::width_hash`; two fonts of a session
+    /// share one with odds below 10⁻¹⁸).
+    font: Option<u64>,
+}
+
+thread_local! {
+    /// The last stamp given to a [`Memory`].
+    static STAMPS: Cell<u32> = const { Cell::new(0) };
+}
+
+/// What a canvas's 2D context was last given by this crate's backends ([`Set`]), kept
+/// from one drawing to the next (see the module docs), and the stamp that says the context
+/// still holds it.
+#[derive(Debug)]
+pub struct Memory {
+    /// This memory's `shadowOffsetX`, unique within the module instance (1, 2, …; the
+    /// context's own is 0). A shadow is drawn only in a colour that is not transparent,
+    /// and no backend sets one (plotters has no shadows), so the offset changes no pixel.
+    stamp: f64,
+    set: Cell<Set>,
+}
+
+impl Memory {
+    /// An empty memory with a stamp of its own.
+    pub fn new() -> Rc<Self> {
+        let n = STAMPS.with(|s| {
+            s.set(s.get().wrapping_add(1).max(1));
+            s.get()
+        });
+        Rc::new(Memory {
+            stamp: f64::from(n),
+            set: Cell::default(),
+        })
+    }
+
+    /// Makes this memory the one `context` answers to: if the context does not carry its
+    /// stamp, whatever reset it or drew on it since, the memory is emptied and the stamp
+    /// put on. One property read per drawing. A first module (feature `first`) draws the
+    /// first frames only and is within its download budget by a few hundred bytes: its
+    /// memories last one drawing, and it takes the stamp off, so the full module's
+    /// memories, which a first module's drawing may follow while it takes over, are
+    /// emptied after it.
+    fn claim(&self, context: &CanvasRenderingContext2d) {
+        if cfg!(feature = "first") {
+            self.set.take();
+            context.set_shadow_offset_x(0.0);
+        } else if context.shadow_offset_x() != self.stamp {
+            self.set.take();
+            context.set_shadow_offset_x(self.stamp);
+        }
+    }
 }
 
 /// Draws onto an HTML canvas; see the module docs.
 pub struct HtmlCanvas {
     canvas: HtmlCanvasElement,
     context: CanvasRenderingContext2d,
-    set: Set,
-    /// The font last set; in a cell because plotters measures text through `&self`.
-    font: RefCell<String>,
+    /// What the context holds; in a cell because plotters measures text through `&self`,
+    /// shared with the canvas's later backends.
+    memory: Rc<Memory>,
     /// Drawing nothing (see `render::Direct::mute`); shared with [`CanvasDirect`].
     muted: Rc<Cell<bool>>,
 }
@@ -89,36 +144,40 @@ impl HtmlCanvas {
     /// Draws on `canvas`; `None` if it has no 2D context.
     pub fn new(canvas: &HtmlCanvasElement) -> Option<Self> {
         let context = super::context_of(canvas)?;
-        Some(Self::with_context(canvas.clone(), context))
+        Some(Self::with_context(canvas.clone(), context, Memory::new()))
     }
 
-    /// Draws on `canvas` through `context`, its 2D context.
+    /// Draws on `canvas` through `context`, its 2D context, which `memory` (the canvas's,
+    /// kept between drawings) may remember.
     pub(super) fn with_context(
         canvas: HtmlCanvasElement,
         context: CanvasRenderingContext2d,
+        memory: Rc<Memory>,
     ) -> Self {
+        memory.claim(&context);
         // Solid until told otherwise, even after a drawing that failed half-way.
         set_line_dash(&context, &[]);
         Self {
             canvas,
             context,
-            set: Set::default(),
-            font: RefCell::default(),
+            memory,
             muted: Rc::default(),
         }
     }
 
     fn stroke_style(&mut self, style: &impl BackendStyle) {
         let ink = Ink::of(style.color());
-        if self.set.stroke != Some(ink) {
+        let mut set = self.memory.set.get();
+        if set.stroke != Some(ink) {
             self.context.set_stroke_style_str(&Ink::css(style.color()));
-            self.set.stroke = Some(ink);
+            set.stroke = Some(ink);
         }
         let width = style.stroke_width();
-        if self.set.line_width != Some(width) {
+        if set.line_width != Some(width) {
             self.context.set_line_width(f64::from(width));
-            self.set.line_width = Some(width);
+            set.line_width = Some(width);
         }
+        self.memory.set.set(set);
     }
 
     /// Sets the fill colour (`fill`) or the stroke colour and width of `style`; `false`,
@@ -136,9 +195,11 @@ impl HtmlCanvas {
 
     fn fill_style(&mut self, color: BackendColor) {
         let ink = Ink::of(color);
-        if self.set.fill != Some(ink) {
+        let mut set = self.memory.set.get();
+        if set.fill != Some(ink) {
             self.context.set_fill_style_str(&Ink::css(color));
-            self.set.fill = Some(ink);
+            set.fill = Some(ink);
+            self.memory.set.set(set);
         }
     }
 
@@ -149,10 +210,12 @@ impl HtmlCanvas {
 
     /// Makes `font` (a CSS font shorthand) the context's font, unless it is already.
     fn set_font(&self, font: String) {
-        let mut last = self.font.borrow_mut();
-        if *last != font {
+        let mut set = self.memory.set.get();
+        let hash = super::width_hash(&font, "");
+        if set.font != Some(hash) {
             self.context.set_font(&font);
-            *last = font;
+            set.font = Some(hash);
+            self.memory.set.set(set);
         }
     }
 
@@ -163,19 +226,21 @@ impl HtmlCanvas {
             HPos::Right => "end",
             HPos::Center => "center",
         };
-        if self.set.align != Some(align) {
+        let mut set = self.memory.set.get();
+        if set.align != Some(align) {
             self.context.set_text_align(align);
-            self.set.align = Some(align);
+            set.align = Some(align);
         }
         let baseline = match anchor.v_pos {
             VPos::Top => "top",
             VPos::Center => "middle",
             VPos::Bottom => "bottom",
         };
-        if self.set.baseline != Some(baseline) {
+        if set.baseline != Some(baseline) {
             self.context.set_text_baseline(baseline);
-            self.set.baseline = Some(baseline);
+            set.baseline = Some(baseline);
         }
+        self.memory.set.set(set);
     }
 
     /// What this canvas draws itself (dashes, stretched images), through a handle that

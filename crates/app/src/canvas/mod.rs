@@ -16,9 +16,10 @@ mod html;
 mod web;
 
 pub use direct::{prepare, CanvasDirect};
-pub use html::{CanvasError, HtmlCanvas};
+pub use html::{CanvasError, HtmlCanvas, Memory};
 use plotters_backend::BackendTextStyle;
 use std::cell::RefCell;
+use std::rc::Rc;
 use wasm_bindgen::JsCast;
 #[cfg(not(feature = "first"))]
 pub use web::{Web, WebError};
@@ -50,27 +51,34 @@ pub fn on(canvas: &HtmlCanvasElement) -> Option<Canvas> {
 /// A page canvas with its 2D context, taken once: a session draws on the same canvases
 /// every frame, and `getContext` is a call into JavaScript (about 0.4 ms a frame at 4×
 /// CPU slowdown for one plot, profiled 2026-12-01). Resizing a canvas resets its context's
-/// state but keeps the object.
+/// state but keeps the object; the memory of that state (see [`html::Memory`]) is kept
+/// here too, so each frame's backend sets only what differs from the frame before.
 pub struct Surface {
     /// The canvas.
     pub canvas: HtmlCanvasElement,
     /// Its 2D context; `None` if it has none (another kind was taken): the canvas is still
     /// the page's, its plot built and described, only not drawn.
     context: Option<CanvasRenderingContext2d>,
+    /// What the context was last given by this surface's backends.
+    memory: Rc<Memory>,
 }
 
 impl Surface {
     /// `canvas` and its 2D context, if it has one.
     pub fn of(canvas: HtmlCanvasElement) -> Self {
         let context = context_of(&canvas);
-        Self { canvas, context }
+        Self {
+            canvas,
+            context,
+            memory: Memory::new(),
+        }
     }
 }
 
 /// Draws on `surface`; `None` if its canvas has no 2D context.
 pub fn on_surface(surface: &Surface) -> Option<Canvas> {
     let context = surface.context.clone()?;
-    let backend = HtmlCanvas::with_context(surface.canvas.clone(), context);
+    let backend = HtmlCanvas::with_context(surface.canvas.clone(), context, surface.memory.clone());
     #[cfg(not(feature = "first"))]
     let backend = Web::Canvas(backend);
     Some(backend)
@@ -103,7 +111,7 @@ thread_local! {
 }
 
 /// FNV-1a (64-bit) of `font`, a NUL and `text`.
-fn width_hash(font: &str, text: &str) -> u64 {
+pub(super) fn width_hash(font: &str, text: &str) -> u64 {
     let bytes = font.bytes().chain(std::iter::once(0)).chain(text.bytes());
     bytes.fold(0xcbf2_9ce4_8422_2325, |h, b| {
         (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
