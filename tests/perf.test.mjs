@@ -306,6 +306,10 @@ test('integrators: a moved ζ shows a coarse convergence study marked provisiona
 test('a paused time cursor is on every time plot again once the plots out of view catch up', async () => {
   const phone = { viewport: { width: 360, height: 740 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true };
   const { page, errors, context } = await open(browser, `${server.url}?demo=quarter-car-2dof`, phone);
+  // Once the full module has taken over: a takeover between the scrub and the check below
+  // starts a session whose plots out of view are not drawn yet, so they have no cursor
+  // until they catch up (what the second half of this test checks).
+  await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: 10000 });
   await drawn(page);
   // Ink on each plot's overlay (where the cursor is drawn), by plot key.
   const cursors = () =>
