@@ -10,7 +10,9 @@
 // ZETA_RUNS=n measures each demo n times (one after another, n ≥ 1, default 1) and reports
 // each column's median over the runs, with the p95's range: on a noisy machine a single
 // run's p95 moves by several milliseconds.
+// ZETA_ROOT=dir measures the build in dir instead of dist/.
 // Usage: node bench/lowend.mjs [events-per-slider] [demo,demo…]   (after scripts/build.sh)
+import { resolve } from 'node:path';
 import { quantile, installSlider, fraction, benchArgs, withSite, demoIds, run } from './slide.mjs';
 
 const { events: EVENTS, only: ONLY } = benchArgs(40);
@@ -18,6 +20,8 @@ const CPU_SLOWDOWN = 4;
 /** Each slider's moves as one drag (see slideInPage); ZETA_TAPS=1: as separate changes. */
 const HOLD = process.env.ZETA_TAPS !== '1';
 const RUNS = Math.max(1, Math.floor(Number(process.env.ZETA_RUNS)) || 1);
+/** ZETA_ROOT=dir serves another build than dist/ (an A/B run of two builds, each copied aside). */
+const ROOT = process.env.ZETA_ROOT ? resolve(process.env.ZETA_ROOT) : undefined;
 const SLOW_4G = { offline: false, latency: 150, downloadThroughput: (1.6 * 1024 * 1024) / 8, uploadThroughput: (750 * 1024) / 8 };
 
 /**
@@ -77,7 +81,7 @@ async function lowEndPage(browser, { network }) {
 
 async function main() {
   const rows = [];
-  await withSite({ brotli: true }, async (browser, url) => {
+  await withSite({ brotli: true, root: ROOT }, async (browser, url) => {
     for (const id of await demoIds(browser, url, ONLY)) {
       const runs = [];
       for (let i = 0; i < RUNS; i++) runs.push(await measure(browser, url, id));
