@@ -311,3 +311,157 @@ fn dp45_work_precision_has_order_five_where_the_tolerance_sets_the_steps() {
     assert_eq!(stiff.stability_set(), tols.len());
     assert_eq!(stiff.order(), None);
 }
+
+/// The largest difference between a scaled study's errors and a rerun's, in units of
+/// `1e−9·e + 1e−14·s` (relative, plus the rounding of states of size `s` over a run):
+/// at most 1 when they agree. Panics if the steps (or works) or the failed runs differ.
+fn scaled_error_gap(scaled: &[(f64, f64)], rerun: &[(f64, f64)], s: f64) -> f64 {
+    assert_eq!(scaled.len(), rerun.len());
+    scaled
+        .iter()
+        .zip(rerun)
+        .map(|(a, b)| {
+            assert_eq!(a.0, b.0, "same step or work");
+            match a.1.is_finite() {
+                true => (a.1 - b.1).abs() / (1e-9 * b.1.abs() + 1e-14 * s),
+                false => {
+                    assert_eq!(a.1.is_nan(), b.1.is_nan());
+                    0.0
+                }
+            }
+        })
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn a_study_from_a_scaled_start_is_the_unit_study_scaled() {
+    // A linear method on y' = A·y is linear in y₀, and so is the exact solution: the study
+    // from x₀ = s (fit window times s) measures s times the errors of the study from 1, at
+    // the same steps, with the same levels, points and order. Up to rounding: the runs'
+    // rounding is relative to the state (≤ 1e−13·s over their ≤ 10⁵ steps, measured ≤ 3e−15·s
+    // here), so errors are compared relative to themselves plus 1e−12·s.
+    let window = FitWindow {
+        floor: 1e-10,
+        ceiling: 0.5,
+    };
+    let scaled_window = |s: f64| FitWindow {
+        floor: window.floor * s,
+        ceiling: window.ceiling * s,
+    };
+    for (zeta, wn, t_end) in [(0.05, 2.0, 20.0), (0.0, 2.0, 20.0), (2.0, 20.0, 5.0)] {
+        let sys = SecondOrder::from_natural(wn, zeta).unwrap();
+        let rho = sys.poles().iter().map(|q| q.abs()).fold(0.0, f64::max);
+        let grids = NestedGrids::for_rate(t_end, rho, 1.0, 16, 12, 24_000).unwrap();
+        let lin = Linear2::free(sys);
+        for s in [0.05, 0.37, 1.9] {
+            let exact = FreeResponse::new(sys, s, 0.0);
+            for method in [
+                Method::Euler,
+                Method::SymplecticEuler,
+                Method::Heun,
+                Method::Rk4,
+            ] {
+                let unit = release_study(&method, sys, &grids, window).scaled(s);
+                let rerun = nested_study(
+                    &method,
+                    &lin,
+                    [s, 0.0],
+                    0,
+                    |t| exact.displacement(t),
+                    &grids,
+                    scaled_window(s),
+                );
+                let what = format!("{method:?} ζ = {zeta}, ωₙ = {wn}, s = {s}");
+                assert_eq!(unit.status, rerun.status, "{what}");
+                assert_eq!(unit.work, rerun.work, "{what}");
+                let used =
+                    |st: &NestedStudy| st.study.points.iter().map(|q| q.used).collect::<Vec<_>>();
+                assert_eq!(used(&unit), used(&rerun), "{what}");
+                let errors = |st: &NestedStudy| {
+                    st.study
+                        .points
+                        .iter()
+                        .map(|q| (q.h, q.error))
+                        .collect::<Vec<_>>()
+                };
+                let gap = scaled_error_gap(&errors(&unit), &errors(&rerun), s);
+                assert!(gap <= 1.0, "{what}: gap {gap:e}");
+                match (unit.study.order, rerun.study.order) {
+                    // The fit reaches down to errors of 1e−10·s, where rounding is 1e−4 of them.
+                    (Some(a), Some(b)) => assert!((a - b).abs() < 1e-4, "{what}: {a} vs {b}"),
+                    (a, b) => assert_eq!(a, b, "{what}"),
+                }
+            }
+        }
+    }
+    // DP45 with atol = tol·s: the controller's error ratio is unchanged, so it takes the
+    // same steps; errors and the law's coefficient scale by s, the order does not.
+    let tols = [1e-2, 1e-4, 1e-6, 1e-8, 1e-10];
+    for (zeta, wn, t_end) in [(0.05, 2.0, 20.0), (2.0, 20.0, 5.0)] {
+        let sys = SecondOrder::from_natural(wn, zeta).unwrap();
+        let limit = Dopri5::new(Dopri5Config::default())
+            .unwrap()
+            .stable_steps(&sys);
+        let sweep = |s: f64| {
+            let exact = FreeResponse::new(sys, s, 0.0);
+            dopri5_sweep(
+                &Linear2::free(sys),
+                [s, 0.0],
+                t_end,
+                &tols,
+                |tol| Dopri5Config {
+                    rtol: tol,
+                    atol: tol * s,
+                    ..Dopri5Config::default()
+                },
+                |sol| {
+                    sol.t
+                        .iter()
+                        .zip(&sol.y)
+                        .map(|(&t, y)| (y[0] - exact.displacement(t)).abs())
+                        .fold(0.0, f64::max)
+                },
+                limit,
+                scaled_window(s),
+                0.03,
+            )
+        };
+        let unit = sweep(1.0);
+        for s in [0.05, 0.37, 1.9, 0.73] {
+            let (scaled, rerun) = (unit.scaled(s), sweep(s));
+            let what = format!("DP45 ζ = {zeta}, ωₙ = {wn}, s = {s}");
+            for (a, b) in scaled.points.iter().zip(&rerun.points) {
+                // A run whose steps stability sets hovers at the stability limit, where
+                // rounding can turn an accepted step into a rejected one: such runs may
+                // differ by a few steps (ζ = 2, ωₙ = 20, s = 0.37: 1094 against 1106
+                // evaluations), but not in their verdict. Tolerance-set runs take the same
+                // steps.
+                assert_eq!(
+                    (a.tolerance_set(), a.used),
+                    (b.tolerance_set(), b.used),
+                    "{what}"
+                );
+                match a.tolerance_set() {
+                    true => assert_eq!((a.work, a.steps), (b.work, b.steps), "{what}"),
+                    false => assert!(a.work.abs_diff(b.work) * 50 <= b.work, "{what}"),
+                }
+            }
+            let errors = |w: &zeta_solver::integrate::work_precision::WorkPrecision| {
+                w.points
+                    .iter()
+                    .map(|q| (q.tolerance, q.error))
+                    .collect::<Vec<_>>()
+            };
+            let gap = scaled_error_gap(&errors(&scaled), &errors(&rerun), s);
+            assert!(gap <= 1.0, "{what}: gap {gap:e}");
+            match (scaled.law, rerun.law) {
+                (Some(a), Some(b)) => {
+                    assert!((a.order - b.order).abs() < 1e-4, "{what}");
+                    let c = (a.coefficient - b.coefficient).abs() / b.coefficient;
+                    assert!(c < 1e-3, "{what}: coefficient {c:e}");
+                }
+                (a, b) => assert_eq!(a, b, "{what}"),
+            }
+        }
+    }
+}

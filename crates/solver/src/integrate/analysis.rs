@@ -379,6 +379,27 @@ pub struct ConvergenceStudy {
     pub order: Option<f64>,
 }
 
+impl ConvergenceStudy {
+    /// The same study of a linear problem started from an initial state `s` times larger
+    /// (`s > 0`), with its fit window scaled by `s` too: every error times `s`, the steps,
+    /// the points used and the order unchanged. A linear method on `y' = A·y` gives
+    /// `y_n(s·y₀) = s·y_n(y₀)` and the exact solution scales alike, so this is the study a
+    /// rerun would measure, up to rounding.
+    pub fn scaled(&self, s: f64) -> Self {
+        Self {
+            points: self
+                .points
+                .iter()
+                .map(|q| ConvergencePoint {
+                    error: q.error * s,
+                    ..*q
+                })
+                .collect(),
+            order: self.order,
+        }
+    }
+}
+
 /// Least-squares slope `p` of `ln e = p·ln h + c` over the points; `None` with fewer than
 /// two points or all `h` equal. The order of [`super::convergence::fit_power_law`].
 pub fn fit_order(points: &[(f64, f64)]) -> Option<f64> {

@@ -280,7 +280,28 @@ pub struct NestedStudy {
     pub work: Vec<usize>,
 }
 
+impl PowerLaw {
+    /// The law of errors `s` times larger: `s·C·hᵖ` (the same order).
+    pub fn scaled(self, s: f64) -> Self {
+        Self {
+            coefficient: self.coefficient * s,
+            ..self
+        }
+    }
+}
+
 impl NestedStudy {
+    /// The same study from an initial state `s` times larger (`s > 0`) of a linear
+    /// problem, its fit window scaled alike ([`ConvergenceStudy::scaled`]): the errors times
+    /// `s`; statuses, evaluations and order unchanged.
+    pub fn scaled(&self, s: f64) -> Self {
+        Self {
+            study: self.study.scaled(s),
+            status: self.status.clone(),
+            work: self.work.clone(),
+        }
+    }
+
     /// The measured levels as `(f-evaluations, error)`, coarsest first: the method's
     /// points on a work–precision diagram.
     pub fn work_precision(&self) -> Vec<(f64, f64)> {

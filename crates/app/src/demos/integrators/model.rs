@@ -28,7 +28,7 @@ pub(super) const FIXED: [Method; 4] = [
 /// Step sizes of the convergence study (halving each time).
 pub(super) const LEVELS: usize = 12;
 /// Steps one method may spend on the whole study (summed over its step sizes); finer step
-/// sizes beyond this budget are skipped, which keeps a ζ/ωₙ/T/x₀ drag fast.
+/// sizes beyond this budget are skipped, which keeps a ζ/ωₙ/T drag fast.
 pub(super) const STUDY_BUDGET: usize = 24_000;
 /// Forward Euler's budget: one evaluation per step, and the slowest to reach its
 /// asymptotic range (on an undamped oscillator its error only becomes small below
@@ -44,6 +44,9 @@ pub(super) const DP45_TOLS: [f64; 9] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8
 pub(super) const SPREAD: f64 = 0.03;
 /// Step budget of one DP45 run.
 const DP45_MAX_STEPS: usize = 8_000;
+/// The initial displacement the cached convergence study starts from (m): the study from
+/// any other `x₀` is this one scaled ([`Study::scaled`]).
+pub(super) const UNIT_X0: f64 = 1.0;
 /// Errors below this fraction of x₀ are rounding: left out of the fit.
 pub(super) const FIT_FLOOR: f64 = 1e-10;
 /// Errors above this fraction of x₀ are no longer small (or unstable): left out. Whether
@@ -69,13 +72,15 @@ pub(super) const FULL: Budget = Budget {
     tols: &DP45_TOLS,
 };
 
-/// `(ζ, ωₙ, T, x₀)`: everything the convergence study depends on.
-pub(super) type StudyKey = [f64; 4];
+/// `(ζ, ωₙ, T)`: everything the convergence study from `x₀ = 1` depends on. The study from
+/// another `x₀` is that one scaled ([`Study::scaled`]).
+pub(super) type StudyKey = [f64; 3];
 
-/// The cached convergence studies.
+/// A convergence study: the fixed-step methods' and DP45's. The cache keeps the one from
+/// `x₀ = 1` ([`UNIT_X0`]); results carry it scaled to the current `x₀`.
 #[derive(Debug, Clone)]
 pub(super) struct Study {
-    /// `(ζ, ωₙ, T, x₀)` it was computed for.
+    /// `(ζ, ωₙ, T)` it was computed for.
     pub(super) key: StudyKey,
     /// The budget it was computed with.
     pub(super) budget: Budget,
@@ -88,6 +93,23 @@ pub(super) struct Study {
 }
 
 impl Study {
+    /// The study from an initial displacement `x0` times this one's (this one's is
+    /// [`UNIT_X0`] in the cache): every error times `x0`, the steps, evaluations and orders
+    /// unchanged. The oscillator and every method are linear in the initial state, and the
+    /// study's fit window and DP45's absolute tolerance are proportional to `x₀`, so a rerun
+    /// from `x0` measures the same up to rounding (`zeta-solver`'s
+    /// `a_study_from_a_scaled_start_is_the_unit_study_scaled`); an `x₀` drag needs no new
+    /// study.
+    pub(super) fn scaled(&self, x0: f64) -> Self {
+        Self {
+            key: self.key,
+            budget: self.budget,
+            grids: self.grids,
+            fixed: self.fixed.iter().map(|s| s.scaled(x0)).collect(),
+            dp45: self.dp45.scaled(x0),
+        }
+    }
+
     /// Fitted order of fixed-step method `k`.
     pub fn order(&self, k: usize) -> Option<f64> {
         self.fixed.get(k).and_then(|s| s.study.order)
@@ -184,7 +206,6 @@ impl Cache {
             sys.damping_ratio().unwrap_or(f64::NAN),
             sys.natural_frequency().unwrap_or(f64::NAN),
             p.t_end,
-            p.x0,
         ];
         let system = [key[0], key[1]];
         let limits = match self.limits {
@@ -195,7 +216,9 @@ impl Cache {
                 limits
             }
         };
-        let problem = Problem::new(sys, p, limits);
+        // The study is of the release from x₀ = 1, scaled to p.x0 below.
+        let unit = P { x0: UNIT_X0, ..*p };
+        let problem = Problem::new(sys, &unit, limits);
         if self.study.as_ref().map(|st| st.key) != Some(key) {
             // Inputs moved on: a full study under way for other inputs is dropped unseen.
             progress.job = None;
@@ -207,14 +230,13 @@ impl Cache {
             // No study at all (no grids for these inputs) leaves nothing to refine either.
             self.study = compute_study(&problem, key, budget);
             match self.study.is_some() && progress.is_provisional() {
-                true => progress.job = StudyJob::start(sys, p, key, limits),
+                true => progress.job = StudyJob::start(sys, &unit, key, limits),
                 false => progress.finished(),
             }
         }
-        let study = self.study.clone()?;
+        let study = self.study.as_ref()?.scaled(p.x0);
         run_current(
             sys,
-            problem.resp,
             &problem.lin,
             p,
             (study, limits.fixed),
@@ -344,7 +366,7 @@ pub(super) fn dp45_fit(runs: Vec<WorkPoint>) -> WorkPrecision {
 }
 
 /// The whole convergence study of `key` within `budget`, at once.
-fn compute_study(problem: &Problem<'_>, key: StudyKey, budget: Budget) -> Option<Study> {
+pub(super) fn compute_study(problem: &Problem<'_>, key: StudyKey, budget: Budget) -> Option<Study> {
     let grids = study_grids(&problem.sys, problem.p)?;
     let fixed = (0..FIXED.len())
         .map(|k| fixed_study(k, problem, grids, budget))
@@ -361,7 +383,6 @@ fn compute_study(problem: &Problem<'_>, key: StudyKey, budget: Budget) -> Option
 
 fn run_current(
     sys: SecondOrder,
-    resp: FreeResponse,
     lin: &Linear2<fn(f64) -> f64>,
     p: &P,
     (study, limit): (Study, [StepLimit; 4]),
@@ -369,6 +390,7 @@ fn run_current(
 ) -> Option<Results> {
     // h ≥ 1e−3 s and T ≤ 60 s keep this within 60 000 steps.
     let grid = ExactStepGrid::new(0.0, p.t_end, p.h).ok()?;
+    let resp = FreeResponse::new(sys, p.x0, 0.0);
     let n = grid.steps();
     let h = grid.h();
     let exact: Vec<[f64; 2]> = (0..=n).map(|i| resp.state(grid.time(i))).collect();

@@ -1,9 +1,10 @@
-//! Progressive convergence study (issue 13): on a page, a moved ζ, ωₙ, T or x₀ gets a
-//! coarse study at once ([`COARSE`]: the same nested grids with an eighth of the step
-//! budgets, so the finest three step sizes are left out, and DP45 down to 10⁻⁴ only) and the
-//! full study one method per slice in later short tasks ([`Integrators::refine_study`]):
-//! the four fixed-step methods, then the DP45 tolerance sweep. The full study replaces the
-//! coarse one only if it was computed for the inputs still current. Off (native tests,
+//! Progressive convergence study (issue 13): on a page, a moved ζ, ωₙ or T gets a coarse
+//! study at once ([`COARSE`]: the same nested grids with an eighth of the step budgets, so
+//! the finest three step sizes are left out, and DP45 down to 10⁻⁴ only) and the full study
+//! one method per slice in later short tasks ([`Integrators::refine_study`]): the four
+//! fixed-step methods, then the DP45 tolerance sweep. The full study replaces the coarse one
+//! only if it was computed for the inputs still current. A moved x₀ needs no study: the
+//! study is of the release from x₀ = 1, scaled (`Study::scaled`). Off (native tests,
 //! snapshots) the full study runs in the step, as before. The flags and the job live in the
 //! state every progressive demo shares, `demos/progressive.rs`.
 

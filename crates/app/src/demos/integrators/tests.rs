@@ -162,9 +162,14 @@ fn progressive_updates_keep_h_tol_and_toggles_immediate() {
     demo.update(&params(""));
     while demo.refine(5.0).is_some_and(|f| f < 1.0) {}
     assert!(demo.provisional().is_empty());
-    // Moving h, tol or a toggle reuses the study: nothing to refine, and the same frame as
-    // the step without progressive studies.
-    for q in ["h=0.05", "h=0.05&tol=1e-8", "h=0.05&tol=1e-8&rk4=0"] {
+    // Moving h, tol, x₀ or a toggle reuses the study (x₀ scales it): nothing to refine,
+    // and the same frame as the step without progressive studies.
+    for q in [
+        "h=0.05",
+        "h=0.05&tol=1e-8",
+        "h=0.05&tol=1e-8&rk4=0",
+        "h=0.05&tol=1e-8&rk4=0&x0=0.37",
+    ] {
         let got = demo.update(&params(q));
         assert!(
             demo.provisional().is_empty() && demo.refine(5.0).is_none(),
@@ -174,6 +179,76 @@ fn progressive_updates_keep_h_tol_and_toggles_immediate() {
         assert!(
             format!("{:?}", shown(&got)) == format!("{:?}", shown(&want)),
             "{q}"
+        );
+    }
+}
+
+#[test]
+fn the_study_shown_at_any_x0_is_what_a_study_from_that_x0_measures() {
+    use super::model::{compute_study, Cache, Limits, Problem, FULL};
+    use super::P;
+    use crate::demos::progressive::Progressive;
+    use zeta_solver::SecondOrder;
+    // The cache holds the study from x₀ = 1 and scales it; a study run from x₀ itself
+    // agrees within rounding: the same orders to 1e−4 (the fits reach down to errors of
+    // 1e−10·x₀, where rounding is about 1e−4 of them) and errors to 1e−9 of themselves
+    // plus 1e−14·x₀ (see zeta-solver's a_study_from_a_scaled_start_is_the_unit_study_scaled).
+    let close = |a: Option<f64>, b: Option<f64>| match (a, b) {
+        (Some(a), Some(b)) => (a - b).abs() < 1e-4,
+        (a, b) => a == b,
+    };
+    for (zeta, wn, t_end, x0) in [
+        (0.05, 2.0, 20.0, 0.37),
+        (0.3, 5.0, 10.0, 1.9),
+        (0.0, 2.0, 20.0, 0.05),
+        (2.0, 20.0, 5.0, 0.05),
+    ] {
+        let p = P {
+            zeta,
+            wn,
+            h: 0.1,
+            t_end,
+            x0,
+            tol: 1e-6,
+            show: [true; 5],
+        };
+        let sys = SecondOrder::from_natural(wn, zeta).unwrap();
+        let problem = Problem::new(sys, &p, Limits::of(&sys));
+        let rerun = compute_study(&problem, [zeta, wn, t_end], FULL).unwrap();
+        let shown = Cache::default()
+            .step(&p, &mut Progressive::default())
+            .unwrap()
+            .study;
+        let what = format!("ζ = {zeta}, ωₙ = {wn}, T = {t_end}, x₀ = {x0}");
+        for k in 0..4 {
+            assert!(close(shown.order(k), rerun.order(k)), "{what}: method {k}");
+            for (a, b) in shown.fixed[k]
+                .study
+                .points
+                .iter()
+                .zip(&rerun.fixed[k].study.points)
+            {
+                assert_eq!((a.h, a.used), (b.h, b.used), "{what}");
+                if b.error.is_finite() {
+                    let gap = (a.error - b.error).abs();
+                    assert!(gap <= 1e-9 * b.error + 1e-14 * x0, "{what}: {a:?} {b:?}");
+                }
+            }
+        }
+        assert!(
+            close(shown.dp45.order(), rerun.dp45.order()),
+            "{what}: DP45"
+        );
+        // The x₀ = 1 study really is scaled: its largest error is x₀ times the unit one's.
+        assert_ne!(x0, 1.0);
+        let unit = Cache::default()
+            .step(&P { x0: 1.0, ..p }, &mut Progressive::default())
+            .unwrap()
+            .study;
+        let first = |st: &super::model::Study| st.fixed[3].study.points[0].error;
+        assert!(
+            (first(&shown) - x0 * first(&unit)).abs() <= 1e-15 * first(&shown),
+            "{what}"
         );
     }
 }
