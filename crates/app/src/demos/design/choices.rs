@@ -1,7 +1,7 @@
 //! The design demo's choice parameters as typed enums: the map's metric and the road class.
 
+use super::DesignSpace;
 use crate::declare::{choice_enum, Choice};
-use zeta_solver::design::sweep::KcMaps;
 use zeta_solver::two_dof::IsoClass;
 
 choice_enum! {
@@ -21,13 +21,13 @@ choice_enum! {
 }
 
 impl Metric {
-    /// The map of this metric.
-    pub(super) fn values(self, maps: &KcMaps) -> &[f64] {
+    /// The map of this metric (comfort computed if not yet: [`DesignSpace::comfort`]).
+    pub(super) fn values(self, d: &DesignSpace) -> &[f64] {
         match self {
-            Metric::SettlingTime => &maps.settling_time,
-            Metric::PeakRebound => &maps.peak_rebound,
-            Metric::AccelRms => &maps.accel_rms,
-            Metric::PeakTransmissibility => &maps.peak_transmissibility,
+            Metric::SettlingTime => &d.maps.settling_time,
+            Metric::PeakRebound => &d.maps.peak_rebound,
+            Metric::AccelRms => &d.comfort().accel_rms,
+            Metric::PeakTransmissibility => &d.maps.peak_transmissibility,
         }
     }
 }

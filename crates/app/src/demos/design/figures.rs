@@ -1,7 +1,7 @@
 //! The design demo's figures: the metric map with iso-ζ lines, the Pareto front of comfort
 //! against settling, and the selected design's free response.
 
-use super::{text, DesignSpace, Results, Selected, KILO, P, X0};
+use super::{text, DesignSpace, Results, KILO, P, X0};
 use crate::figure::{finite_extent, padded, Axis, Figure, Heatmap, LineStyle, Marker};
 use crate::format::{shortest, si};
 use crate::plot::Ink;
@@ -30,7 +30,7 @@ const TOP_STRIP: f64 = 0.09;
 pub(super) fn map(d: &DesignSpace, p: &P, r: &Results) -> Figure {
     let key = r.key;
     let (unit, factor) = p.metric.describe();
-    let raw = p.metric.values(&d.maps);
+    let raw = p.metric.values(d);
     let colours = MapColours::new(raw, factor, p.metric.log_colour());
     let ((k0, k1), (c0, c1)) = (key.k, key.c);
     let mut fig = Figure::plot(
@@ -110,16 +110,17 @@ pub(super) fn map(d: &DesignSpace, p: &P, r: &Results) -> Figure {
 
 /// `(settling time, a_w)` of the front's designs, in front order.
 fn front_points(d: &DesignSpace) -> Vec<(f64, f64)> {
-    d.front
+    let comfort = d.comfort();
+    comfort
+        .front
         .iter()
-        .filter_map(|&i| Some((*d.maps.settling_time.get(i)?, *d.maps.accel_rms.get(i)?)))
+        .filter_map(|&i| Some((*d.maps.settling_time.get(i)?, *comfort.accel_rms.get(i)?)))
         .collect()
 }
 
-/// Axes of the Pareto plot: the front and the selected design, padded, from zero up.
-pub(super) fn pareto_ranges(d: &DesignSpace, sel: &Selected) -> ((f64, f64), (f64, f64)) {
-    let pts = front_points(d);
-    let sel_pt = sel.settling_time.zip(sel.accel_rms);
+/// Axes of the Pareto plot: the front's points `pts` and the selected design `sel_pt`,
+/// padded, from zero up.
+fn pareto_ranges(pts: &[(f64, f64)], sel_pt: Option<(f64, f64)>) -> ((f64, f64), (f64, f64)) {
     let xs = pts.iter().map(|p| p.0).chain(sel_pt.map(|p| p.0));
     let ys = pts.iter().map(|p| p.1).chain(sel_pt.map(|p| p.1));
     let xr = padded(finite_extent(xs).unwrap_or((0.0, 1.0)), 0.08);
@@ -132,7 +133,9 @@ pub(super) fn pareto_ranges(d: &DesignSpace, sel: &Selected) -> ((f64, f64), (f6
 pub(super) fn pareto(d: &DesignSpace, p: &P, r: &Results) -> Figure {
     let pts = front_points(d);
     let sel_pt = r.sel.settling_time.zip(r.sel.accel_rms);
-    let (xr, yr) = r.pareto_ranges;
+    let (xr, yr) = pareto_ranges(&pts, sel_pt);
+    // For picking on this plot (`DesignSpace::pick`).
+    d.pareto_ranges.set((xr, yr));
     let mut fig = Figure::plot(
         t!("design-plot-pareto"),
         Axis::linear(
@@ -149,7 +152,7 @@ pub(super) fn pareto(d: &DesignSpace, p: &P, r: &Results) -> Figure {
             .map(|ic| {
                 let i = ic * n + ik;
                 let at = |v: &[f64]| v.get(i).copied().unwrap_or(f64::NAN);
-                let pt = (at(&d.maps.settling_time), at(&d.maps.accel_rms));
+                let pt = (at(&d.maps.settling_time), at(&d.comfort().accel_rms));
                 if inside(pt) {
                     pt
                 } else {

@@ -16,6 +16,7 @@
 
 mod cache;
 mod choices;
+mod comfort;
 mod declaration;
 mod figures;
 mod progressive;
@@ -24,6 +25,7 @@ mod text;
 
 use cache::SweepKey;
 pub use choices::{Metric, Road};
+use comfort::Comfort;
 pub(super) use declaration::sprung_mass;
 pub(crate) use stopwatch::Stopwatch;
 
@@ -31,6 +33,7 @@ use super::progressive::{progressive_hooks, Progressive};
 use super::Model;
 use crate::declare::Declaration;
 use crate::figure::Figure;
+use std::cell::{Cell, OnceCell};
 use zeta_solver::design::map::lowest;
 use zeta_solver::design::pareto::nearest_on_front;
 use zeta_solver::design::sweep::{KcMaps, KcSweepConfig, RoadInput};
@@ -127,8 +130,6 @@ pub struct Results {
     sel: Selected,
     /// `(k, c)` of the fastest-settling cell and its settling time \[s\].
     fastest: Option<((f64, f64), SecondOrder, Option<f64>)>,
-    /// Axes of the Pareto plot: settling time \[s\] and RMS acceleration \[m/s²\].
-    pareto_ranges: ((f64, f64), (f64, f64)),
     /// Duration of the last full sweep \[ms\] (wall clock).
     sweep_ms: f64,
     /// Cells per axis of the maps shown (fewer than `key.n` while provisional).
@@ -142,16 +143,19 @@ pub struct Results {
 pub struct DesignSpace {
     k_axis: Vec<f64>,
     c_axis: Vec<f64>,
+    /// The one-DOF maps of the cells (settling time, rebound, transmissibility, ζ); their
+    /// `accel_rms` is the solver's one-DOF figure, not shown: comfort is [`Comfort`].
     maps: KcMaps,
+    /// The comfort map and the Pareto front over the cells of `maps` (see
+    /// [`DesignSpace::comfort`]).
+    comfort: OnceCell<Comfort>,
     key: Option<SweepKey>,
     /// Duration of the last full sweep \[ms\].
     sweep_ms: f64,
     /// Number of sweeps performed (for tests of the cache).
     sweeps: u64,
-    /// Grid indices on the Pareto front, by increasing settling time.
-    front: Vec<usize>,
-    /// Axes of the last Pareto plot, for picking the nearest front design.
-    pareto_ranges: ((f64, f64), (f64, f64)),
+    /// Axes of the last Pareto plot built, for picking the nearest front design.
+    pareto_ranges: Cell<((f64, f64), (f64, f64))>,
     /// The progressive sweep: a coarse one first on a page, the full one left to `refine`
     /// (see `progressive.rs`).
     progress: Progressive<progressive::SweepJob>,
@@ -199,7 +203,6 @@ impl Model for DesignSpace {
                 let ts = FreeMetrics::exact(&s, X0, 0.0, band).and_then(|m| m.settling_time);
                 Some(((k, c), s, ts))
             });
-        self.pareto_ranges = figures::pareto_ranges(self, &sel);
         Some(Results {
             k: p.k,
             c: p.c,
@@ -207,7 +210,6 @@ impl Model for DesignSpace {
             band,
             sel,
             fastest,
-            pareto_ranges: self.pareto_ranges,
             sweep_ms: self.sweep_ms,
             grid: self.k_axis.len(),
             provisional: self.progress.is_provisional(),
@@ -245,11 +247,12 @@ impl Model for DesignSpace {
                 vec![("k", (x / 10.0).round() * 10.0), ("c", y.round().max(1.0))]
             }
             "pareto" => {
-                let ((x0, x1), (y0, y1)) = self.pareto_ranges;
+                let ((x0, x1), (y0, y1)) = self.pareto_ranges.get();
+                let comfort = self.comfort();
                 let nearest = nearest_on_front(
-                    &self.front,
+                    &comfort.front,
                     &self.maps.settling_time,
-                    &self.maps.accel_rms,
+                    &comfort.accel_rms,
                     (x, y),
                     (x1 - x0, y1 - y0),
                 );

@@ -6,8 +6,9 @@
 //! share, `demos/progressive.rs`.
 
 use super::cache::SweepKey;
+use super::comfort::{comfort_rows, Comfort};
 use super::{DesignSpace, Stopwatch};
-use zeta_solver::design::pareto::pareto_front_into;
+use std::cell::OnceCell;
 use zeta_solver::design::sweep::{
     sweep_kc_into, sweep_kc_rows, sweep_kc_start, KcMaps, KcSweepConfig,
 };
@@ -30,30 +31,11 @@ pub(super) struct SweepJob {
     k_axis: Vec<f64>,
     c_axis: Vec<f64>,
     maps: KcMaps,
+    /// The comfort map so far (see `comfort.rs`).
+    comfort: Vec<f64>,
     next_row: usize,
     /// Compute time so far \[ms\].
     ms: f64,
-}
-
-/// Rows `rows` of the comfort map: `a_w` of the two-DOF car of `key` in each cell (replacing
-/// the one-DOF figure the solver's sweep put there).
-fn comfort_rows(
-    ride: &Ride,
-    key: &SweepKey,
-    (k_axis, c_axis): (&[f64], &[f64]),
-    rows: std::ops::Range<usize>,
-    maps: &mut KcMaps,
-) {
-    let (class, axes) = (key.road.0, (k_axis, c_axis));
-    ride.weighted_rows(
-        key.car(),
-        class,
-        key.v,
-        axes,
-        rows,
-        &mut maps.accel_rms,
-        &mut [],
-    );
 }
 
 /// Cell centres of `n` cells over `(lo, hi)`.
@@ -76,18 +58,23 @@ impl DesignSpace {
         cells(key.k, n, &mut self.k_axis);
         cells(key.c, n, &mut self.c_axis);
         sweep_kc_into(&self.k_axis, &self.c_axis, &cfg, &mut self.maps);
-        let ride = Ride::w_k();
-        let axes = (&self.k_axis[..], &self.c_axis[..]);
-        comfort_rows(&ride, &key, axes, 0..n, &mut self.maps);
-        self.finish_maps(key, watch.elapsed_ms());
+        self.key = Some(key);
+        // The comfort map of a coarse sweep waits for a figure that asks for it
+        // (`comfort.rs`); a full one is computed here, as part of the sweep.
+        self.comfort = OnceCell::new();
+        if !self.progress.is_provisional() {
+            self.comfort();
+        }
+        self.sweep_ms = watch.elapsed_ms();
         if self.progress.is_provisional() {
             let mut job = SweepJob {
                 key,
                 cfg,
-                ride,
+                ride: Ride::w_k(),
                 k_axis: Vec::new(),
                 c_axis: Vec::new(),
                 maps: KcMaps::default(),
+                comfort: vec![f64::NAN; key.n * key.n],
                 next_row: 0,
                 ms: 0.0,
             };
@@ -98,17 +85,6 @@ impl DesignSpace {
         } else {
             self.sweeps += 1;
         }
-    }
-
-    /// Pareto front, timing and key of freshly swept maps.
-    fn finish_maps(&mut self, key: SweepKey, ms: f64) {
-        pareto_front_into(
-            &self.maps.settling_time,
-            &self.maps.accel_rms,
-            &mut self.front,
-        );
-        self.sweep_ms = ms;
-        self.key = Some(key);
     }
 
     /// Computes rows of the pending full sweep for about `budget_ms` (at least one row).
@@ -128,7 +104,7 @@ impl DesignSpace {
                 &mut job.maps,
             );
             let axes = (&job.k_axis[..], &job.c_axis[..]);
-            comfort_rows(&job.ride, &job.key, axes, row..row + 1, &mut job.maps);
+            comfort_rows(&job.ride, &job.key, axes, row..row + 1, &mut job.comfort);
             job.next_row += 1;
             if watch.elapsed_ms() >= budget_ms {
                 break;
@@ -144,10 +120,11 @@ impl DesignSpace {
         if self.key != Some(job.key) {
             return None;
         }
+        self.comfort = OnceCell::from(Comfort::new(job.comfort, &job.maps.settling_time));
         self.k_axis = job.k_axis;
         self.c_axis = job.c_axis;
         self.maps = job.maps;
-        self.finish_maps(job.key, job.ms);
+        self.sweep_ms = job.ms;
         self.progress.finished();
         self.sweeps += 1;
         Some(1.0)

@@ -70,13 +70,17 @@ fn clicking_picks_a_design_and_the_front_is_non_dominated() {
     );
     assert!(d.pick("map", 70.0, 4.0).is_empty(), "outside the map");
     assert!(d.pick("response", 1.0, 0.0).is_empty());
-    assert!(d.front.len() > 3);
-    let (ts, acc) = (&d.maps.settling_time, &d.maps.accel_rms);
-    for w in d.front.windows(2) {
+    // The Pareto plot as the page draws it before a click on it (its axes are the pick's).
+    let (p, r) = step(&mut d, "");
+    d.figure(1, &p, &r).unwrap();
+    let comfort = d.comfort().clone();
+    assert!(comfort.front.len() > 3);
+    let (ts, acc) = (&d.maps.settling_time.clone(), &comfort.accel_rms);
+    for w in comfort.front.windows(2) {
         assert!(ts[w[0]] <= ts[w[1]] && acc[w[0]] >= acc[w[1]]);
     }
     // Picking next to the front's first point chooses that design.
-    let first = d.front[0];
+    let first = comfort.front[0];
     let (t, a) = (ts[first], acc[first]);
     let picked = d.pick("pareto", t, a);
     let (k, c) = d.design_at(first).unwrap();
@@ -118,7 +122,7 @@ fn a_map_cell_and_the_two_dof_demo_agree_on_comfort_for_the_same_car() {
         let a_w = number(&car, "stationary_weighted_accel");
         let mut d = DesignSpace::default();
         step(&mut d, &query);
-        let cell = d.maps.accel_rms[7 * 20 + 3];
+        let cell = d.comfort().accel_rms[7 * 20 + 3];
         assert_eq!(d.design_at(7 * 20 + 3), Some((18_750.0, 3_312.5)));
         assert!(
             (cell - a_w).abs() <= 1e-9 * a_w,
@@ -261,4 +265,66 @@ fn progressive_updates_keep_unmoved_maps_immediate() {
     // Moving the selected design reuses the map: nothing to refine.
     demo.update(&resolve_query(&spec, "n=25&k=30000&c=2500").0);
     assert!(demo.provisional().is_empty() && demo.refine(5.0).is_none());
+}
+
+#[test]
+fn a_coarse_sweep_leaves_comfort_to_the_first_figure_that_needs_it() {
+    // On a page, a moved map input gets a coarse sweep; with only the settling map in view
+    // (a phone during a drag) nothing computes the comfort map. The Pareto plot, a comfort
+    // map or a pick on the Pareto plot compute it then, the same as a full step would.
+    let decl = DesignSpace::declare();
+    let p = |q| decl.read(&resolve_query(&decl.spec(), q).0);
+    let cells = super::progressive::COARSE_CELLS;
+    let mut d = DesignSpace::default();
+    d.set_progressive(true);
+    let pq = p("m=420");
+    let r = d.step(&pq).unwrap();
+    assert!(r.provisional && d.comfort.get().is_none());
+    d.figure(0, &pq, &r).unwrap();
+    d.figure(2, &pq, &r).unwrap();
+    assert!(
+        d.comfort.get().is_none(),
+        "the settling map and the response need none"
+    );
+    let pareto = d.figure(1, &pq, &r).unwrap();
+    assert_eq!(
+        d.comfort.get().map(|c| c.accel_rms.len()),
+        Some(cells * cells)
+    );
+    // Every cell is the two-DOF car's a_w from the function the selected design's readout
+    // calls (to 1e−9 relative: the map's block solves, as in the test above), and the
+    // front drawn is the front over them.
+    let comfort = d.comfort();
+    for i in [0, 5, 77, cells * cells - 1] {
+        let (k_s, c_s) = d.design_at(i).unwrap();
+        let car = TwoDof::new(TwoDofConfig {
+            k_s,
+            c_s,
+            ..r.key.car()
+        })
+        .unwrap();
+        let a_w = stationary(&car, r.key.road.0, r.key.v)
+            .unwrap()
+            .rms_weighted_body_acceleration;
+        let cell = comfort.accel_rms[i];
+        assert!(
+            (cell - a_w).abs() <= 1e-9 * a_w,
+            "cell {i}: {cell} vs {a_w}"
+        );
+    }
+    let front: Vec<(f64, f64)> = comfort
+        .front
+        .iter()
+        .map(|&i| (d.maps.settling_time[i], comfort.accel_rms[i]))
+        .collect();
+    assert!(front.len() > 3);
+    assert_eq!(pareto.series[1].points, front, "the front drawn");
+    // The comfort map shown as the metric asks for it alike.
+    let mut d = DesignSpace::default();
+    d.set_progressive(true);
+    let pc = p("m=420&metric=accel_rms");
+    let r = d.step(&pc).unwrap();
+    assert!(d.comfort.get().is_none());
+    let map = d.figure(0, &pc, &r).unwrap();
+    assert!(map.heatmap.unwrap().log && d.comfort.get().is_some());
 }
