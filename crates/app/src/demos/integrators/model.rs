@@ -47,6 +47,17 @@ const DP45_MAX_STEPS: usize = 8_000;
 /// The initial displacement the cached convergence study starts from (m): the study from
 /// any other `x₀` is this one scaled ([`Study::scaled`]).
 pub(super) const UNIT_X0: f64 = 1.0;
+
+/// The `x₀` the cached study for displacement `x0` starts from: [`UNIT_X0`], scaled to
+/// `x0` when shown. A first module (feature `first`), which draws only the first frames
+/// and has a download budget, runs its study from `x0` itself and leaves the scaling out;
+/// the two agree to rounding (see [`Study::scaled`]).
+fn study_x0(x0: f64) -> f64 {
+    match cfg!(feature = "first") {
+        true => x0,
+        false => UNIT_X0,
+    }
+}
 /// Errors below this fraction of x₀ are rounding: left out of the fit.
 pub(super) const FIT_FLOOR: f64 = 1e-10;
 /// Errors above this fraction of x₀ are no longer small (or unstable): left out. Whether
@@ -72,15 +83,16 @@ pub(super) const FULL: Budget = Budget {
     tols: &DP45_TOLS,
 };
 
-/// `(ζ, ωₙ, T)`: everything the convergence study from `x₀ = 1` depends on. The study from
-/// another `x₀` is that one scaled ([`Study::scaled`]).
-pub(super) type StudyKey = [f64; 3];
+/// `(ζ, ωₙ, T, x₀ of the study)`: everything the cached convergence study depends on. The
+/// study is from `x₀ = 1` ([`study_x0`]): the study from another `x₀` is that one scaled
+/// ([`Study::scaled`]).
+pub(super) type StudyKey = [f64; 4];
 
 /// A convergence study: the fixed-step methods' and DP45's. The cache keeps the one from
-/// `x₀ = 1` ([`UNIT_X0`]); results carry it scaled to the current `x₀`.
+/// [`study_x0`]; results carry it scaled to the current `x₀`.
 #[derive(Debug, Clone)]
 pub(super) struct Study {
-    /// `(ζ, ωₙ, T)` it was computed for.
+    /// `(ζ, ωₙ, T, x₀)` it was computed for.
     pub(super) key: StudyKey,
     /// The budget it was computed with.
     pub(super) budget: Budget,
@@ -94,7 +106,7 @@ pub(super) struct Study {
 
 impl Study {
     /// The study from an initial displacement `x0` times this one's (this one's is
-    /// [`UNIT_X0`] in the cache): every error times `x0`, the steps, evaluations and orders
+    /// [`UNIT_X0`] in the full module's cache): every error times `x0`, the steps, evaluations and orders
     /// unchanged. The oscillator and every method are linear in the initial state, and the
     /// study's fit window and DP45's absolute tolerance are proportional to `x₀`, so a rerun
     /// from `x0` measures the same up to rounding (`zeta-solver`'s
@@ -206,6 +218,7 @@ impl Cache {
             sys.damping_ratio().unwrap_or(f64::NAN),
             sys.natural_frequency().unwrap_or(f64::NAN),
             p.t_end,
+            study_x0(p.x0),
         ];
         let system = [key[0], key[1]];
         let limits = match self.limits {
@@ -217,7 +230,10 @@ impl Cache {
             }
         };
         // The study is of the release from x₀ = 1, scaled to p.x0 below.
-        let unit = P { x0: UNIT_X0, ..*p };
+        let unit = P {
+            x0: study_x0(p.x0),
+            ..*p
+        };
         let problem = Problem::new(sys, &unit, limits);
         if self.study.as_ref().map(|st| st.key) != Some(key) {
             // Inputs moved on: a full study under way for other inputs is dropped unseen.
@@ -234,9 +250,15 @@ impl Cache {
                 false => progress.finished(),
             }
         }
-        let study = self.study.as_ref()?.scaled(p.x0);
+        let study = self.study.as_ref()?;
+        // The study and the exact response at p.x0 (a first module's problem is from p.x0).
+        let (study, resp) = match cfg!(feature = "first") {
+            true => (study.clone(), problem.resp),
+            false => (study.scaled(p.x0), FreeResponse::new(sys, p.x0, 0.0)),
+        };
         run_current(
             sys,
+            resp,
             &problem.lin,
             p,
             (study, limits.fixed),
@@ -383,6 +405,7 @@ pub(super) fn compute_study(problem: &Problem<'_>, key: StudyKey, budget: Budget
 
 fn run_current(
     sys: SecondOrder,
+    resp: FreeResponse,
     lin: &Linear2<fn(f64) -> f64>,
     p: &P,
     (study, limit): (Study, [StepLimit; 4]),
@@ -390,7 +413,6 @@ fn run_current(
 ) -> Option<Results> {
     // h ≥ 1e−3 s and T ≤ 60 s keep this within 60 000 steps.
     let grid = ExactStepGrid::new(0.0, p.t_end, p.h).ok()?;
-    let resp = FreeResponse::new(sys, p.x0, 0.0);
     let n = grid.steps();
     let h = grid.h();
     let exact: Vec<[f64; 2]> = (0..=n).map(|i| resp.state(grid.time(i))).collect();

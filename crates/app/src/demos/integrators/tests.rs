@@ -214,7 +214,7 @@ fn the_study_shown_at_any_x0_is_what_a_study_from_that_x0_measures() {
         };
         let sys = SecondOrder::from_natural(wn, zeta).unwrap();
         let problem = Problem::new(sys, &p, Limits::of(&sys));
-        let rerun = compute_study(&problem, [zeta, wn, t_end], FULL).unwrap();
+        let rerun = compute_study(&problem, [zeta, wn, t_end, x0], FULL).unwrap();
         let shown = Cache::default()
             .step(&p, &mut Progressive::default())
             .unwrap()
