@@ -1,6 +1,6 @@
 // End to end: the universality demo (one equation, many machines) in headless Chromium.
 // Readouts are checked against the native snapshots (golden), "match" against the CSV the
-// page exports, and the conditional controls (web/conditional.js) on the real page.
+// page exports, and the conditional controls (`applyConditions`, web/ui.js) on the real page.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
@@ -13,13 +13,13 @@ useSession();
 const ID = 'universality';
 
 /**
- * Applies web/conditional.js to the page with the recorded spec, as main.js does after
+ * Applies `applyConditions` (web/ui.js) to the page with the recorded spec, as main.js does after
  * every update once it is hooked in (calling it again is harmless: it is idempotent).
  */
 async function applyConditions(page) {
   const spec = golden(ID).spec;
   await page.evaluate(async (s) => {
-    const { applyConditions: apply } = await import(new URL('web/conditional.js', document.baseURI).href);
+    const { applyConditions: apply } = await import(new URL('web/ui.js', document.baseURI).href);
     apply(s, document);
   }, spec);
 }

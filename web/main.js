@@ -8,9 +8,7 @@
 // the host-page API outside a frame) are not imported here: they load when first used, and
 // at idle after the first plot, so a click does not wait on the network (see `later`).
 import './state.js'; // first: expands a state= token in the address before anything reads it
-import { buildDemo, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow, setAttr, setText } from './ui.js';
-import { fillLiveCells } from './live-table.js';
-import { applyConditions } from './conditional.js';
+import { applyConditions, buildDemo, fillLiveCells, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow, setAttr, setText } from './ui.js';
 import { cancelPendingWrite, currentQuery, demoFromUrl, queryFor, writeState } from './url.js';
 import { applyEmbedView, connectPage, embedOptions, loadPrediction, loadStyles } from './view.js';
 import { useFullModuleWith, useGlue } from './glue.js';

@@ -1,4 +1,6 @@
-// Builds a demo's controls, readouts and plot canvases from its Rust declaration.
+// Builds a demo's controls, readouts and plot canvases from its Rust declaration, shows or
+// hides conditional controls and fills a reference table's live cells (both at the end of
+// this file: in the module the first plot needs anyway, each a request fewer before it).
 // Every string from outside is inserted with textContent, never as HTML; the only markup
 // inserted is the equation's MathML, which comes from the compiled Rust declaration.
 
@@ -359,4 +361,76 @@ export function notify(box, message, kind = 'info') {
   p.append(close);
   box.append(p);
   while (box.children.length > 5) box.firstChild.remove();
+}
+
+// Conditional controls: a parameter whose spec carries `visible_when: [key, index]` is shown
+// only while the parameter `key` has the value `index` (a choice's option index, or 0/1 for
+// a checkbox), e.g. a machine's sliders only while that machine is chosen. Hidden
+// controls keep their values. Only controls hidden here are ever shown again here, so the
+// embed view's `controls=` choice is left alone.
+
+const MARK = 'conditional';
+
+/** The current value of parameter `key` as the page shows it, or null if it has no control. */
+function shownValue(root, key) {
+  const input = root.querySelector(`[data-param="${CSS.escape(key)}"] [data-key]`);
+  if (!input) return null;
+  if (input.type === 'checkbox') return input.checked ? 1 : 0;
+  const form = input.closest('.param');
+  const number = form && form.querySelector('input[type="number"]');
+  return Number(number ? number.value : input.value);
+}
+
+/**
+ * Shows or hides every control with a `visible_when` condition in `spec` (the demo's spec
+ * from `Session.spec()`), reading the controlling values from the page under `root`.
+ * Call it after the controls are built and after every update.
+ */
+export function applyConditions(spec, root = document) {
+  for (const param of spec.params) {
+    const when = param.visible_when;
+    if (!Array.isArray(when) || when.length !== 2) continue;
+    const wrap = root.querySelector(`.param[data-param="${CSS.escape(param.key)}"]`);
+    if (!wrap) continue;
+    const show = shownValue(root, when[0]) === Number(when[1]);
+    if (!show && !wrap.hidden) {
+      wrap.hidden = true;
+      wrap.dataset.hiddenBy = MARK;
+    } else if (show && wrap.dataset.hiddenBy === MARK) {
+      wrap.hidden = false;
+      delete wrap.dataset.hiddenBy;
+    }
+  }
+}
+
+// Live cells of a demo's reference table. A cell whose whole text is `{readout:<key>}`
+// (declared in Rust with `live_cell!`, see `Table::live_cells` in crates/app/src/spec.rs)
+// shows the current text of readout `<key>`; every other cell stays as declared. The text
+// comes from Rust, already formatted and translated: no numbers are computed here.
+
+
+const LIVE = /^\{readout:([A-Za-z0-9_-]+)\}$/;
+
+/**
+ * Fills the live cells of `table` (the view `buildTable` returns: `{ rows: Map<key, tr> }`,
+ * or null) with the texts of `readouts` (`[{ key, text }]`, as `Session.update` returns
+ * them). Call after every update; the first call marks each live cell with
+ * `data-live-readout="<key>"` so the declared marker never shows. A readout that is
+ * missing shows as "—".
+ */
+export function fillLiveCells(table, readouts) {
+  if (!table) return;
+  const texts = new Map(readouts.map((r) => [r.key, r.text]));
+  for (const tr of table.rows.values()) {
+    for (const cell of tr.cells) {
+      let key = cell.dataset.liveReadout;
+      if (key === undefined) {
+        const m = LIVE.exec(cell.textContent);
+        if (!m) continue;
+        key = m[1];
+        cell.dataset.liveReadout = key;
+      }
+      setText(cell, texts.get(key) ?? '—');
+    }
+  }
 }
