@@ -106,12 +106,12 @@ pub(super) struct Study {
 
 impl Study {
     /// The study from an initial displacement `x0` times this one's (this one's is
-    /// [`UNIT_X0`] in the full module's cache): every error times `x0`, the steps, evaluations and orders
-    /// unchanged. The oscillator and every method are linear in the initial state, and the
-    /// study's fit window and DP45's absolute tolerance are proportional to `x₀`, so a rerun
-    /// from `x0` measures the same up to rounding (`zeta-solver`'s
-    /// `a_study_from_a_scaled_start_is_the_unit_study_scaled`); an `x₀` drag needs no new
-    /// study.
+    /// [`UNIT_X0`] in the full module's cache): every error times `x0`, the steps,
+    /// evaluations and orders unchanged. The oscillator and every method are linear in the
+    /// initial state, and the study's fit window and DP45's absolute tolerance are
+    /// proportional to `x₀`, so a rerun from `x0` measures the same up to rounding
+    /// (`zeta-solver`'s `a_study_from_a_scaled_start_is_the_unit_study_scaled`); an `x₀`
+    /// drag needs no new study.
     pub(super) fn scaled(&self, x0: f64) -> Self {
         Self {
             key: self.key,
@@ -229,7 +229,8 @@ impl Cache {
                 limits
             }
         };
-        // The study is of the release from x₀ = 1, scaled to p.x0 below.
+        // The study is of the release from x₀ = 1, scaled to p.x0 below (a first module's
+        // from p.x0 itself: `study_x0`).
         let unit = P {
             x0: study_x0(p.x0),
             ..*p
