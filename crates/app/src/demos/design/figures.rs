@@ -146,13 +146,13 @@ pub(super) fn pareto(d: &DesignSpace, p: &P, r: &Results) -> Figure {
         Axis::linear(text::comfort_axis(), "m/s²", yr),
     );
     if let Some((ik, kcol)) = d.column_near(p.k) {
-        let n = d.k_axis.len();
+        let (n, comfort) = (d.k_axis.len(), d.comfort());
         let inside = |(x, y): (f64, f64)| x >= xr.0 && x <= xr.1 && y >= yr.0 && y <= yr.1;
         let points = (0..d.c_axis.len())
             .map(|ic| {
                 let i = ic * n + ik;
                 let at = |v: &[f64]| v.get(i).copied().unwrap_or(f64::NAN);
-                let pt = (at(&d.maps.settling_time), at(&d.comfort().accel_rms));
+                let pt = (at(&d.maps.settling_time), at(&comfort.accel_rms));
                 if inside(pt) {
                     pt
                 } else {
