@@ -7,7 +7,7 @@ use zeta_solver::integrate::convergence::{
     asymptotic_range, fit_power_law, nested_study, NestedGrids, NestedStudy, PowerLaw, RunStatus,
 };
 use zeta_solver::integrate::stability::{region_boundary, Stability};
-use zeta_solver::integrate::work_precision::dopri5_sweep;
+use zeta_solver::integrate::work_precision::{dopri5_sweep, WorkPrecision};
 use zeta_solver::integrate::{
     Dopri5, Dopri5Config, Euler, ExactStepGrid, FixedStep, Heun, IntegrationError, Linear2, Method,
     Rk4, Scalar, SymplecticEuler,
@@ -32,6 +32,43 @@ fn release_study<M: FixedStep>(
         |t| exact.displacement(t),
         grids,
         window,
+    )
+}
+
+/// [`dopri5_sweep`] over `tols` of `sys` released from `x0` at rest over `[0, t_end]` (s):
+/// `rtol = tol`, `atol = tol·x0`, the error the largest displacement error at the accepted
+/// steps against the closed form, fitted within `window` over local orders within 0.03.
+fn release_sweep(
+    sys: SecondOrder,
+    x0: f64,
+    t_end: f64,
+    tols: &[f64],
+    window: FitWindow,
+) -> WorkPrecision {
+    let exact = FreeResponse::new(sys, x0, 0.0);
+    let limit = Dopri5::new(Dopri5Config::default())
+        .unwrap()
+        .stable_steps(&sys);
+    dopri5_sweep(
+        &Linear2::free(sys),
+        [x0, 0.0],
+        t_end,
+        tols,
+        |tol| Dopri5Config {
+            rtol: tol,
+            atol: tol * x0,
+            ..Dopri5Config::default()
+        },
+        |sol| {
+            sol.t
+                .iter()
+                .zip(&sol.y)
+                .map(|(&t, y)| (y[0] - exact.displacement(t)).abs())
+                .fold(0.0, f64::max)
+        },
+        limit,
+        window,
+        0.03,
     )
 }
 
@@ -266,34 +303,11 @@ fn dp45_work_precision_has_order_five_where_the_tolerance_sets_the_steps() {
     let tols = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
     let run = |zeta: f64, wn: f64, t_end: f64| {
         let sys = SecondOrder::from_natural(wn, zeta).unwrap();
-        let exact = FreeResponse::new(sys, 1.0, 0.0);
-        let limit = Dopri5::new(Dopri5Config::default())
-            .unwrap()
-            .stable_steps(&sys);
-        dopri5_sweep(
-            &Linear2::free(sys),
-            [1.0, 0.0],
-            t_end,
-            &tols,
-            |tol| Dopri5Config {
-                rtol: tol,
-                atol: tol,
-                ..Dopri5Config::default()
-            },
-            |sol| {
-                sol.t
-                    .iter()
-                    .zip(&sol.y)
-                    .map(|(&t, y)| (y[0] - exact.displacement(t)).abs())
-                    .fold(0.0, f64::max)
-            },
-            limit,
-            FitWindow {
-                floor: 1e-10,
-                ceiling: 0.5,
-            },
-            0.03,
-        )
+        let window = FitWindow {
+            floor: 1e-10,
+            ceiling: 0.5,
+        };
+        release_sweep(sys, 1.0, t_end, &tols, window)
     };
     // Lightly damped over 20 s: the tolerance sets every step; e ∝ N^(−5) within 0.1.
     let light = run(0.05, 2.0, 20.0);
@@ -399,33 +413,7 @@ fn a_study_from_a_scaled_start_is_the_unit_study_scaled() {
     let tols = [1e-2, 1e-4, 1e-6, 1e-8, 1e-10];
     for (zeta, wn, t_end) in [(0.05, 2.0, 20.0), (2.0, 20.0, 5.0)] {
         let sys = SecondOrder::from_natural(wn, zeta).unwrap();
-        let limit = Dopri5::new(Dopri5Config::default())
-            .unwrap()
-            .stable_steps(&sys);
-        let sweep = |s: f64| {
-            let exact = FreeResponse::new(sys, s, 0.0);
-            dopri5_sweep(
-                &Linear2::free(sys),
-                [s, 0.0],
-                t_end,
-                &tols,
-                |tol| Dopri5Config {
-                    rtol: tol,
-                    atol: tol * s,
-                    ..Dopri5Config::default()
-                },
-                |sol| {
-                    sol.t
-                        .iter()
-                        .zip(&sol.y)
-                        .map(|(&t, y)| (y[0] - exact.displacement(t)).abs())
-                        .fold(0.0, f64::max)
-                },
-                limit,
-                scaled_window(s),
-                0.03,
-            )
-        };
+        let sweep = |s: f64| release_sweep(sys, s, t_end, &tols, scaled_window(s));
         let unit = sweep(1.0);
         for s in [0.05, 0.37, 1.9, 0.73] {
             let (scaled, rerun) = (unit.scaled(s), sweep(s));
@@ -446,7 +434,7 @@ fn a_study_from_a_scaled_start_is_the_unit_study_scaled() {
                     false => assert!(a.work.abs_diff(b.work) * 50 <= b.work, "{what}"),
                 }
             }
-            let errors = |w: &zeta_solver::integrate::work_precision::WorkPrecision| {
+            let errors = |w: &WorkPrecision| {
                 w.points
                     .iter()
                     .map(|q| (q.tolerance, q.error))
