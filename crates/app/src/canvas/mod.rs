@@ -16,7 +16,8 @@ mod html;
 mod web;
 
 pub use direct::{prepare, CanvasDirect};
-pub use html::{CanvasError, HtmlCanvas, Memory};
+use html::Memory;
+pub use html::{CanvasError, HtmlCanvas};
 use plotters_backend::BackendTextStyle;
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -51,7 +52,7 @@ pub fn on(canvas: &HtmlCanvasElement) -> Option<Canvas> {
 /// A page canvas with its 2D context, taken once: a session draws on the same canvases
 /// every frame, and `getContext` is a call into JavaScript (about 0.4 ms a frame at 4×
 /// CPU slowdown for one plot, profiled 2026-12-01). Resizing a canvas resets its context's
-/// state but keeps the object; the memory of that state (see [`html::Memory`]) is kept
+/// state but keeps the object; the memory of that state (`html::Memory`) is kept
 /// here too, so each frame's backend sets only what differs from the frame before.
 pub struct Surface {
     /// The canvas.
