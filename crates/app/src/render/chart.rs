@@ -243,7 +243,8 @@ pub(super) fn draw<DB: DrawingBackend>(
         }
     }
 
-    draw_lines_and_markers(&mut chart, fig, theme, scale, out.direct)?;
+    let right = area.get_pixel_range().0.end;
+    draw_lines_and_markers(&mut chart, fig, theme, scale, (out.direct, right))?;
     match placement {
         Placement::Inside(x, y) => {
             let plot = chart.plotting_area().strip_coord_spec();

@@ -53,14 +53,26 @@ pub(super) fn label_offset(x: i32, width: i32, right: i32, scale: f64) -> (i32, 
     (dx, -(px(16.0, scale) as i32))
 }
 
+/// Where a text marker of `width` px anchored at backend pixel `x` starts, relative to `x`:
+/// at it, or ending a little left of it when it would run past `right`, the canvas's right
+/// edge (px). A label placed just right of a line near the edge (the current step on a
+/// convergence plot) then reads in full on the line's left instead of being cut.
+pub(super) fn text_offset(x: i32, width: i32, right: i32, scale: f64) -> i32 {
+    match x + width > right {
+        true => -width - px(12.0, scale) as i32,
+        false => 0,
+    }
+}
+
 /// Draws the series and markers of `fig`; returns the legend entries. With `direct`, the
-/// backend dashes each series as one path (see [`super::Direct::dash`]).
+/// backend dashes each series as one path (see [`super::Direct::dash`]). `right` is the
+/// canvas's right edge (backend px), which text markers keep within.
 pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     fig: &'f Figure,
     theme: &Theme,
     scale: f64,
-    direct: Option<&dyn super::Direct>,
+    (direct, right): (Option<&dyn super::Direct>, i32),
 ) -> Result<Vec<(&'f str, LineStyle)>, RenderError> {
     let fg = theme.foreground;
     let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
@@ -130,9 +142,15 @@ pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
                     .map_err(err)?;
             }
             MarkerShape::Label => {
+                let style = font(14.0);
+                let width = chart
+                    .plotting_area()
+                    .estimate_text_size(&m.label, &style)
+                    .map_or(0, |(w, _)| w as i32);
+                let dx = text_offset(chart.backend_coord(&(x, y)).0, width, right, scale);
                 chart
                     .draw_series(std::iter::once(
-                        EmptyElement::at((x, y)) + Text::new(m.label.clone(), (0, 0), font(14.0)),
+                        EmptyElement::at((x, y)) + Text::new(m.label.clone(), (dx, 0), style),
                     ))
                     .map_err(err)?;
                 continue;

@@ -248,7 +248,8 @@ fn draw_schematic<DB: DrawingBackend>(
         ..fig.clone()
     };
     // Dashes as segments: a schematic has few, short ones.
-    draw_lines_and_markers(&mut chart, &fitted, theme, scale, None)?;
+    let right = root.get_pixel_range().0.end;
+    draw_lines_and_markers(&mut chart, &fitted, theme, scale, (None, right))?;
     Ok(PlotGeometry {
         area: (0.0, 0.0, w, h),
         x,

@@ -423,3 +423,53 @@ fn a_marker_label_near_the_right_edge_goes_left_of_its_point() {
     // The gap and the rise scale with the device pixel ratio.
     assert_eq!(label_offset(100, 10, 640, 2.0), (16, -32));
 }
+
+#[test]
+fn a_text_marker_that_would_run_off_the_canvas_ends_left_of_its_anchor() {
+    use super::lines::text_offset;
+    // 100 px of text at x = 500 fits before an edge at 640 (drawn at the anchor) …
+    assert_eq!(text_offset(500, 100, 640, 1.0), 0);
+    // … but not before one at 560: it ends 12 px left of the anchor.
+    assert_eq!(text_offset(500, 100, 560, 1.0), -112);
+    assert_eq!(text_offset(500, 100, 560, 2.0), -124);
+    // Drawn: the label of the current step on a convergence plot, just right of its line
+    // at the right end of the axis, is written whole on the line's left.
+    let text = "h = 300 ms";
+    let label = |at: f64| {
+        let fig = Figure {
+            markers: vec![Marker::text(text, (at, 0.0), Ink::Sky)],
+            ..sample()
+        };
+        let mut svg = String::new();
+        let geometry = {
+            let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+            render(&root, &fig, &Theme::LIGHT, 1.0).unwrap()
+        };
+        let anchor = geometry.to_pixel(at, 0.0).0;
+        let tag = svg
+            .split("<text")
+            .find(|t| t.contains(text))
+            .unwrap_or_else(|| panic!("{text} drawn: {svg}"))
+            .to_owned();
+        let x: f64 = tag
+            .split("x=\"")
+            .nth(1)
+            .unwrap()
+            .split('"')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        (x, anchor)
+    };
+    let (x, anchor) = label(0.5);
+    assert!(
+        (x - anchor).abs() <= 1.0,
+        "in the middle: at its anchor ({x} vs {anchor})"
+    );
+    let (x, anchor) = label(0.99);
+    assert!(
+        x < anchor - 50.0,
+        "at the edge: left of its anchor ({x} vs {anchor})"
+    );
+}
