@@ -33,11 +33,21 @@ pub(super) type Edges = (f64, f64, f64, f64);
 /// A chart over data values, on linear or log axes (one type for every pairing).
 pub(super) type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<Scale, Scale>>;
 
+/// Whether a canvas `height` backend pixels high is short (under 300 px at scale 1: a
+/// phone's staged plot, about 200 px, and its other plots): the tick labels and the axis
+/// name under the chart sit closer, so more of the height is data.
+fn is_short(height: u32, scale: f64) -> bool {
+    f64::from(height) < 300.0 * scale
+}
+
+/// The chart of `fig` on `area`, leaving room for the title, tick labels and axis names;
+/// `short` (see [`is_short`]): less room under the chart.
 pub(super) fn build<'a, DB: DrawingBackend>(
     area: &'a DrawingArea<DB, Shift>,
     fig: &Figure,
     theme: &Theme,
     scale: f64,
+    short: bool,
 ) -> Result<Chart<'a, DB>, RenderError> {
     // The title's band, left blank for [`draw_title`]: as high as the title at its full
     // size, whatever size it is drawn at, so a title that grows or shrinks with the data
@@ -49,7 +59,8 @@ pub(super) fn build<'a, DB: DrawingBackend>(
         .caption("", font)
         .margin(px(MARGIN, scale))
         .margin_right(px(right_margin(fig), scale))
-        .x_label_area_size(px(42.0, scale))
+        .margin_bottom(px(if short { 4.0 } else { MARGIN }, scale))
+        .x_label_area_size(px(if short { 34.0 } else { 42.0 }, scale))
         .y_label_area_size(px(64.0, scale))
         .build_cartesian_2d(Scale::of(&fig.x), Scale::of(&fig.y))
         .map_err(err)
@@ -136,6 +147,7 @@ pub(super) fn draw<DB: DrawingBackend>(
     let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
     let entries = legend_entries(fig);
     let legend = Legend::measure(root, &entries, scale)?;
+    let short = is_short(root.dim_in_pixel().1, scale);
 
     // Where the legend can go without covering data: a trial layout gives the pixels.
     // During a held drag it stays where it was (`out.legend`; a box whose entries grew is
@@ -151,7 +163,7 @@ pub(super) fn draw<DB: DrawingBackend>(
         if let Some(direct) = out.direct {
             direct.mute(true);
         }
-        let trial = build(root, fig, theme, scale);
+        let trial = build(root, fig, theme, scale, short);
         if let Some(direct) = out.direct {
             direct.mute(false);
         }
@@ -176,7 +188,7 @@ pub(super) fn draw<DB: DrawingBackend>(
     if let Some(direct) = out.direct {
         direct.begin_layer(key);
     }
-    let mut chart = build(&area, fig, theme, scale)?;
+    let mut chart = build(&area, fig, theme, scale, short)?;
 
     // Axis names as long as the axes: one size for both, each cut only if it must be.
     let (px_w, px_h) = chart.plotting_area().dim_in_pixel();

@@ -163,10 +163,24 @@ impl Legend {
     }
 
     /// Entries laid out in rows across `width`: the start x of each entry and its row.
+    /// The rows start under the plotting area (64 px in, past the y axis's labels) unless
+    /// starting at the edge takes fewer rows (a phone's narrow plot: every row under the
+    /// chart is a row less of data).
     fn rows(&self, width: u32, scale: f64) -> Vec<(i32, i32)> {
+        let (pad, ..) = Self::metrics(scale);
+        let under = self.rows_from(px(64.0, scale) as i32, width, scale);
+        let edge = self.rows_from(pad, width, scale);
+        let count = |r: &[(i32, i32)]| r.last().map_or(0, |&(_, row)| row);
+        match count(&edge) < count(&under) {
+            true => edge,
+            false => under,
+        }
+    }
+
+    /// Entries laid out in rows across `width`, each row starting at `left` (px).
+    fn rows_from(&self, left: i32, width: u32, scale: f64) -> Vec<(i32, i32)> {
         let (pad, swatch, gap, _) = Self::metrics(scale);
         let spacing = px(16.0, scale) as i32;
-        let left = px(64.0, scale) as i32;
         let limit = (width as i32 - pad).max(left + 1);
         let (mut x, mut row) = (left, 0);
         let mut out = Vec::with_capacity(self.widths.len());

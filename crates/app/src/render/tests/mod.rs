@@ -473,3 +473,48 @@ fn a_text_marker_that_would_run_off_the_canvas_ends_left_of_its_anchor() {
         "at the edge: left of its anchor ({x} vs {anchor})"
     );
 }
+
+#[test]
+fn a_phone_sized_plot_keeps_its_height_for_data() {
+    // Quarter-car's response plot on a phone's stage (340 × 207 CSS px at DPR 2): five
+    // entries, curves in every corner, so the legend goes in rows under the chart.
+    let labels = [
+        "comfort 0.3, 0.4",
+        "performance 0.65, 0.7",
+        "critical 1 (×)",
+        "overdamped 2 (●)",
+        "this design, ζ 0.300",
+    ];
+    let mut fig = sample();
+    fig.markers.clear();
+    fig.series = labels
+        .iter()
+        .enumerate()
+        .map(|(k, label)| {
+            let level = -0.9 + 0.45 * k as f64;
+            let points = (0..=40)
+                .map(|i| (f64::from(i) / 40.0, level * (1.0 - 2.0 * f64::from(i % 2))))
+                .collect();
+            Series::new(*label, points, LineStyle::solid(Ink::Blue, 1.5))
+        })
+        .collect();
+    let scale = 2.0;
+    let (w, h) = (680, 414);
+    let mut svg = String::new();
+    let g = {
+        let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
+        render(&root, &fig, &Theme::LIGHT, scale).unwrap()
+    };
+    assert!(matches!(g.legend, Placement::Below(_)), "{:?}", g.legend);
+    for label in labels {
+        assert!(svg.contains(label), "{label} drawn");
+    }
+    // Rows from the canvas's edge (three, not four from under the plot) and tick labels
+    // and axis name closer under a short chart: over a third of the height is data.
+    let data = (g.area.3 - g.area.1) / f64::from(h);
+    assert!(
+        data > 0.36,
+        "plotting area {:.0} % of the height",
+        data * 100.0
+    );
+}
