@@ -1,7 +1,7 @@
 //! The legend: measured through the backend, placed over no data or in rows below.
 
 use super::chart::Chart;
-use super::lines::{label_offset, segments};
+use super::lines::{estimated_width, label_offset, segments};
 use super::{err, px, RenderError};
 use crate::figure::{Dash, Figure, LineStyle};
 use crate::theme::Theme;
@@ -97,7 +97,7 @@ pub(super) fn free_corner<DB: DrawingBackend>(
         let _ = mark(x, y);
         if !mk.label.is_empty() {
             // Where draw_lines_and_markers puts the label (its width estimated here).
-            let w = (mk.label.chars().count() as f64 * 7.0 * scale) as i32;
+            let w = estimated_width(&mk.label, 7.0, scale);
             let (dx, dy) = label_offset(x + xs.start, w, xs.end, scale);
             for i in 0..=4 {
                 let _ = mark(x + dx + w * i / 4, y + dy);

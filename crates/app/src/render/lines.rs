@@ -41,6 +41,12 @@ pub(super) fn segments(s: &Series, fig: &Figure) -> (Vec<Vec<(f64, f64)>>, bool)
     (out, clipped)
 }
 
+/// A text's width (backend px) estimated from its length, `per_char` px a character at
+/// scale 1, instead of measured: where measuring costs more than a slightly wide guess.
+pub(super) fn estimated_width(text: &str, per_char: f64, scale: f64) -> i32 {
+    (text.chars().count() as f64 * per_char * scale) as i32
+}
+
 /// Where a marker's label of `width` px goes, relative to its point at backend pixel `x`:
 /// right of the point and above it, or left of it when it would run past `right`, the
 /// plotting area's right edge (px).
@@ -144,7 +150,7 @@ pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
             MarkerShape::Label => {
                 // Its width estimated, not measured (a little wide: 8 px a character at
                 // 14 px; a sans serif's average is nearer 7.5): an overflow decides the side.
-                let width = (m.label.chars().count() as f64 * 8.0 * scale) as i32;
+                let width = estimated_width(&m.label, 8.0, scale);
                 let dx = text_offset(chart.backend_coord(&(x, y)).0, width, right, scale);
                 chart
                     .draw_series(std::iter::once(
