@@ -124,6 +124,47 @@ test('numbers follow the language: readouts, the animation clock and an SVG expo
   }
 });
 
+test('English numbers are written as Intl writes them, without building an Intl.NumberFormat (its first costs ~150 ms at 4× CPU)', async () => {
+  // Notes each Intl.NumberFormat the page builds: the time since the first plot, or -1 before it.
+  const before = (context) =>
+    context.addInitScript(() => {
+      const Native = Intl.NumberFormat;
+      window.__numberFormats = [];
+      Intl.NumberFormat = function (...args) {
+        const drawn = performance.getEntriesByName('zeta:first-draw')[0];
+        window.__numberFormats.push(drawn ? Math.round(performance.now() - drawn.startTime) : -1);
+        return new Native(...args);
+      };
+      Intl.NumberFormat.prototype = Native.prototype;
+    });
+  // Quarter-car has an animation clock, written in the first frame.
+  const { page, errors, context } = await open(browser, `${server.url}?demo=quarter-car&lang=en`, { before });
+  assert.equal(await page.textContent('.anim-time'), 't = 0.00 s');
+  const built = await page.evaluate(() => window.__numberFormats);
+  assert.deepEqual(built, [], 'Intl.NumberFormat built (ms after the first plot)');
+  // The page's English form is Intl's, digit for digit: its rounding of the shortest decimal
+  // (1.005 → 1.01), half away from zero, grouping, signs.
+  const mismatches = await page.evaluate(async () => {
+    const { num } = await import(new URL('web/i18n.js', document.baseURI).href);
+    const values = [0, 1, -1, 0.5, 2.5, -2.5, 0.125, -0.125, 1.005, 2.675, 4.35, 0.045, 999.995, 1234.5, -1234.5, 123456789.125, 9.999e20, -0.001, 1e-7, 5e-7, 1 / 3, 2 ** 53 + 2];
+    let seed = 7;
+    const random = () => ((seed = (seed * 48271) % 2147483647) / 2147483647);
+    for (let i = 0; i < 3000; i++) values.push((random() - 0.5) * 10 ** (random() * 14 - 5));
+    for (let i = 0; i < 2000; i++) values.push((Math.round(random() * 1e5) / 8) * (random() < 0.5 ? -1 : 1));
+    const out = [];
+    for (const v of values) {
+      for (let d = 0; d <= 6; d++) {
+        const want = new Intl.NumberFormat('en', { minimumFractionDigits: d, maximumFractionDigits: d }).format(v);
+        if (num(v, d) !== want) out.push(`${v} (${d}): ${num(v, d)} ≠ ${want}`);
+      }
+    }
+    return out;
+  });
+  assert.deepEqual(mismatches.slice(0, 10), []);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('the language menu lists every language by its own name and switches page and demo, keeping the values', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&zeta=0.25&x0=0.05`, { locale: 'en-GB' });
   const fetched = [];
