@@ -11,15 +11,27 @@ pub type AxisRanges = ((f64, f64), (f64, f64));
 /// While a control is dragged, a plot keeps the ranges it was last drawn with (`held`),
 /// widened only as far as the new figure's own ranges need, so the axes hold still and the
 /// change the control makes is seen; the figure's own ranges return when the drag ends.
-/// Schematics (equal scales, no axes) are left alone.
+/// An axis whose own range has shrunk under a third of the held one (on log axes, in
+/// decades) takes its own at once: held, the curve would be a sliver along it (a current
+/// damped to a tenth of the axis, a response ending at a sixth of the time axis). The
+/// plot then holds that range. Schematics (equal scales, no axes) are left alone.
 pub fn hold_axes(fig: &mut Figure, held: Option<AxisRanges>) {
     let Some((hx, hy)) = held else { return };
     if fig.kind != FigureKind::Plot {
         return;
     }
-    let widen = |(lo, hi): (f64, f64), (a, b): (f64, f64)| (lo.min(a), hi.max(b));
-    fig.x.range = widen(hx, fig.x.range);
-    fig.y.range = widen(hy, fig.y.range);
+    let hold = |(lo, hi): (f64, f64), (a, b): (f64, f64), log: bool| {
+        let span = |(lo, hi): (f64, f64)| match log && lo > 0.0 {
+            true => (hi / lo).ln(),
+            false => hi - lo,
+        };
+        match span((a, b)) < span((lo, hi)) / 3.0 {
+            true => (a, b),
+            false => (lo.min(a), hi.max(b)),
+        }
+    };
+    fig.x.range = hold(hx, fig.x.range, fig.x.scale == AxisScale::Log);
+    fig.y.range = hold(hy, fig.y.range, fig.y.scale == AxisScale::Log);
 }
 
 /// After a drag, moves a plot's axes from the ranges it was held at (`from`) towards the

@@ -142,6 +142,20 @@ fn a_tick_at_zero_reads_0_not_the_rounding_left_from_adding_steps() {
 
 #[test]
 fn held_axes_keep_their_ranges_and_widen_only_for_data_that_leaves_them() {
+    // Data shrunk under a third of a held axis: that axis takes the data's own range.
+    let mut shrunk = sample();
+    shrunk.x.range = (0.0, 9.6);
+    shrunk.y.range = (-0.5, 0.5);
+    hold_axes(&mut shrunk, Some(((0.0, 60.0), (-1.2, 1.2))));
+    assert_eq!((shrunk.x.range, shrunk.y.range), ((0.0, 9.6), (-1.2, 1.2)));
+    let mut decades = sample();
+    decades.x = Axis::log("f", "Hz", (0.1, 100.0));
+    decades.x.range = (1.0, 2.0);
+    hold_axes(&mut decades, Some(((0.1, 100.0), (-1.0, 1.0))));
+    assert_eq!(decades.x.range, (1.0, 2.0));
+    decades.x.range = (1.0, 20.0); // 1.3 of 3 decades: held
+    hold_axes(&mut decades, Some(((0.1, 100.0), (-1.0, 1.0))));
+    assert_eq!(decades.x.range, (0.1, 100.0));
     let mut fig = sample();
     fig.x.range = (0.0, 1.2);
     fig.y.range = (-0.5, 0.5);
