@@ -7,38 +7,120 @@ use crate::theme::Theme;
 use plotters::prelude::*;
 
 /// Splits a series at points that cannot be drawn (non-finite, or ≤ 0 on a log axis) and
-/// clamps the rest into the (slightly widened) plot area, so a diverging curve is drawn to
-/// the edge instead of off the canvas. The flag says whether anything was clamped.
+/// clips the rest to the (slightly widened) plot area: a segment that leaves it is drawn to
+/// its edge and resumes where it comes back (clipped in the axes' own scale, so a log axis
+/// clips straight lines of its plot). Nothing is flattened along an edge, where it could be
+/// read as data. The flag says whether anything was clipped.
 pub(super) fn segments(s: &Series, fig: &Figure) -> (Vec<Vec<(f64, f64)>>, bool) {
-    let widen = |(lo, hi): (f64, f64), log: bool| {
-        if log {
-            (lo / 1.05, hi * 1.05)
-        } else {
-            let pad = 0.02 * (hi - lo);
-            (lo - pad, hi + pad)
-        }
-    };
-    let (xl, xh) = widen(fig.x.range, fig.x.scale == AxisScale::Log);
-    let (yl, yh) = widen(fig.y.range, fig.y.scale == AxisScale::Log);
     let x_log = fig.x.scale == AxisScale::Log;
     let y_log = fig.y.scale == AxisScale::Log;
+    // A coordinate in the axis's own scale (log axes: ln), and back.
+    let to = |v: f64, log: bool| if log { v.ln() } else { v };
+    let from = |v: f64, log: bool| if log { v.exp() } else { v };
+    let widen = |(lo, hi): (f64, f64), log: bool| {
+        let (lo, hi) = (to(lo, log), to(hi, log));
+        let pad = 0.02 * (hi - lo);
+        (lo - pad, hi + pad)
+    };
+    let bx = widen(fig.x.range, x_log);
+    let by = widen(fig.y.range, y_log);
     let mut out: Vec<Vec<(f64, f64)>> = Vec::new();
     let mut cur: Vec<(f64, f64)> = Vec::new();
     let mut clipped = false;
+    // The last drawable point, in the axes' scale.
+    let mut prev: Option<(f64, f64)> = None;
+    let inside = |(u, v): (f64, f64)| (bx.0..=bx.1).contains(&u) && (by.0..=by.1).contains(&v);
     for &(x, y) in &s.points {
         let drawable = x.is_finite() && y.is_finite() && (!x_log || x > 0.0) && (!y_log || y > 0.0);
-        if drawable {
-            let p = (x.clamp(xl, xh), y.clamp(yl, yh));
-            clipped |= p != (x, y);
-            cur.push(p);
-        } else if !cur.is_empty() {
-            out.push(std::mem::take(&mut cur));
+        if !drawable {
+            prev = None;
+            if !cur.is_empty() {
+                out.push(std::mem::take(&mut cur));
+            }
+            continue;
+        }
+        // Kept far from overflow; no pixel tells 1e300 from 1e200.
+        let p = (
+            to(x, x_log).clamp(-1e200, 1e200),
+            to(y, y_log).clamp(-1e200, 1e200),
+        );
+        clipped |= !inside(p);
+        let back = |(u, v): (f64, f64)| (from(u, x_log), from(v, y_log));
+        match prev.replace(p) {
+            None if inside(p) => cur.push(back(p)),
+            None => {}
+            Some(a) => match clip(a, p, bx, by) {
+                Some((start, end)) => {
+                    if cur.is_empty() || start != a {
+                        if !cur.is_empty() {
+                            out.push(std::mem::take(&mut cur));
+                        }
+                        cur.push(back(start));
+                    }
+                    cur.push(back(end));
+                    if end != p {
+                        out.push(std::mem::take(&mut cur));
+                    }
+                }
+                None => {
+                    if !cur.is_empty() {
+                        out.push(std::mem::take(&mut cur));
+                    }
+                }
+            },
         }
     }
     if !cur.is_empty() {
         out.push(cur);
     }
     (out, clipped)
+}
+
+/// The part of the segment from `a` to `b` inside the box `x.0..=x.1` × `y.0..=y.1`, as its
+/// end points (each `a` or `b` itself when inside); `None` if it misses the box
+/// (Liang–Barsky: the segment's parameter range narrowed by each edge).
+fn clip(
+    a: (f64, f64),
+    b: (f64, f64),
+    x: (f64, f64),
+    y: (f64, f64),
+) -> Option<((f64, f64), (f64, f64))> {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
+    // Each edge as (−direction, distance to it): the segment enters or leaves there.
+    for (p, q) in [
+        (-dx, a.0 - x.0),
+        (dx, x.1 - a.0),
+        (-dy, a.1 - y.0),
+        (dy, y.1 - a.1),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None; // parallel to this edge and outside it
+            }
+        } else {
+            let t = q / p;
+            if p < 0.0 {
+                t0 = t0.max(t);
+            } else {
+                t1 = t1.min(t);
+            }
+        }
+    }
+    if t0 > t1 {
+        return None;
+    }
+    // The ends themselves where the segment does not leave the box (no rounding).
+    let at = |t: f64| {
+        if t == 0.0 {
+            a
+        } else if t == 1.0 {
+            b
+        } else {
+            (a.0 + t * dx, a.1 + t * dy)
+        }
+    };
+    Some((at(t0), at(t1)))
 }
 
 /// A text's width (backend px) estimated from its length, `per_char` px a character at

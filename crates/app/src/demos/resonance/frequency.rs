@@ -42,25 +42,6 @@ fn level(g: f64, view: View) -> f64 {
     }
 }
 
-/// Replaces points above `top` by gaps, keeping the crossing points pinned to `top` so a
-/// clipped peak still reaches the frame (the renderer would otherwise flatten it along the
-/// edge). Presentation only.
-fn clip_above(points: &mut [(f64, f64)], top: f64) {
-    let above: Vec<bool> = points.iter().map(|p| p.1.is_nan() || p.1 > top).collect();
-    for (i, p) in points.iter_mut().enumerate() {
-        if !above[i] {
-            continue;
-        }
-        let prev_in = i > 0 && !above[i - 1];
-        let next_in = i + 1 < above.len() && !above[i + 1];
-        p.1 = if (prev_in || next_in) && !p.1.is_nan() {
-            top
-        } else {
-            f64::NAN
-        };
-    }
-}
-
 /// The legend entry of the family of damping ratios.
 fn family_label() -> String {
     t!(
@@ -70,7 +51,7 @@ fn family_label() -> String {
     )
 }
 
-/// The magnitude plot's y range and the top its curves are clipped at, in the view and for
+/// The magnitude plot's y range and its top (where labels stop and markers are pinned), in the view and for
 /// the current ζ's resonant peak.
 fn magnitude_range(view: View, peak: Option<frf::Peak>) -> ((f64, f64), f64) {
     match view {
@@ -83,32 +64,28 @@ fn magnitude_range(view: View, peak: Option<frf::Peak>) -> ((f64, f64), f64) {
 }
 
 /// The family's curves on the frequency grid, kept between updates: the phases never
-/// change, the magnitudes only with the view and the top they are clipped at (so moving
-/// `r`, `wn` or `F0` recomputes none of them).
+/// change, the magnitudes only with the view (so moving `zeta`, `r`, `wn` or `F0`
+/// recomputes none of them). They run past the axes' top (the lightly damped peaks reach
+/// 50); the renderer cuts them at whatever range the plot is drawn with, which a held drag
+/// can keep wider than this ζ's own.
 #[derive(Debug, Clone, Default)]
 pub(super) struct Family {
-    /// View and top (bits) of `magnitude`.
-    key: Option<(View, u64)>,
-    /// |H(r)| per member of [`FAMILY`], clipped ([`clip_above`]).
+    /// View of `magnitude`.
+    key: Option<View>,
+    /// |H(r)| per member of [`FAMILY`].
     magnitude: Vec<Vec<(f64, f64)>>,
     /// ∠H(r) \[°\] per member of [`FAMILY`].
     phase: Vec<Vec<(f64, f64)>>,
 }
 
 impl Family {
-    /// Brings the curves up to date for this view and current ζ's peak.
-    pub(super) fn update(&mut self, grid: &[f64], view: View, peak: Option<frf::Peak>) {
-        let (_, top) = magnitude_range(view, peak);
-        let key = Some((view, top.to_bits()));
-        if self.key != key {
-            self.key = key;
+    /// Brings the curves up to date for this view.
+    pub(super) fn update(&mut self, grid: &[f64], view: View) {
+        if self.key != Some(view) {
+            self.key = Some(view);
             self.magnitude = FAMILY
                 .iter()
-                .map(|&zf| {
-                    let mut pts = sampled(grid, |r| gain(r, zf, view));
-                    clip_above(&mut pts, top);
-                    pts
-                })
+                .map(|&zf| sampled(grid, |r| gain(r, zf, view)))
                 .collect();
         }
         if self.phase.is_empty() {
@@ -173,8 +150,7 @@ pub(super) fn magnitude(res: &Results, grid: &[f64], family: &Family) -> Figure 
         }
         band_text = text::describe_band(&h, width, has_peak);
     }
-    let mut cur = sampled(grid, |r| gain(r, z, view));
-    clip_above(&mut cur, top);
+    let cur = sampled(grid, |r| gain(r, z, view));
     series.push(Series::new(
         t!("resonance-current", zeta = trimmed(z, 3)),
         cur,
@@ -251,22 +227,4 @@ pub(super) fn phase(res: &Results, grid: &[f64], family: &Family) -> Figure {
         Ink::Green,
     ))
     .described(text::describe_phase(res, ph))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::clip_above;
-
-    #[test]
-    fn clipping_pins_crossings_and_gaps_the_rest() {
-        let mut p = vec![(1.0, 1.0), (2.0, 5.0), (3.0, 9.0), (4.0, 6.0), (5.0, 1.0)];
-        clip_above(&mut p, 4.0);
-        assert_eq!(p[1].1, 4.0);
-        assert!(p[2].1.is_nan());
-        assert_eq!(p[3].1, 4.0);
-        assert_eq!(p[4].1, 1.0);
-        let mut inf = vec![(1.0, 1.0), (2.0, f64::INFINITY), (3.0, 1.0)];
-        clip_above(&mut inf, 4.0);
-        assert_eq!(inf[1].1, 4.0);
-    }
 }

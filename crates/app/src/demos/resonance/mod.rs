@@ -133,7 +133,7 @@ impl Model for Resonance {
     fn step(&mut self, p: &P) -> Option<Results> {
         let resp = p.response()?;
         let peak = frf::peak(p.zeta).filter(|pk| pk.ratio > 0.0);
-        self.family.update(&self.grid, p.view, peak);
+        self.family.update(&self.grid, p.view);
         Some(Results {
             p: *p,
             peak,

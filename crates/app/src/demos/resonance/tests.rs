@@ -172,3 +172,20 @@ fn the_kept_family_is_the_one_computed_afresh() {
     let moves = [("r", "2"), ("zeta", "0.05"), ("view", "db")];
     crate::demos::testing::assert_kept_is_fresh("resonance", "wn=3", &moves);
 }
+
+#[test]
+fn the_family_carries_its_peaks_whatever_the_current_zetas_axis() {
+    // At ζ = 0.3 the magnitude axis ends at 2.5; a drag that started at ζ = 0.05 holds it
+    // at 12 (the renderer keeps the wider range). The family's curves must still be their
+    // own, peaks and all, for the renderer to cut at the axis drawn: the lightest member,
+    // ζ = 0.01, peaks at 1/(2ζ√(1 − ζ²)) ≈ 50 near r = 1.
+    let f = Resonance::run("zeta=0.3&r=1");
+    let fig = &f.figures[0];
+    assert!(fig.y.range.1 < 3.0, "{:?}", fig.y.range);
+    let lightest = &fig.series[0];
+    assert!(lightest.points.iter().all(|p| p.1.is_finite()));
+    let top = lightest.points.iter().map(|p| p.1).fold(0.0, f64::max);
+    let peak = 1.0 / (2.0 * 0.01 * (1.0f64 - 1e-4).sqrt());
+    // The grid's nearest point to the peak is within a few parts in a thousand of it.
+    assert!(close(top, peak, 5e-3), "{top} vs {peak}");
+}

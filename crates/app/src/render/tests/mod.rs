@@ -532,3 +532,56 @@ fn a_phone_sized_plot_keeps_its_height_for_data() {
         data * 100.0
     );
 }
+
+#[test]
+fn a_curve_that_leaves_the_axes_is_cut_at_their_edge_not_drawn_along_it() {
+    let mut fig = sample();
+    // y range −1…1, widened 2 % of the span to ±1.04 for drawing.
+    let top = 1.04;
+    // A peak far above: two pieces, each reaching the edge where the curve crosses it.
+    fig.series[0].points = vec![(0.0, 0.0), (0.5, 10.0), (1.0, 0.0)];
+    let (segs, clipped) = segments(&fig.series[0], &fig);
+    assert!(clipped);
+    assert_eq!(segs.len(), 2, "{segs:?}");
+    let near =
+        |a: (f64, f64), b: (f64, f64)| (a.0 - b.0).abs() < 1e-12 && (a.1 - b.1).abs() < 1e-12;
+    let crossing = 0.5 * top / 10.0; // where the line from (0, 0) to (0.5, 10) reaches the edge
+    assert!(
+        near(segs[0][0], (0.0, 0.0)) && near(segs[0][1], (crossing, top)),
+        "{segs:?}"
+    );
+    assert!(
+        near(segs[1][0], (1.0 - crossing, top)) && near(segs[1][1], (1.0, 0.0)),
+        "{segs:?}"
+    );
+    // Nothing beyond the edge, nothing along it: no two points at the top in a row.
+    for seg in &segs {
+        assert!(seg.iter().all(|p| p.1 <= top + 1e-12));
+        assert!(seg.windows(2).all(|w| !(w[0].1 == top && w[1].1 == top)));
+    }
+    // A line from far left to far right of the range crosses it whole.
+    fig.series[0].points = vec![(-10.0, 0.5), (10.0, 0.5)];
+    let (segs, _) = segments(&fig.series[0], &fig);
+    assert_eq!(segs.len(), 1);
+    assert!(
+        near(segs[0][0], (-0.02, 0.5)) && near(segs[0][1], (1.02, 0.5)),
+        "{segs:?}"
+    );
+    // One that passes beside the range is not drawn; one inside is drawn as it is.
+    fig.series[0].points = vec![(-10.0, 5.0), (10.0, 5.0)];
+    assert!(segments(&fig.series[0], &fig).0.is_empty());
+    fig.series[0].points = vec![(0.1, 0.2), (0.3, -0.4), (0.9, 0.9)];
+    let (segs, clipped) = segments(&fig.series[0], &fig);
+    assert!(!clipped);
+    assert_eq!(segs, [fig.series[0].points.clone()]);
+    // On a log axis the cut is where the straight line of the plot (in log x) crosses it.
+    fig.x = Axis::log("r", "", (0.1, 10.0));
+    fig.series[0].points = vec![(0.1, 0.0), (10.0, 3.0)];
+    let (segs, _) = segments(&fig.series[0], &fig);
+    // From ln 0.1 to ln 10 the line rises 3; it reaches 1.04 at a fraction 1.04/3 of the way.
+    let x = (0.1_f64.ln() + (top / 3.0) * (10.0_f64.ln() - 0.1_f64.ln())).exp();
+    assert!(
+        (segs[0][1].0 - x).abs() < 1e-9 && (segs[0][1].1 - top).abs() < 1e-12,
+        "{segs:?}"
+    );
+}
