@@ -56,6 +56,25 @@ impl Axis {
             format!("{} [{}]", self.label, self.unit)
         }
     }
+
+    /// The title's short form: the label's last word, which names the quantity by its
+    /// symbol, with the unit (`x [mm]` for "displacement x [mm]"), for an axis too short
+    /// for the whole title; `None` for a one-word label, a last word that is a plain word
+    /// (three or more lowercase Latin letters: not a symbol) or not a whole term (a
+    /// closing bracket whose opening one is in an earlier word).
+    pub fn short_title(&self) -> Option<String> {
+        let (_, last) = self.label.trim_end().rsplit_once(' ')?;
+        let opens = last.matches(['(', '[']).count();
+        let closes = last.matches([')', ']']).count();
+        let word = last.len() >= 3 && last.bytes().all(|b| b.is_ascii_lowercase());
+        if last.is_empty() || word || opens != closes {
+            return None;
+        }
+        Some(match self.unit.is_empty() {
+            true => last.to_string(),
+            false => format!("{last} [{}]", self.unit),
+        })
+    }
 }
 
 /// Makes a drawable range: finite, ordered, non-empty (and positive for log axes).

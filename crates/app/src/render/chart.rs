@@ -136,6 +136,27 @@ pub(super) fn static_key(fig: &Figure, theme: &Theme, scale: f64, size: (u32, u3
     h.finish()
 }
 
+/// `axis`'s name as drawn in `room` px at `size` px: its whole title; where that would be
+/// cut, its short form ([`crate::figure::Axis::short_title`]: symbol and unit) if that
+/// fits whole; else the title cut (see [`fit`]). A phone's short plot then reads "x [mm]"
+/// rather than "displacement x [m…", which loses the unit.
+fn axis_name<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    axis: &crate::figure::Axis,
+    size: f64,
+    room: f64,
+) -> String {
+    let title = axis.title();
+    let (text, _) = fit(area, &title, size, room);
+    if text == title {
+        return text;
+    }
+    match axis.short_title() {
+        Some(short) if fit(area, &short, size, room) == (short.clone(), size) => short,
+        _ => text,
+    }
+}
+
 pub(super) fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     fig: &Figure,
@@ -196,8 +217,8 @@ pub(super) fn draw<DB: DrawingBackend>(
     let (_, x_size) = fit(&area, &x_title, 13.0 * scale, f64::from(px_w));
     let (_, y_size) = fit(&area, &y_title, 13.0 * scale, f64::from(px_h));
     let desc = x_size.min(y_size);
-    let (x_title, _) = fit(&area, &x_title, desc, f64::from(px_w));
-    let (y_title, _) = fit(&area, &y_title, desc, f64::from(px_h));
+    let x_title = axis_name(&area, &fig.x, desc, f64::from(px_w));
+    let y_title = axis_name(&area, &fig.y, desc, f64::from(px_h));
     chart
         .configure_mesh()
         .x_desc(x_title)

@@ -531,6 +531,40 @@ fn a_phone_sized_plot_keeps_its_height_for_data() {
         "plotting area {:.0} % of the height",
         data * 100.0
     );
+    // A y axis name too long for that height keeps its symbol and unit whole.
+    fig.y = Axis::linear("body displacement x", "mm", (-1.0, 1.0));
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
+        render(&root, &fig, &Theme::LIGHT, scale).unwrap();
+    }
+    assert!(svg.contains("x [mm]"), "short name drawn");
+    assert!(!svg.contains("displacement"), "no cut name");
+}
+
+#[test]
+fn an_axis_short_title_is_its_symbol_and_unit() {
+    let short =
+        |label: &str, unit: &'static str| Axis::linear(label, unit, (0.0, 1.0)).short_title();
+    assert_eq!(
+        short("body displacement x", "mm").as_deref(),
+        Some("x [mm]")
+    );
+    assert_eq!(
+        short("normalised response y/y₀", "").as_deref(),
+        Some("y/y₀")
+    );
+    assert_eq!(
+        short("amplification |H| = X/(F₀/k)", "").as_deref(),
+        Some("X/(F₀/k)")
+    );
+    // A word cut from its bracket, a plain word or a single word has no short form.
+    assert_eq!(short("phase ∠H (lag of x behind F)", "°"), None);
+    assert_eq!(
+        short("an axis name far longer than the plot is tall", "m"),
+        None
+    );
+    assert_eq!(short("time", "s"), None);
 }
 
 #[test]
