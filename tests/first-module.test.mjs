@@ -61,6 +61,14 @@ test('?demo=regimes draws from the first module, then switches to the full one u
   const before = await shown(page);
   const pixels = await canvasFingerprint(page, 'response');
   const poles = await canvasFingerprint(page, 'poles');
+  // The first module reads no values under the pointer (that waits for the full module):
+  // hovering the plot shows nothing and fails nowhere.
+  const plot = await page.locator('canvas[data-plot="response"]').boundingBox();
+  const middle = [plot.x + plot.width * 0.5, plot.y + plot.height * 0.5];
+  await page.mouse.move(...middle);
+  assert.equal(await page.isVisible('[data-plot-wrap="response"] .probe'), false);
+  await page.mouse.move(0, 0);
+  await page.focus('#p-zeta');
   release();
   await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
@@ -68,6 +76,11 @@ test('?demo=regimes draws from the first module, then switches to the full one u
   assert.deepEqual(await canvasFingerprint(page, 'response'), pixels);
   assert.deepEqual(await canvasFingerprint(page, 'poles'), poles);
   assert.equal(await page.evaluate(() => document.activeElement && document.activeElement.id), 'p-zeta');
+  // The full module reads the values under the pointer.
+  await page.mouse.move(...middle);
+  await page.waitForSelector('[data-plot-wrap="response"] .probe:not([hidden])');
+  await page.mouse.move(0, 0);
+  await page.focus('#p-zeta');
   // The full module (glue and wasm) was requested only after the first plot.
   const order = await page.evaluate(() => ({
     draw: performance.getEntriesByName('zeta:first-draw')[0].startTime,
@@ -211,6 +224,23 @@ test('an SVG export asked for on the first module (which has no SVG backend) wai
   assert.match(dl.suggestedFilename(), /^zeta-regimes-response\.svg$/);
   const text = await readFile(await dl.path(), 'utf8');
   assert.match(text, /<svg[\s\S]*<\/svg>/);
+  assert.equal(await moduleOf(page), 'full');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a click on a plot that picks (design\'s map) on the first module waits for the full module, then picks', async () => {
+  const { page, errors, context, release } = await openGated('?demo=design');
+  assert.equal(await moduleOf(page), 'first');
+  const map = page.locator('canvas[data-plot="map"]');
+  await map.scrollIntoViewIfNeeded();
+  const box = await map.boundingBox();
+  await page.mouse.click(box.x + box.width * 0.35, box.y + box.height * 0.45);
+  await page.waitForTimeout(300);
+  assert.equal(await moduleOf(page), 'first', 'still waiting for the full module');
+  assert.equal(await page.getAttribute('[data-readout="k"]', 'data-value'), '24000');
+  release();
+  await page.waitForFunction(() => document.querySelector('[data-readout="k"]').dataset.value !== '24000', null, { timeout: 15000 });
   assert.equal(await moduleOf(page), 'full');
   assert.deepEqual(errors, []);
   await context.close();

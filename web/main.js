@@ -884,7 +884,8 @@ function wireProbes() {
       const py = (ev.clientY - rect.top) * dpr;
       let probe;
       try {
-        probe = app.session.probe(key, px, py);
+        // A first module has no probe: values show once the full module has taken over.
+        probe = app.session.probe?.(key, px, py);
       } catch (err) {
         reportFailure(err);
         return;
@@ -923,11 +924,16 @@ function wireProbes() {
       tip.style.left = `${Math.min(x + 12, stage.clientWidth - tip.offsetWidth - 4)}px`;
       tip.style.top = `${Math.max(4, y - tip.offsetHeight - 12)}px`;
     };
-    canvas.addEventListener('click', (ev) => {
+    canvas.addEventListener('click', async (ev) => {
       const dpr = window.devicePixelRatio || 1;
       const rect = canvas.getBoundingClientRect();
+      const [px, py] = [(ev.clientX - rect.left) * dpr, (ev.clientY - rect.top) * dpr];
       try {
-        const applied = app.session.pick(key, (ev.clientX - rect.left) * dpr, (ev.clientY - rect.top) * dpr);
+        // A first module has no pick (see exportPlot): the full one takes over first; if
+        // it cannot be loaded, the click does nothing and a later one tries again.
+        if (!app.session.pick) await useFullModule().catch(() => {});
+        if (!app.session.pick) return;
+        const applied = app.session.pick(key, px, py);
         if (!applied.length) return;
         for (const [k, v] of applied) {
           const control = app.view.controls.get(k);

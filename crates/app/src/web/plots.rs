@@ -2,8 +2,11 @@
 //! parameters, the time cursor's pixel, and its exports (CSV, SVG, another canvas).
 
 use super::draw::{device_scale, draw_on};
+use super::js_err;
 use super::session::Session;
-use super::{js_err, to_js};
+#[cfg(not(feature = "first"))]
+use super::to_js;
+#[cfg(not(feature = "first"))]
 use crate::export;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
@@ -21,6 +24,9 @@ impl Session {
 
     /// The values under the pointer at backend pixel `(px, py)` of plot `key`:
     /// `{x_text, y_text, points: [{px, py, color, text}]}`, or `undefined` outside the plot.
+    /// Not in the first module (feature `first`): a pointer over a plot reads values once the
+    /// full module has taken over, about a second after the first plot on a slow line.
+    #[cfg(not(feature = "first"))]
     pub fn probe(&self, key: &str, px: f64, py: f64) -> Result<JsValue, JsError> {
         let Some((i, fig)) = self.figure(key) else {
             return Ok(JsValue::UNDEFINED);
@@ -91,7 +97,9 @@ impl Session {
     }
 
     /// A click at backend pixel `(px, py)` of plot `key`: the demo may choose parameters
-    /// from the point (e.g. a design on a map). Returns `[[key, value]]` applied.
+    /// from the point (e.g. a design on a map). Returns `[[key, value]]` applied. Not in
+    /// the first module (feature `first`), as [`Session::probe`].
+    #[cfg(not(feature = "first"))]
     pub fn pick(&mut self, key: &str, px: f64, py: f64) -> Result<JsValue, JsError> {
         let Some(i) = self.plot_index(key) else {
             return to_js(&Vec::<(&str, f64)>::new());
