@@ -58,7 +58,7 @@ impl Axis {
     }
 
     /// The title's short form: the label's last word, which names the quantity by its
-    /// symbol, with the unit (`x [mm]` for "displacement x [mm]"), for an axis too short
+    /// symbol, with the unit (`x [mm]` for `displacement x [mm]`), for an axis too short
     /// for the whole title; `None` for a one-word label, a last word that is a plain word
     /// (three or more lowercase Latin letters: not a symbol) or not a whole term (a
     /// closing bracket whose opening one is in an earlier word).

@@ -138,8 +138,8 @@ pub(super) fn static_key(fig: &Figure, theme: &Theme, scale: f64, size: (u32, u3
 
 /// `axis`'s name as drawn in `room` px at `size` px: its whole title; where that would be
 /// cut, its short form ([`crate::figure::Axis::short_title`]: symbol and unit) if that
-/// fits whole; else the title cut (see [`fit`]). A phone's short plot then reads "x [mm]"
-/// rather than "displacement x [m…", which loses the unit.
+/// fits whole; else the title cut (see [`fit`]). A phone's short plot then reads `x [mm]`
+/// rather than `displacement x [m…`, which loses the unit.
 fn axis_name<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     axis: &crate::figure::Axis,
