@@ -136,10 +136,10 @@ pub(super) fn static_key(fig: &Figure, theme: &Theme, scale: f64, size: (u32, u3
     h.finish()
 }
 
-/// `axis`'s name as drawn in `room` px at `size` px: its whole title; where that would be
-/// cut, its short form ([`crate::figure::Axis::short_title`]: symbol and unit) if that
-/// fits whole; else the title cut (see [`fit`]). A phone's short plot then reads `x [mm]`
-/// rather than `displacement x [m…`, which loses the unit.
+/// What names `axis` in `room` px from `size` px down (see [`fit`]): its whole title if
+/// that fits, shrunk or not; else its short form ([`crate::figure::Axis::short_title`]:
+/// symbol and unit) if that fits; else the title, to be cut. A phone's short plot then
+/// reads `x [mm]` rather than `displacement x [m…`, which loses the unit.
 fn axis_name<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     axis: &crate::figure::Axis,
@@ -147,13 +147,13 @@ fn axis_name<DB: DrawingBackend>(
     room: f64,
 ) -> String {
     let title = axis.title();
-    let (text, _) = fit(area, &title, size, room);
-    if text == title {
-        return text;
+    let whole = |text: &str| fit(area, text, size, room).0 == text;
+    if whole(&title) {
+        return title;
     }
     match axis.short_title() {
-        Some(short) if fit(area, &short, size, room) == (short.clone(), size) => short,
-        _ => text,
+        Some(short) if whole(&short) => short,
+        _ => title,
     }
 }
 
@@ -213,12 +213,13 @@ pub(super) fn draw<DB: DrawingBackend>(
 
     // Axis names as long as the axes: one size for both, each cut only if it must be.
     let (px_w, px_h) = chart.plotting_area().dim_in_pixel();
-    let (x_title, y_title) = (fig.x.title(), fig.y.title());
+    let x_title = axis_name(&area, &fig.x, 13.0 * scale, f64::from(px_w));
+    let y_title = axis_name(&area, &fig.y, 13.0 * scale, f64::from(px_h));
     let (_, x_size) = fit(&area, &x_title, 13.0 * scale, f64::from(px_w));
     let (_, y_size) = fit(&area, &y_title, 13.0 * scale, f64::from(px_h));
     let desc = x_size.min(y_size);
-    let x_title = axis_name(&area, &fig.x, desc, f64::from(px_w));
-    let y_title = axis_name(&area, &fig.y, desc, f64::from(px_h));
+    let (x_title, _) = fit(&area, &x_title, desc, f64::from(px_w));
+    let (y_title, _) = fit(&area, &y_title, desc, f64::from(px_h));
     chart
         .configure_mesh()
         .x_desc(x_title)
