@@ -136,25 +136,29 @@ pub(super) fn static_key(fig: &Figure, theme: &Theme, scale: f64, size: (u32, u3
     h.finish()
 }
 
-/// What names `axis` in `room` px from `size` px down (see [`fit`]): its whole title if
-/// that fits, shrunk or not; else its short form ([`crate::figure::Axis::short_title`]:
-/// symbol and unit) if that fits; else the title, to be cut. A phone's short plot then
-/// reads `x [mm]` rather than `displacement x [m…`, which loses the unit.
+/// What names `axis` in `room` px from `size` px down, and the size it fits at (see
+/// [`fit`]): its whole title if that fits, shrunk or not; else its short form
+/// ([`crate::figure::Axis::short_title`]: symbol and unit) if that fits; else the title,
+/// to be cut. A phone's short plot then reads `x [mm]` rather than `displacement x [m…`,
+/// which loses the unit.
 fn axis_name<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     axis: &crate::figure::Axis,
     size: f64,
     room: f64,
-) -> String {
+) -> (String, f64) {
     let title = axis.title();
-    let whole = |text: &str| fit(area, text, size, room).0 == text;
-    if whole(&title) {
-        return title;
+    let (text, fits_at) = fit(area, &title, size, room);
+    if text == title {
+        return (title, fits_at);
     }
-    match axis.short_title() {
-        Some(short) if whole(&short) => short,
-        _ => title,
+    if let Some(short) = axis.short_title() {
+        let (text, short_at) = fit(area, &short, size, room);
+        if text == short {
+            return (short, short_at);
+        }
     }
+    (title, fits_at)
 }
 
 pub(super) fn draw<DB: DrawingBackend>(
@@ -213,10 +217,8 @@ pub(super) fn draw<DB: DrawingBackend>(
 
     // Axis names as long as the axes: one size for both, each cut only if it must be.
     let (px_w, px_h) = chart.plotting_area().dim_in_pixel();
-    let x_title = axis_name(&area, &fig.x, 13.0 * scale, f64::from(px_w));
-    let y_title = axis_name(&area, &fig.y, 13.0 * scale, f64::from(px_h));
-    let (_, x_size) = fit(&area, &x_title, 13.0 * scale, f64::from(px_w));
-    let (_, y_size) = fit(&area, &y_title, 13.0 * scale, f64::from(px_h));
+    let (x_title, x_size) = axis_name(&area, &fig.x, 13.0 * scale, f64::from(px_w));
+    let (y_title, y_size) = axis_name(&area, &fig.y, 13.0 * scale, f64::from(px_h));
     let desc = x_size.min(y_size);
     let (x_title, _) = fit(&area, &x_title, desc, f64::from(px_w));
     let (y_title, _) = fit(&area, &y_title, desc, f64::from(px_h));

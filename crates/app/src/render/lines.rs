@@ -30,13 +30,18 @@ pub(super) fn segments(s: &Series, fig: &Figure) -> (Vec<Vec<(f64, f64)>>, bool)
     // The last drawable point, in the axes' scale.
     let mut prev: Option<(f64, f64)> = None;
     let inside = |(u, v): (f64, f64)| (bx.0..=bx.1).contains(&u) && (by.0..=by.1).contains(&v);
+    let back = |(u, v): (f64, f64)| (from(u, x_log), from(v, y_log));
+    // Ends the piece being drawn, if any.
+    let end_piece = |cur: &mut Vec<(f64, f64)>, out: &mut Vec<Vec<(f64, f64)>>| {
+        if !cur.is_empty() {
+            out.push(std::mem::take(cur));
+        }
+    };
     for &(x, y) in &s.points {
         let drawable = x.is_finite() && y.is_finite() && (!x_log || x > 0.0) && (!y_log || y > 0.0);
         if !drawable {
             prev = None;
-            if !cur.is_empty() {
-                out.push(std::mem::take(&mut cur));
-            }
+            end_piece(&mut cur, &mut out);
             continue;
         }
         // Kept far from overflow; no pixel tells 1e300 from 1e200.
@@ -45,28 +50,23 @@ pub(super) fn segments(s: &Series, fig: &Figure) -> (Vec<Vec<(f64, f64)>>, bool)
             to(y, y_log).clamp(-1e200, 1e200),
         );
         clipped |= !inside(p);
-        let back = |(u, v): (f64, f64)| (from(u, x_log), from(v, y_log));
         match prev.replace(p) {
             None if inside(p) => cur.push(back(p)),
             None => {}
             Some(a) => match clip(a, p, bx, by) {
                 Some((start, end)) => {
-                    if cur.is_empty() || start != a {
-                        if !cur.is_empty() {
-                            out.push(std::mem::take(&mut cur));
-                        }
+                    // Entering the box, or starting a piece (the one drawn so far, if any,
+                    // left the box before `a`).
+                    if start != a || cur.is_empty() {
+                        end_piece(&mut cur, &mut out);
                         cur.push(back(start));
                     }
                     cur.push(back(end));
                     if end != p {
-                        out.push(std::mem::take(&mut cur));
+                        end_piece(&mut cur, &mut out); // left the box
                     }
                 }
-                None => {
-                    if !cur.is_empty() {
-                        out.push(std::mem::take(&mut cur));
-                    }
-                }
+                None => end_piece(&mut cur, &mut out),
             },
         }
     }

@@ -51,8 +51,8 @@ fn family_label() -> String {
     )
 }
 
-/// The magnitude plot's y range and its top (where labels stop and markers are pinned), in the view and for
-/// the current ζ's resonant peak.
+/// The magnitude plot's y range and its top (where the family's labels stop and the
+/// markers are pinned), in the view and for the current ζ's resonant peak.
 fn magnitude_range(view: View, peak: Option<frf::Peak>) -> ((f64, f64), f64) {
     match view {
         View::Db => (DB_RANGE, DB_RANGE.1),
