@@ -1,7 +1,7 @@
 //! The tolerance demo's declaration as data: parameters, readouts, plots and presets.
 
 use super::{figures, text, Dist, HistOf, Results, System, P};
-use crate::declare::{Declaration, Param};
+use crate::declare::{Choice, Declaration, Param};
 use crate::demos::design::sprung_mass;
 use crate::demos::rows::{self, readouts, sliders, Plot};
 use crate::i18n::number;
@@ -48,21 +48,23 @@ pub(super) fn declaration() -> Declaration<P, Results> {
 
 /// The parameters, in order.
 fn params() -> Vec<Param<P>> {
+    // Each system's sliders are shown only while it is chosen (the other's do nothing).
+    let (suspension, rlc) = (System::Suspension.index(), System::Rlc.index());
     [
         vec![
             Param::<P>::choice("system", "system", System::default(), |p, v| p.system = v),
-            sprung_mass("suspension: sprung mass", |p: &mut P, v| p.m = v).visible_when("system", 0),
+            sprung_mass("suspension: sprung mass", |p: &mut P, v| p.m = v).visible_when("system", suspension),
         ],
         sliders! { P;
-            linear "k", "suspension: spring rate", "k", "N/m", (5_000.0, 100_000.0, 100.0), 24_000.0 => k, visible_when("system", 0);
-            linear "zeta", "suspension: design ζ at nominal mass", "ζ", "", (0.05, 2.0, 0.01), 0.7 => zeta, visible_when("system", 0);
-            linear "dm", "suspension: mass tolerance ±", "", "%", TOLERANCE, 10.0 => dm, visible_when("system", 0);
-            log "R", "RLC: resistance", "R", "Ω", (0.1, 1_000.0, 0.01), 7.0 => r, visible_when("system", 1);
-            log "L", "RLC: inductance", "L", "H", (0.001, 10.0, 0.001), 0.5 => l, visible_when("system", 1);
-            log "C", "RLC: capacitance", "C", "F", (1e-6, 1.0, 1e-6), 0.02 => cap, visible_when("system", 1);
-            linear "dR", "RLC: resistor tolerance ±", "", "%", TOLERANCE, 5.0 => dr, visible_when("system", 1);
-            linear "dL", "RLC: inductor tolerance ±", "", "%", TOLERANCE, 5.0 => dl, visible_when("system", 1);
-            linear "dC", "RLC: capacitor tolerance ±", "", "%", TOLERANCE, 5.0 => dc, visible_when("system", 1);
+            linear "k", "suspension: spring rate", "k", "N/m", (5_000.0, 100_000.0, 100.0), 24_000.0 => k, visible_when("system", suspension);
+            linear "zeta", "suspension: design ζ at nominal mass", "ζ", "", (0.05, 2.0, 0.01), 0.7 => zeta, visible_when("system", suspension);
+            linear "dm", "suspension: mass tolerance ±", "", "%", TOLERANCE, 10.0 => dm, visible_when("system", suspension);
+            log "R", "RLC: resistance", "R", "Ω", (0.1, 1_000.0, 0.01), 7.0 => r, visible_when("system", rlc);
+            log "L", "RLC: inductance", "L", "H", (0.001, 10.0, 0.001), 0.5 => l, visible_when("system", rlc);
+            log "C", "RLC: capacitance", "C", "F", (1e-6, 1.0, 1e-6), 0.02 => cap, visible_when("system", rlc);
+            linear "dR", "RLC: resistor tolerance ±", "", "%", TOLERANCE, 5.0 => dr, visible_when("system", rlc);
+            linear "dL", "RLC: inductor tolerance ±", "", "%", TOLERANCE, 5.0 => dl, visible_when("system", rlc);
+            linear "dC", "RLC: capacitor tolerance ±", "", "%", TOLERANCE, 5.0 => dc, visible_when("system", rlc);
         },
         vec![Param::choice("dist", "distribution of parts", Dist::default(), |p, v| p.dist = v)],
         sliders! { P;
