@@ -227,6 +227,52 @@ test('a held drag draws the same pixels from the kept static layer as a fresh dr
   await context.close();
 });
 
+test('once the axes rest, the plots on screen keep their static layers, so a drag starts from them', { skip }, async () => {
+  // Each plot canvas's frames drawn from a kept copy of its layer: a drawImage from a
+  // canvas of its own size at (0, 0).
+  const before = async (context) => context.addInitScript(() => {
+    window.__fromLayer = 0;
+    const draw = CanvasRenderingContext2D.prototype.drawImage;
+    CanvasRenderingContext2D.prototype.drawImage = function (src, ...at) {
+      const whole = at.length === 2 && src instanceof HTMLCanvasElement && src.width === this.canvas.width && src.height === this.canvas.height;
+      if (whole && this.canvas.dataset.plot === 'magnitude') window.__fromLayer += 1;
+      return draw.call(this, src, ...at);
+    };
+  });
+  const { page, errors, context } = await open(browser, `${server.url}?demo=resonance&zeta=0.2`, { colorScheme: 'light', before });
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
+  await drawn(page);
+  const frames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  // One step of the key at rest: the magnitude plot's axes refit to the new peak, a layer
+  // drawn once. Then rest.
+  const old = await readout(page, 'Q');
+  await page.focus('#p-zeta');
+  await page.keyboard.press('ArrowRight');
+  await page.waitForFunction((o) => document.querySelector('[data-readout="Q"]').dataset.value !== o, old);
+  await drawn(page);
+  await page.waitForTimeout(400);
+  await frames();
+  const resting = await canvasFingerprint(page, 'magnitude', { settled: false });
+  const used = await page.evaluate(() => window.__fromLayer);
+  // The drag's first frame starts from the kept layer.
+  const box = await page.locator('#p-zeta').boundingBox();
+  const y = box.y + box.height / 2;
+  const at = await page.evaluate(() => Number(document.querySelector('#p-zeta').value));
+  const [lo, hi] = await page.evaluate(() => ['min', 'max'].map((k) => Number(document.querySelector('#p-zeta')[k])));
+  const f = (at - lo) / (hi - lo);
+  await page.mouse.move(box.x + box.width * f, y);
+  await page.mouse.down();
+  const q = await readout(page, 'Q');
+  await page.mouse.move(box.x + box.width * (f + 0.05), y);
+  await page.waitForFunction((o) => document.querySelector('[data-readout="Q"]').dataset.value !== o, q);
+  await frames();
+  assert.ok(await page.evaluate(() => window.__fromLayer) > used, 'the first held frame is drawn from the kept layer');
+  assert.notDeepEqual(await canvasFingerprint(page, 'magnitude', { settled: false }), resting, 'and shows the new curve');
+  await page.mouse.up();
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('a window resized while a slider is held gets its plots redrawn at their new size on the next move', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=resonance&zeta=0.2`, { viewport: { width: 1280, height: 800 } });
   await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });

@@ -275,6 +275,11 @@ pub struct Figure {
     pub y: Axis,
     /// Lines.
     pub series: Vec<Series>,
+    /// How many of the first `series` are a backdrop: context that only the view moves
+    /// (a family of curves behind the current one). A backend that keeps a plot's static
+    /// layer keeps them in it, so a held drag does not draw them again. Drawn under the
+    /// other series, and ignored under a heatmap (which is drawn over the layer).
+    pub backdrop: usize,
     /// Points.
     pub markers: Vec<Marker>,
     /// Horizontal and vertical reference lines through the origin.
@@ -293,6 +298,7 @@ impl Figure {
             x,
             y,
             series: Vec::new(),
+            backdrop: 0,
             markers: Vec::new(),
             origin_lines: false,
             heatmap: None,
@@ -321,6 +327,12 @@ impl Figure {
         style: LineStyle,
     ) -> Self {
         self.series.push(Series::new(label, points, style));
+        self
+    }
+
+    /// The figure with every series so far as its backdrop (see [`Figure::backdrop`]).
+    pub fn with_backdrop(mut self) -> Self {
+        self.backdrop = self.series.len();
         self
     }
 

@@ -71,6 +71,10 @@ fn with_scratch(
 /// How many canvases' layers are kept: every plot of a page, and a few of the last.
 const LAYERS: usize = 12;
 
+/// A demo's first module keeps no layer: it draws only until the full module takes over
+/// (seconds after the first plot), and its bytes are the first plot's wait.
+const KEEPS_NO_LAYER: bool = cfg!(feature = "first");
+
 /// A new canvas outside the page.
 fn offscreen() -> Option<HtmlCanvasElement> {
     web_sys::window()?
@@ -94,6 +98,9 @@ thread_local! {
 /// context, unless it exists: done while the controls rest, so the first drag does not
 /// pay for a new canvas (about 10 ms at 4× CPU slowdown, the largest cost of that frame).
 pub fn prepare(canvas: &HtmlCanvasElement) {
+    if KEEPS_NO_LAYER {
+        return;
+    }
     KEPT.with_borrow_mut(|kept| {
         if let Some(layer) = kept.iter().find(|l| l.canvas == *canvas) {
             if layer.copy.is_some() {
@@ -128,6 +135,22 @@ pub fn prepare(canvas: &HtmlCanvasElement) {
     });
 }
 
+/// Whether `canvas` keeps a copy of the static layer last drawn on it, at its size (a
+/// drag's next frame then starts from it).
+#[cfg(not(feature = "first"))]
+pub fn keeps_layer(canvas: &HtmlCanvasElement) -> bool {
+    let size = (canvas.width(), canvas.height());
+    KEPT.with_borrow(|kept| {
+        kept.iter().any(|l| {
+            l.canvas == *canvas
+                && l.valid
+                && l.copy
+                    .as_ref()
+                    .is_some_and(|c| (c.width(), c.height()) == size)
+        })
+    })
+}
+
 impl Direct for CanvasDirect {
     fn dash(&self, pattern: &[f64]) {
         set_line_dash(&self.context, pattern);
@@ -137,7 +160,10 @@ impl Direct for CanvasDirect {
         self.muted.set(on);
     }
 
-    fn begin_layer(&self, key: u64) {
+    fn begin_layer(&self, key: u64) -> bool {
+        if KEEPS_NO_LAYER {
+            return false;
+        }
         KEPT.with_borrow_mut(|kept| {
             let mut layer = match kept.iter().position(|l| l.canvas == self.canvas) {
                 Some(i) => kept.remove(i),
@@ -161,21 +187,22 @@ impl Direct for CanvasDirect {
                 .filter(|c| layer.valid && c.width() == w && c.height() == h);
             // Drawn whole, it covers what was there; drawImage leaves the state the
             // backend caches as it was.
-            if let Some(copy) = held {
-                let drawn = self
-                    .context
-                    .draw_image_with_html_canvas_element(copy, 0.0, 0.0);
-                self.muted.set(drawn.is_ok());
-            }
+            let drawn = held.is_some_and(|copy| {
+                self.context
+                    .draw_image_with_html_canvas_element(copy, 0.0, 0.0)
+                    .is_ok()
+            });
+            self.muted.set(drawn);
             if kept.len() >= LAYERS {
                 kept.remove(0);
             }
             kept.push(layer);
-        });
+            drawn
+        })
     }
 
     fn end_layer(&self, key: u64) {
-        if self.muted.replace(false) {
+        if self.muted.replace(false) || KEEPS_NO_LAYER {
             return;
         }
         KEPT.with_borrow_mut(|kept| {

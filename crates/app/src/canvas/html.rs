@@ -413,7 +413,8 @@ impl DrawingBackend for HtmlCanvas {
         pos: BackendCoord,
     ) -> Result<()> {
         let color = style.color();
-        if color.alpha == 0.0 || self.muted.get() {
+        // An empty text (the blank caption that keeps a plot's title band) draws nothing.
+        if color.alpha == 0.0 || self.muted.get() || text.is_empty() {
             return Ok(());
         }
         // State first, then save/rotate/restore: the restore returns to what `set` says.

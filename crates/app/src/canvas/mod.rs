@@ -15,6 +15,8 @@ mod html;
 #[cfg(not(feature = "first"))]
 mod web;
 
+#[cfg(not(feature = "first"))]
+pub use direct::keeps_layer;
 pub use direct::{prepare, CanvasDirect};
 use html::Memory;
 pub use html::{CanvasError, HtmlCanvas};

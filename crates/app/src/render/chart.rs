@@ -4,7 +4,7 @@ use super::colour_bar::{draw_colour_bar, COLOUR_BAR_WIDTH};
 use super::fit::fit;
 use super::heatmap::{draw_heatmap, stretch_heatmap};
 use super::legend::{free_corner, legend_entries, Legend};
-use super::lines::draw_lines_and_markers;
+use super::lines::{clips, draw_lines_and_markers, draw_series};
 use super::scale::Scale;
 use super::ticks::axis_tick_label;
 use super::{err, px, Output, RenderError};
@@ -111,18 +111,32 @@ fn draw_title<DB: DrawingBackend>(
         .map_err(err)
 }
 
-/// What a plot's static layer (background, the title's band, grid, ticks and axis names)
-/// depends on, hashed (the title itself is drawn over it, see [`draw_title`]): the axes,
-/// whether a colour bar takes room on the right,
-/// the theme, the scale, the backend's size and the legend band's height, and the
-/// language's way of writing numbers.
-pub(super) fn static_key(fig: &Figure, theme: &Theme, scale: f64, size: (u32, u32, u32)) -> u64 {
+/// What a plot's static layer (background, the title's band, grid, ticks, axis names and
+/// the first `backdrop` series) depends on, hashed (the title itself is drawn over it, see
+/// [`draw_title`]): the axes, whether a colour bar takes room on the right, the backdrop's
+/// points and strokes, the theme, the scale, the backend's size and the legend band's
+/// height, and the language's way of writing numbers.
+pub(super) fn static_key(
+    fig: &Figure,
+    backdrop: usize,
+    theme: &Theme,
+    scale: f64,
+    size: (u32, u32, u32),
+) -> u64 {
     let mut h = std::collections::hash_map::DefaultHasher::new();
+    for s in fig.series.iter().take(backdrop) {
+        let style = s.style;
+        (style.ink.index(), style.width.to_bits(), style.dash as u8).hash(&mut h);
+        s.points.len().hash(&mut h);
+        for &(x, y) in &s.points {
+            (x.to_bits(), y.to_bits()).hash(&mut h);
+        }
+    }
     for axis in [&fig.x, &fig.y] {
         (&axis.label, axis.unit, axis.scale == AxisScale::Log).hash(&mut h);
         (axis.range.0.to_bits(), axis.range.1.to_bits()).hash(&mut h);
     }
-    fig.heatmap.is_some().hash(&mut h);
+    (fig.heatmap.is_some(), fig.origin_lines).hash(&mut h);
     for c in [
         theme.background,
         theme.foreground,
@@ -161,6 +175,74 @@ fn axis_name<DB: DrawingBackend>(
     (title, fits_at)
 }
 
+/// The grid, ticks, tick labels and axis names of `chart`: axis names as long as the
+/// axes, one size for both, each cut only if it must be.
+fn draw_mesh<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    chart: &mut Chart<'_, DB>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+) -> Result<(), RenderError> {
+    let fg = theme.foreground;
+    let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
+    let (px_w, px_h) = chart.plotting_area().dim_in_pixel();
+    let (x_title, x_size) = axis_name(area, &fig.x, 13.0 * scale, f64::from(px_w));
+    let (y_title, y_size) = axis_name(area, &fig.y, 13.0 * scale, f64::from(px_h));
+    let desc = x_size.min(y_size);
+    let (x_title, _) = fit(area, &x_title, desc, f64::from(px_w));
+    let (y_title, _) = fit(area, &y_title, desc, f64::from(px_h));
+    chart
+        .configure_mesh()
+        .x_desc(x_title)
+        .y_desc(y_title)
+        .axis_desc_style((super::SANS, desc).into_font().color(&fg))
+        .label_style(font(12.0))
+        .bold_line_style(theme.grid.stroke_width(px(1.0, scale)))
+        .light_line_style(theme.grid_minor.stroke_width(px(1.0, scale)))
+        .max_light_lines(4)
+        .axis_style(fg.stroke_width(px(1.0, scale)))
+        .x_labels(6)
+        .y_labels(6)
+        .x_label_formatter(&|v| axis_tick_label(*v, &fig.x))
+        .y_label_formatter(&|v| axis_tick_label(*v, &fig.y))
+        .draw()
+        .map_err(err)
+}
+
+/// The reference lines through the origin, if `fig` has them and they fall in its range.
+fn draw_origin_lines<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+) -> Result<(), RenderError> {
+    if !fig.origin_lines {
+        return Ok(());
+    }
+    let fg = theme.foreground;
+    let (x0, x1) = fig.x.range;
+    let (y0, y1) = fig.y.range;
+    let style = fg.mix(0.6).stroke_width(px(1.0, scale));
+    if x0 < 0.0 && x1 > 0.0 {
+        chart
+            .draw_series(std::iter::once(PathElement::new(
+                vec![(0.0, y0), (0.0, y1)],
+                style,
+            )))
+            .map_err(err)?;
+    }
+    if y0 < 0.0 && y1 > 0.0 {
+        chart
+            .draw_series(std::iter::once(PathElement::new(
+                vec![(x0, 0.0), (x1, 0.0)],
+                style,
+            )))
+            .map_err(err)?;
+    }
+    Ok(())
+}
+
 pub(super) fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     fig: &Figure,
@@ -168,8 +250,6 @@ pub(super) fn draw<DB: DrawingBackend>(
     scale: f64,
     out: Output<'_>,
 ) -> Result<(Edges, Placement), RenderError> {
-    let fg = theme.foreground;
-    let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
     let entries = legend_entries(fig);
     let legend = Legend::measure(root, &entries, scale)?;
     let short = is_short(root.dim_in_pixel().1, scale);
@@ -209,36 +289,37 @@ pub(super) fn draw<DB: DrawingBackend>(
         placement = Placement::Below(band_h);
     }
     let (area, band) = root.split_vertically(h.saturating_sub(band_h));
-    let key = static_key(fig, theme, scale, (w, h, band_h));
-    if let Some(direct) = out.direct {
-        direct.begin_layer(key);
-    }
+    // The origin lines and the backdrop series go into the static layer, under the other
+    // series; over a heatmap, which is drawn over the layer, there is no backdrop and the
+    // origin lines come after it.
+    let backdrop = match fig.heatmap {
+        Some(_) => 0,
+        None => fig.backdrop.min(fig.series.len()),
+    };
+    let layer = out
+        .direct
+        .map(|d| (d, static_key(fig, backdrop, theme, scale, (w, h, band_h))));
+    // A layer the backend keeps is drawn already: its mesh and backdrop are skipped.
+    let kept = layer.is_some_and(|(direct, key)| direct.begin_layer(key));
     let mut chart = build(&area, fig, theme, scale, short)?;
-
-    // Axis names as long as the axes: one size for both, each cut only if it must be.
-    let (px_w, px_h) = chart.plotting_area().dim_in_pixel();
-    let (x_title, x_size) = axis_name(&area, &fig.x, 13.0 * scale, f64::from(px_w));
-    let (y_title, y_size) = axis_name(&area, &fig.y, 13.0 * scale, f64::from(px_h));
-    let desc = x_size.min(y_size);
-    let (x_title, _) = fit(&area, &x_title, desc, f64::from(px_w));
-    let (y_title, _) = fit(&area, &y_title, desc, f64::from(px_h));
-    chart
-        .configure_mesh()
-        .x_desc(x_title)
-        .y_desc(y_title)
-        .axis_desc_style((super::SANS, desc).into_font().color(&fg))
-        .label_style(font(12.0))
-        .bold_line_style(theme.grid.stroke_width(px(1.0, scale)))
-        .light_line_style(theme.grid_minor.stroke_width(px(1.0, scale)))
-        .max_light_lines(4)
-        .axis_style(fg.stroke_width(px(1.0, scale)))
-        .x_labels(6)
-        .y_labels(6)
-        .x_label_formatter(&|v| axis_tick_label(*v, &fig.x))
-        .y_label_formatter(&|v| axis_tick_label(*v, &fig.y))
-        .draw()
-        .map_err(err)?;
-    if let Some(direct) = out.direct {
+    let backdrop_clipped = match kept {
+        true => clips(&fig.series[..backdrop], fig),
+        false => {
+            draw_mesh(&area, &mut chart, fig, theme, scale)?;
+            if fig.heatmap.is_none() {
+                draw_origin_lines(&mut chart, fig, theme, scale)?;
+            }
+            draw_series(
+                &mut chart,
+                &fig.series[..backdrop],
+                fig,
+                theme,
+                scale,
+                out.direct,
+            )?
+        }
+    };
+    if let Some((direct, key)) = layer {
         direct.end_layer(key);
     }
     draw_title(&area, fig, theme, scale)?;
@@ -257,30 +338,19 @@ pub(super) fn draw<DB: DrawingBackend>(
         draw_colour_bar(&area, h, bar, theme, scale, out.direct)?;
     }
 
-    if fig.origin_lines {
-        let (x0, x1) = fig.x.range;
-        let (y0, y1) = fig.y.range;
-        let style = fg.mix(0.6).stroke_width(px(1.0, scale));
-        if x0 < 0.0 && x1 > 0.0 {
-            chart
-                .draw_series(std::iter::once(PathElement::new(
-                    vec![(0.0, y0), (0.0, y1)],
-                    style,
-                )))
-                .map_err(err)?;
-        }
-        if y0 < 0.0 && y1 > 0.0 {
-            chart
-                .draw_series(std::iter::once(PathElement::new(
-                    vec![(x0, 0.0), (x1, 0.0)],
-                    style,
-                )))
-                .map_err(err)?;
-        }
+    if fig.heatmap.is_some() {
+        draw_origin_lines(&mut chart, fig, theme, scale)?;
     }
 
     let right = area.get_pixel_range().0.end;
-    draw_lines_and_markers(&mut chart, fig, theme, scale, (out.direct, right))?;
+    draw_lines_and_markers(
+        &mut chart,
+        fig,
+        theme,
+        scale,
+        (out.direct, right),
+        (backdrop, backdrop_clipped),
+    )?;
     match placement {
         Placement::Inside(x, y) => {
             let plot = chart.plotting_area().strip_coord_spec();

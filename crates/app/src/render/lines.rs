@@ -2,7 +2,7 @@
 
 use super::chart::Chart;
 use super::{err, px, RenderError};
-use crate::figure::{AxisScale, Dash, Figure, FigureKind, LineStyle, MarkerShape, Series};
+use crate::figure::{AxisScale, Dash, Figure, FigureKind, MarkerShape, Series};
 use crate::theme::Theme;
 use plotters::prelude::*;
 
@@ -24,50 +24,65 @@ pub(super) fn segments(s: &Series, fig: &Figure) -> (Vec<Vec<(f64, f64)>>, bool)
     };
     let bx = widen(fig.x.range, x_log);
     let by = widen(fig.y.range, y_log);
+    // The same box in data units: a point tested there needs no logarithm, and a segment
+    // between two points inside it is drawn as given (the box is convex in the axes' scale).
+    let (dx, dy) = (
+        (from(bx.0, x_log), from(bx.1, x_log)),
+        (from(by.0, y_log), from(by.1, y_log)),
+    );
+    let inside = |(x, y): (f64, f64)| (dx.0..=dx.1).contains(&x) && (dy.0..=dy.1).contains(&y);
+    // A point in the axes' scale, kept far from overflow (no pixel tells 1e300 from 1e200).
+    let scaled = |(x, y): (f64, f64)| {
+        (
+            to(x, x_log).clamp(-1e200, 1e200),
+            to(y, y_log).clamp(-1e200, 1e200),
+        )
+    };
+    let back = |(u, v): (f64, f64)| (from(u, x_log), from(v, y_log));
     let mut out: Vec<Vec<(f64, f64)>> = Vec::new();
     let mut cur: Vec<(f64, f64)> = Vec::new();
     let mut clipped = false;
-    // The last drawable point, in the axes' scale.
-    let mut prev: Option<(f64, f64)> = None;
-    let inside = |(u, v): (f64, f64)| (bx.0..=bx.1).contains(&u) && (by.0..=by.1).contains(&v);
-    let back = |(u, v): (f64, f64)| (from(u, x_log), from(v, y_log));
+    // The last drawable point and whether it is inside the box.
+    let mut prev: Option<((f64, f64), bool)> = None;
     // Ends the piece being drawn, if any.
     let end_piece = |cur: &mut Vec<(f64, f64)>, out: &mut Vec<Vec<(f64, f64)>>| {
         if !cur.is_empty() {
             out.push(std::mem::take(cur));
         }
     };
-    for &(x, y) in &s.points {
+    for &q in &s.points {
+        let (x, y) = q;
         let drawable = x.is_finite() && y.is_finite() && (!x_log || x > 0.0) && (!y_log || y > 0.0);
         if !drawable {
             prev = None;
             end_piece(&mut cur, &mut out);
             continue;
         }
-        // Kept far from overflow; no pixel tells 1e300 from 1e200.
-        let p = (
-            to(x, x_log).clamp(-1e200, 1e200),
-            to(y, y_log).clamp(-1e200, 1e200),
-        );
-        clipped |= !inside(p);
-        match prev.replace(p) {
-            None if inside(p) => cur.push(back(p)),
+        let q_in = inside(q);
+        clipped |= !q_in;
+        match prev.replace((q, q_in)) {
+            None if q_in => cur.push(q),
             None => {}
-            Some(a) => match clip(a, p, bx, by) {
-                Some((start, end)) => {
-                    // Entering the box, or starting a piece (the one drawn so far, if any,
-                    // left the box before `a`).
-                    if start != a || cur.is_empty() {
-                        end_piece(&mut cur, &mut out);
-                        cur.push(back(start));
+            // Both ends inside: the piece goes on to `q` (`a` ends it).
+            Some((_, true)) if q_in => cur.push(q),
+            Some((a, _)) => {
+                let (sa, sq) = (scaled(a), scaled(q));
+                match clip(sa, sq, bx, by) {
+                    Some((start, end)) => {
+                        // Entering the box, or starting a piece (the one drawn so far, if
+                        // any, left the box before `a`).
+                        if start != sa || cur.is_empty() {
+                            end_piece(&mut cur, &mut out);
+                            cur.push(if start == sa { a } else { back(start) });
+                        }
+                        cur.push(if end == sq { q } else { back(end) });
+                        if end != sq {
+                            end_piece(&mut cur, &mut out); // left the box
+                        }
                     }
-                    cur.push(back(end));
-                    if end != p {
-                        end_piece(&mut cur, &mut out); // left the box
-                    }
+                    None => end_piece(&mut cur, &mut out),
                 }
-                None => end_piece(&mut cur, &mut out),
-            },
+            }
         }
     }
     if !cur.is_empty() {
@@ -152,21 +167,18 @@ pub(super) fn text_offset(x: i32, width: i32, right: i32, scale: f64) -> i32 {
     }
 }
 
-/// Draws the series and markers of `fig`; returns the legend entries. With `direct`, the
-/// backend dashes each series as one path (see [`super::Direct::dash`]). `right` is the
-/// canvas's right edge (backend px), which text markers keep within.
-pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
+/// Draws `series` (of `fig`, whose axes clip them); returns whether any was clipped. With
+/// `direct`, the backend dashes each series as one path (see [`super::Direct::dash`]).
+pub(super) fn draw_series<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
-    fig: &'f Figure,
+    series: &[Series],
+    fig: &Figure,
     theme: &Theme,
     scale: f64,
-    (direct, right): (Option<&dyn super::Direct>, i32),
-) -> Result<Vec<(&'f str, LineStyle)>, RenderError> {
-    let fg = theme.foreground;
-    let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
-    let mut legend: Vec<(&str, LineStyle)> = Vec::new();
+    direct: Option<&dyn super::Direct>,
+) -> Result<bool, RenderError> {
     let mut clipped = false;
-    for s in &fig.series {
+    for s in series {
         let color = theme.color(s.style.ink.index());
         let style = color.stroke_width(px(s.style.width, scale));
         let (segs, cut) = segments(s, fig);
@@ -201,10 +213,32 @@ pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
                 }
             }
         }
-        if !s.label.is_empty() {
-            legend.push((&s.label, s.style));
-        }
     }
+    Ok(clipped)
+}
+
+/// Whether drawing `series` on `fig`'s axes would clip any of them (see [`segments`]),
+/// without drawing: for a backdrop kept in a static layer.
+pub(super) fn clips(series: &[Series], fig: &Figure) -> bool {
+    series.iter().any(|s| segments(s, fig).1)
+}
+
+/// Draws the series of `fig` from `from` on (those before it are its backdrop, drawn with
+/// its static layer, `clipped` saying whether that clipped any), then its markers, and
+/// says so on the plot if any series was clipped. `right` is the canvas's right edge
+/// (backend px), which text markers keep within.
+pub(super) fn draw_lines_and_markers<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    fig: &Figure,
+    theme: &Theme,
+    scale: f64,
+    (direct, right): (Option<&dyn super::Direct>, i32),
+    (from, clipped): (usize, bool),
+) -> Result<(), RenderError> {
+    let fg = theme.foreground;
+    let font = |size: f64| (super::SANS, size * scale).into_font().color(&fg);
+    let rest = fig.series.get(from..).unwrap_or_default();
+    let clipped = draw_series(chart, rest, fig, theme, scale, direct)? | clipped;
 
     for m in &fig.markers {
         let color = theme.color(m.ink.index());
@@ -265,5 +299,5 @@ pub(super) fn draw_lines_and_markers<'f, DB: DrawingBackend>(
         let note = crate::t!("plot-clipped");
         area.draw(&Text::new(note, at, font(11.0))).map_err(err)?;
     }
-    Ok(legend)
+    Ok(())
 }

@@ -136,11 +136,13 @@ pub trait Direct {
     /// Stops (`true`) or resumes (`false`) drawing; text is still measured. For a trial
     /// layout that only gives pixels (a plot with a legend is laid out twice).
     fn mute(&self, on: bool);
-    /// At the start of a plot's static layer (background, the title's band, grid, ticks
-    /// and axis names; the title is drawn after [`Direct::end_layer`]), which `key` names: a backend that holds that layer draws it at once and
-    /// then nothing until [`Direct::end_layer`]. While a control is held the axes hold
-    /// still, so most frames need only the data drawn.
-    fn begin_layer(&self, key: u64);
+    /// At the start of a plot's static layer (background, the title's band, grid, ticks,
+    /// axis names and the figure's backdrop series; the title is drawn after
+    /// [`Direct::end_layer`]), which `key` names. A backend that holds that layer draws it
+    /// at once, returns `true` (the caller then skips drawing the layer) and draws nothing
+    /// until [`Direct::end_layer`]. While a control is held the axes hold still, so most
+    /// frames need only the data drawn.
+    fn begin_layer(&self, key: u64) -> bool;
     /// At the end of the static layer `key`: resumes drawing, and may keep what is drawn
     /// so far as that layer.
     fn end_layer(&self, key: u64);
@@ -249,7 +251,7 @@ fn draw_schematic<DB: DrawingBackend>(
     };
     // Dashes as segments: a schematic has few, short ones.
     let right = root.get_pixel_range().0.end;
-    draw_lines_and_markers(&mut chart, &fitted, theme, scale, (None, right))?;
+    draw_lines_and_markers(&mut chart, &fitted, theme, scale, (None, right), (0, false))?;
     Ok(PlotGeometry {
         area: (0.0, 0.0, w, h),
         x,

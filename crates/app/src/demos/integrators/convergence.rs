@@ -172,6 +172,8 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
             ));
         }
     }
+    // The study and the reference slopes do not depend on h: a backdrop.
+    let backdrop = c.series.len();
     c.markers.push(Marker::text(
         format!("h = {}", si(r.h, "s", 3)),
         (r.h * 1.1, y_range.0 * 30.0),
@@ -195,6 +197,7 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
     );
     Figure {
         series: c.series,
+        backdrop,
         markers: c.markers,
         ..Figure::plot(
             t!("integrators-plot-convergence"),

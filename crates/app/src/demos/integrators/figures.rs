@@ -156,8 +156,10 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
         }
         Err(e) => words.push(text::dp45_failed(e)),
     }
+    // The exact solution does not depend on h, the tolerance or the methods shown.
     Figure {
         series,
+        backdrop: 1,
         markers,
         ..Figure::plot(
             t!("integrators-plot-response"),

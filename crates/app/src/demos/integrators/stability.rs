@@ -33,6 +33,8 @@ pub(super) fn figure(p: &P, r: &Results, regions: &[Vec<(f64, f64)>]) -> Figure 
             },
         ));
     }
+    // The regions do not depend on the system: a backdrop.
+    let backdrop = series.len();
     let z = h_lambda(r);
     let (x, y) = window(&z);
     let mut markers = Vec::new();
@@ -78,6 +80,7 @@ pub(super) fn figure(p: &P, r: &Results, regions: &[Vec<(f64, f64)>]) -> Figure 
     }
     Figure {
         series,
+        backdrop,
         markers,
         ..Figure::plot(
             t!("integrators-plot-stability"),

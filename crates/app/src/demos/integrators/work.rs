@@ -83,7 +83,9 @@ pub(super) fn figure(p: &P, r: &Results) -> Figure {
     let tols = r.study.budget.tols;
     let (xlo, xhi) = finite_extent(drawn.iter().map(|q| q.0)).unwrap_or((10.0, 1e5));
     let (ylo, yhi) = finite_extent(drawn.iter().map(|q| q.1)).unwrap_or((floor, p.x0));
+    // Every curve is the study's, which h does not change: a backdrop.
     Figure {
+        backdrop: series.len(),
         series,
         markers,
         ..Figure::plot(

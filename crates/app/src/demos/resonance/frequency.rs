@@ -186,6 +186,7 @@ pub(super) fn magnitude(res: &Results, grid: &[f64], family: &Family) -> Figure 
     };
     Figure {
         series,
+        backdrop: FAMILY.len(),
         markers,
         ..Figure::plot(title, ratio_axis(), y)
     }
@@ -208,6 +209,7 @@ pub(super) fn phase(res: &Results, grid: &[f64], family: &Family) -> Figure {
         };
         fig = fig.with_line(label, pts.clone(), LineStyle::dotted(Ink::Black, 1.2));
     }
+    let fig = fig.with_backdrop();
     let drive = res.p.r;
     let ph = frf::phase(drive, z);
     fig.with_line(

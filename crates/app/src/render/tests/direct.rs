@@ -6,11 +6,13 @@ use super::*;
 /// A stretched image as drawn: size, pixels, where it goes and its clip.
 type Drawn = ((u32, u32), Vec<u8>, [i32; 4], [i32; 4]);
 
-/// A backend's own drawing, recorded: the images stretched, and the calls in order.
+/// A backend's own drawing, recorded: the images stretched, the calls in order, and
+/// whether it says it keeps every static layer (then it has drawn it).
 #[derive(Default)]
 struct Recorder(
     std::cell::RefCell<Vec<Drawn>>,
     std::cell::RefCell<Vec<String>>,
+    bool,
 );
 
 impl Direct for Recorder {
@@ -23,8 +25,9 @@ impl Direct for Recorder {
     fn mute(&self, on: bool) {
         self.1.borrow_mut().push(format!("mute {on}"));
     }
-    fn begin_layer(&self, key: u64) {
+    fn begin_layer(&self, key: u64) -> bool {
         self.1.borrow_mut().push(format!("begin {key}"));
+        self.2
     }
     fn end_layer(&self, key: u64) {
         self.1.borrow_mut().push(format!("end {key}"));
@@ -181,4 +184,72 @@ fn a_heatmap_is_one_image_of_a_pixel_per_cell_over_its_cells_and_so_is_its_colou
         without.matches("<rect").count() + 1,
         "only the bar's frame"
     );
+}
+
+/// `fig` drawn by a backend that keeps (`true`) or lacks its static layer: the layer's key
+/// and the SVG of what was drawn through plotters.
+fn layered(fig: &Figure, keeps: bool) -> (String, String) {
+    let rec = Recorder(Default::default(), Default::default(), keeps);
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        render_with(&root, fig, &Theme::LIGHT, 1.0, Output::with_direct(&rec)).unwrap();
+    }
+    let calls = rec.1.into_inner();
+    let key = calls.iter().find_map(|c| c.strip_prefix("begin ")).unwrap();
+    (key.to_owned(), svg)
+}
+
+#[test]
+fn a_kept_layer_holds_the_mesh_and_the_backdrop_and_its_key_their_points() {
+    // A thin family behind the data, one of its curves leaving the axes.
+    let mut fig = sample();
+    fig.markers.clear();
+    fig.origin_lines = false;
+    let family = |k: f64| Series {
+        label: String::new(),
+        points: (0..=20)
+            .map(|i| (f64::from(i) / 20.0, k * f64::from(i) / 20.0))
+            .collect(),
+        style: LineStyle::dotted(Ink::Black, 1.2),
+    };
+    fig.series.splice(0..0, [family(0.5), family(3.0)]);
+    fig.series[2].points = vec![(0.0, 0.1), (1.0, 0.2)];
+    fig.series[2].label.clear(); // no legend line
+    fig.backdrop = 2;
+    let (key, whole) = layered(&fig, false);
+    let (kept_key, drawn) = layered(&fig, true);
+    assert_eq!(kept_key, key);
+    // Drawn whole: grid, tick labels, the backdrop and the data; over a kept layer only
+    // the data, the title and the note that a curve leaves the axes (the backdrop's).
+    let lines = |svg: &str| svg.matches("<polyline").count();
+    assert_eq!(lines(&drawn), 1, "{drawn}");
+    assert!(lines(&whole) > 3, "{whole}");
+    assert!(whole.contains("time t [s]") && !drawn.contains("time t [s]"));
+    let note = crate::t!("plot-clipped");
+    assert!(drawn.contains(&note) && whole.contains(&note));
+    // Without that curve, nothing is clipped.
+    let mut inside = fig.clone();
+    inside.series[1] = family(0.9);
+    assert!(!layered(&inside, true).1.contains(&note));
+    // The layer is another when a backdrop point moves, not when a data point does.
+    let mut moved = fig.clone();
+    moved.series[2].points[0].1 = 0.5;
+    assert_eq!(layered(&moved, false).0, key);
+    moved.series[0].points[3].1 = 0.11;
+    assert_ne!(layered(&moved, false).0, key);
+    // Under a heatmap, drawn over the layer, there is no backdrop.
+    let mut mapped = fig.clone();
+    mapped.heatmap = Some(crate::figure::Heatmap {
+        log: false,
+        nx: 1,
+        ny: 1,
+        values: vec![0.5],
+        x_edges: (0.0, 1.0),
+        y_edges: (-1.0, 1.0),
+        scale: (0.0, 1.0),
+        label: String::new(),
+    });
+    let (_, over_map) = layered(&mapped, true);
+    assert_eq!(lines(&over_map), 3, "{over_map}");
 }

@@ -12,6 +12,7 @@ fn sample() -> Figure {
             points: vec![(0.0, 0.0), (0.5, f64::NAN), (0.6, 1e300), (1.0, -0.5)],
             style: LineStyle::solid(Ink::Blue, 2.0),
         }],
+        backdrop: 0,
         markers: vec![Marker {
             label: "p".into(),
             at: (0.5, 0.5),
