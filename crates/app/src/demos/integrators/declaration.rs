@@ -29,7 +29,7 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         // The fixed-step methods by their index in the results: forward Euler, symplectic
         // Euler, Heun, RK4.
         readouts: readouts! { Results, |r|;
-            number "h_used", "step used: exactly h (a shorter last step ends the run at T)", "s", 4
+            number "h_used", "step used, every step but the last", "s", 4
                 => Some(r.h);
             number "h_last", "last step, ending the run at T", "s", 4 => Some(r.h_last);
             number_or_note "max_err_euler", "max error, forward Euler", "m", 3 => max_err(r, 0);
