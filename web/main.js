@@ -40,6 +40,7 @@ const app = {
   session: null,
   prepared: null, // the session whose static-layer canvases are set up (prepareLayers)
   layerRounds: 0, // keepLayer calls since the last update
+  takingOver: null, // the switch to the full module under way for a click or a tap (useFullModule)
   view: null,
   framePending: false,
   needsRecovery: false,
@@ -911,14 +912,24 @@ function wireProbes() {
   for (const [key, canvas] of app.view.canvases) {
     const { overlay, tip, stage } = app.view.overlays.get(key);
     const show = (ev) => {
+      if (!app.session.probe) {
+        // A first module has no probe. A press or a tap waits for the full module and then
+        // shows the values under it (a tap in the first seconds showed nothing); a hover
+        // shows them on a move after the full module has taken over.
+        if (ev.type === 'pointerdown') {
+          useFullModule()
+            .then(() => app.session.probe && show(ev))
+            .catch(() => {});
+        }
+        return;
+      }
       const dpr = window.devicePixelRatio || 1;
       const rect = canvas.getBoundingClientRect();
       const px = (ev.clientX - rect.left) * dpr;
       const py = (ev.clientY - rect.top) * dpr;
       let probe;
       try {
-        // A first module has no probe: values show once the full module has taken over.
-        probe = app.session.probe?.(key, px, py);
+        probe = app.session.probe(key, px, py);
       } catch (err) {
         reportFailure(err);
         return;
@@ -1238,13 +1249,19 @@ function takeOver({ glue, exports }, { session, language }) {
 }
 
 /** Resolves once the open demo runs on the full module (switching to it now if needed). */
-async function useFullModule() {
-  if (app.module !== 'first') return;
-  const mod = await loadFull();
-  if (app.module !== 'first') return;
-  adopt(mod);
-  // The new session has figures once the update adopt asked for has run (same frame).
-  await new Promise((resolve) => requestAnimationFrame(resolve));
+function useFullModule() {
+  if (app.module !== 'first') return app.takingOver ?? Promise.resolve();
+  // One take-over for every caller at once (a tap's read-out and its click's pick): each
+  // resolves once the new session has drawn.
+  app.takingOver ??= (async () => {
+    const mod = await loadFull();
+    if (app.module === 'first') adopt(mod);
+    // The new session has figures once the update adopt asked for has run (same frame).
+    await new Promise((resolve) => requestAnimationFrame(resolve));
+  })().finally(() => {
+    app.takingOver = null;
+  });
+  return app.takingOver;
 }
 
 /** Moves the open demo from the first module's instance to the full module's. */
