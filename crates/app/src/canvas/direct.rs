@@ -3,7 +3,7 @@
 //! muted trial layout, and each plot's static layer (background, grid, ticks, axis names) kept
 //! as a copy once it has come twice in a row, so a held drag starts each frame from it.
 
-use crate::render::{Direct, Stretched};
+use crate::render::{Direct, LayerNote, Stretched};
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 use wasm_bindgen::{JsCast, JsValue};
@@ -18,13 +18,14 @@ pub struct CanvasDirect {
 
 /// A canvas's static layer: the key of the layer last begun on it, in how many frames in
 /// a row, and a copy of it (`valid` once the layer has come twice in a row: a plot whose
-/// axes change every frame is never copied).
+/// axes change every frame is never copied) with what its drawing noted.
 struct Layer {
     canvas: HtmlCanvasElement,
     key: u64,
     frames: u32,
     copy: Option<HtmlCanvasElement>,
     valid: bool,
+    note: LayerNote,
 }
 
 /// A canvas outside the page of one size, with its context (see `SCRATCH`).
@@ -129,6 +130,7 @@ pub fn prepare(canvas: &HtmlCanvasElement) {
                     frames: 0,
                     copy: Some(copy),
                     valid: false,
+                    note: LayerNote::default(),
                 });
             }
         }
@@ -160,9 +162,9 @@ impl Direct for CanvasDirect {
         self.muted.set(on);
     }
 
-    fn begin_layer(&self, key: u64) -> bool {
+    fn begin_layer(&self, key: u64) -> Option<LayerNote> {
         if KEEPS_NO_LAYER {
-            return false;
+            return None;
         }
         KEPT.with_borrow_mut(|kept| {
             let mut layer = match kept.iter().position(|l| l.canvas == self.canvas) {
@@ -173,6 +175,7 @@ impl Direct for CanvasDirect {
                     frames: 0,
                     copy: None,
                     valid: false,
+                    note: LayerNote::default(),
                 },
             };
             if layer.key == key {
@@ -196,12 +199,13 @@ impl Direct for CanvasDirect {
             if kept.len() >= LAYERS {
                 kept.remove(0);
             }
+            let note = layer.note;
             kept.push(layer);
-            drawn
+            drawn.then_some(note)
         })
     }
 
-    fn end_layer(&self, key: u64) {
+    fn end_layer(&self, key: u64, note: LayerNote) {
         if self.muted.replace(false) || KEEPS_NO_LAYER {
             return;
         }
@@ -225,6 +229,7 @@ impl Direct for CanvasDirect {
                 c.draw_image_with_html_canvas_element(&self.canvas, 0.0, 0.0)
                     .is_ok()
             });
+            layer.note = note;
         });
     }
 

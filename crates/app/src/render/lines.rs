@@ -217,12 +217,6 @@ pub(super) fn draw_series<DB: DrawingBackend>(
     Ok(clipped)
 }
 
-/// Whether drawing `series` on `fig`'s axes would clip any of them (see [`segments`]),
-/// without drawing: for a backdrop kept in a static layer.
-pub(super) fn clips(series: &[Series], fig: &Figure) -> bool {
-    series.iter().any(|s| segments(s, fig).1)
-}
-
 /// Draws the series of `fig` from `from` on (those before it are its backdrop, drawn with
 /// its static layer, `clipped` saying whether that clipped any), then its markers, and
 /// says so on the plot if any series was clipped. `right` is the canvas's right edge

@@ -139,13 +139,22 @@ pub trait Direct {
     /// At the start of a plot's static layer (background, the title's band, grid, ticks,
     /// axis names and the figure's backdrop series; the title is drawn after
     /// [`Direct::end_layer`]), which `key` names. A backend that holds that layer draws it
-    /// at once, returns `true` (the caller then skips drawing the layer) and draws nothing
-    /// until [`Direct::end_layer`]. While a control is held the axes hold still, so most
-    /// frames need only the data drawn.
-    fn begin_layer(&self, key: u64) -> bool;
+    /// at once, returns what was noted with it (the caller then skips drawing the layer)
+    /// and draws nothing until [`Direct::end_layer`]. While a control is held the axes
+    /// hold still, so most frames need only the data drawn.
+    fn begin_layer(&self, key: u64) -> Option<LayerNote>;
     /// At the end of the static layer `key`: resumes drawing, and may keep what is drawn
-    /// so far as that layer.
-    fn end_layer(&self, key: u64);
+    /// so far as that layer, with `note`.
+    fn end_layer(&self, key: u64, note: LayerNote);
+}
+
+/// What a static layer's drawing found that the frames drawn over it still show: whether
+/// its backdrop leaves the axes (the plot then says it is clipped). Kept with the layer, so
+/// a frame over it need not go through the backdrop's points again.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct LayerNote {
+    /// Whether a backdrop series was clipped.
+    pub clipped: bool,
 }
 
 /// An RGB image of `size` = (columns, rows) pixels, rows top to bottom, to be drawn over

@@ -6,13 +6,15 @@ use super::*;
 /// A stretched image as drawn: size, pixels, where it goes and its clip.
 type Drawn = ((u32, u32), Vec<u8>, [i32; 4], [i32; 4]);
 
-/// A backend's own drawing, recorded: the images stretched, the calls in order, and
-/// whether it says it keeps every static layer (then it has drawn it).
+/// A backend's own drawing, recorded: the images stretched, the calls in order, whether
+/// it says it keeps every static layer (then it has drawn it), and the note it returns
+/// with a kept layer (the last one noted).
 #[derive(Default)]
 struct Recorder(
     std::cell::RefCell<Vec<Drawn>>,
     std::cell::RefCell<Vec<String>>,
     bool,
+    std::cell::Cell<LayerNote>,
 );
 
 impl Direct for Recorder {
@@ -25,12 +27,13 @@ impl Direct for Recorder {
     fn mute(&self, on: bool) {
         self.1.borrow_mut().push(format!("mute {on}"));
     }
-    fn begin_layer(&self, key: u64) -> bool {
+    fn begin_layer(&self, key: u64) -> Option<LayerNote> {
         self.1.borrow_mut().push(format!("begin {key}"));
-        self.2
+        self.2.then_some(self.3.get())
     }
-    fn end_layer(&self, key: u64) {
+    fn end_layer(&self, key: u64, note: LayerNote) {
         self.1.borrow_mut().push(format!("end {key}"));
+        self.3.set(note);
     }
 }
 
@@ -189,12 +192,20 @@ fn a_heatmap_is_one_image_of_a_pixel_per_cell_over_its_cells_and_so_is_its_colou
 /// `fig` drawn by a backend that keeps (`true`) or lacks its static layer: the layer's key
 /// and the SVG of what was drawn through plotters.
 fn layered(fig: &Figure, keeps: bool) -> (String, String) {
-    let rec = Recorder(Default::default(), Default::default(), keeps);
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
-        render_with(&root, fig, &Theme::LIGHT, 1.0, Output::with_direct(&rec)).unwrap();
-    }
+    let draw = |rec: &Recorder| {
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+            render_with(&root, fig, &Theme::LIGHT, 1.0, Output::with_direct(rec)).unwrap();
+        }
+        svg
+    };
+    // Drawn whole first, as a canvas draws a layer before it keeps it: that drawing notes
+    // what the frames over the layer still show.
+    let whole = Recorder::default();
+    draw(&whole);
+    let rec = Recorder(Default::default(), Default::default(), keeps, whole.3);
+    let svg = draw(&rec);
     let calls = rec.1.into_inner();
     let key = calls.iter().find_map(|c| c.strip_prefix("begin ")).unwrap();
     (key.to_owned(), svg)

@@ -162,9 +162,24 @@ fn held_axes_keep_their_ranges_and_widen_only_for_data_that_leaves_them() {
     fig.y.range = (-0.5, 0.5);
     hold_axes(&mut fig, Some(((0.0, 1.5), (-1.0, 1.0))));
     assert_eq!((fig.x.range, fig.y.range), ((0.0, 1.5), (-1.0, 1.0)));
+    // Data leaving a held axis widen it past them by a quarter of the new span, on that
+    // side only, so the next frames of a drag that keeps pushing find room.
     fig.y.range = (-2.0, 0.5);
     hold_axes(&mut fig, Some(((0.0, 1.5), (-1.0, 1.0))));
-    assert_eq!(fig.y.range, (-2.0, 1.0));
+    assert_eq!(fig.y.range, (-2.75, 1.0));
+    fig.y.range = (-2.5, 0.5);
+    hold_axes(&mut fig, Some(((0.0, 1.5), (-2.75, 1.0))));
+    assert_eq!(fig.y.range, (-2.75, 1.0), "within the margin: held");
+    // Not across zero: magnitudes from 0.1 held at 0.5…1 widen down to 0, not below.
+    fig.y.range = (0.1, 0.9);
+    hold_axes(&mut fig, Some(((0.0, 1.5), (0.5, 1.0))));
+    assert_eq!(fig.y.range, (0.0, 1.0));
+    // On a log axis the margin is in decades: 1…100 held, data to 1000 → 10^(3 + 0.75).
+    decades.x.range = (1.0, 1000.0);
+    hold_axes(&mut decades, Some(((1.0, 100.0), (-1.0, 1.0))));
+    let (lo, hi) = decades.x.range;
+    assert_eq!(lo, 1.0);
+    assert!((hi.log10() - 3.75).abs() < 1e-12, "{hi}");
     let mut drawing = Figure::schematic(
         "s",
         Axis::linear("x", "m", (0.0, 1.0)),
