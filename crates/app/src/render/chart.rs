@@ -304,6 +304,9 @@ pub(super) fn draw<DB: DrawingBackend>(
         .map(|d| (d, static_key(fig, backdrop, theme, scale, (w, h, band_h))));
     // A layer the backend keeps is drawn already: its mesh and backdrop are skipped.
     let kept = layer.and_then(|(direct, key)| direct.begin_layer(key));
+    if layer.is_some() && kept.is_none() {
+        root.fill(&theme.background).map_err(err)?;
+    }
     let mut chart = build(&area, fig, theme, scale, short)?;
     let backdrop_clipped = match kept {
         Some(note) => note.clipped,

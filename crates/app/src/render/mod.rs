@@ -208,7 +208,11 @@ pub fn render_with<DB: DrawingBackend>(
     scale: f64,
     out: Output<'_>,
 ) -> Result<PlotGeometry, RenderError> {
-    root.fill(&theme.background).map_err(err)?;
+    // A backend that draws itself fills the background with the plot's static layer, which
+    // a kept copy covers whole (see `chart::draw`).
+    if fig.kind == FigureKind::Schematic || out.direct.is_none() {
+        root.fill(&theme.background).map_err(err)?;
+    }
     if fig.kind == FigureKind::Schematic {
         let g = draw_schematic(root, fig, theme, scale)?;
         root.present().map_err(err)?;
