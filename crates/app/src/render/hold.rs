@@ -16,7 +16,7 @@ pub const WIDEN_MARGIN: f64 = 0.25;
 
 /// While a control is dragged, a plot keeps the ranges it was last drawn with (`held`),
 /// widened only where the new figure's own ranges leave them, and then by
-/// [`WIDEN_MARGIN`] past them (not across zero on a linear axis: a range of magnitudes
+/// `WIDEN_MARGIN` past them (not across zero on a linear axis: a range of magnitudes
 /// stays one), so the axes hold still and the change the control makes is seen; the
 /// figure's own ranges return when the drag ends. An axis whose own range has shrunk under
 /// a third of the held one (on log axes, in decades) takes its own at once: held, the
