@@ -84,12 +84,17 @@ pub(super) fn axis_tick_label(v: f64, axis: &Axis) -> String {
 }
 
 /// A tick label: at most 6 significant digits, no rounding tails (`0.30000000000000004` →
-/// `0.3`), trailing zeros dropped, in the language's digits and separators.
+/// `0.3`), trailing zeros dropped, in the language's digits and separators; from a million
+/// up with an exponent (`1e8`, not `100000000`), as below 10⁻⁴ (`1e-6`), so the decades
+/// of a log axis read alike.
 pub fn tick_label(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return "0".to_string();
     }
-    let s = crate::format::significant_plain(v, 6);
+    let s = match v.abs() >= 1e6 {
+        true => format!("{v:.5e}"),
+        false => crate::format::significant_plain(v, 6),
+    };
     let localized = |digits: &str| {
         let digits = trim_zeros(digits);
         let decimals = digits.split_once('.').map_or(0, |(_, f)| f.len());

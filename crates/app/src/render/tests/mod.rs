@@ -123,6 +123,10 @@ fn tick_labels_are_short_and_follow_the_language() {
     assert_eq!(tick_label(1.000_000_000_000_000_2e-6), "1e-6");
     assert_eq!(tick_label(1e-7), "1e-7");
     assert_eq!(tick_label(24_000.0), "24000");
+    // From a million up, an exponent, as below 10⁻⁴: a log axis of errors reads 1e-6 … 1e8.
+    assert_eq!(tick_label(1e8), "1e8");
+    assert_eq!(tick_label(2.5e6), "2.5e6");
+    assert_eq!(tick_label(999_999.0), "999999");
     assert_eq!(tick_label(0.0), "0");
 }
 
