@@ -80,21 +80,41 @@ pub(super) fn axis_tick_label(v: f64, axis: &Axis) -> String {
     if axis.scale == AxisScale::Linear && span.is_finite() && v.abs() < 1e-9 * span {
         return "0".to_string();
     }
+    if axis.scale == AxisScale::Log && lo > 0.0 && hi / lo >= WIDE_LOG_SPAN && v > 0.0 {
+        return exponent_label(v);
+    }
     tick_label(v)
 }
 
+/// A log axis at least this wide (a ratio: six decades) labels every tick with an exponent
+/// but 1 (`1e4 … 1e-2 … 1e-6`): plain below that reach, an error axis read `10000 … 0.0001
+/// … 1e-6`, its decades in two notations.
+const WIDE_LOG_SPAN: f64 = 1e6;
+
 /// A tick label: at most 6 significant digits, no rounding tails (`0.30000000000000004` →
 /// `0.3`), trailing zeros dropped, in the language's digits and separators; from a million
-/// up with an exponent (`1e8`, not `100000000`), as below 10⁻⁴ (`1e-6`), so the decades
-/// of a log axis read alike.
+/// up with an exponent (`1e8`, not `100000000`), as below 10⁻⁴ (`1e-6`).
 pub fn tick_label(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return "0".to_string();
     }
-    let s = match v.abs() >= 1e6 {
-        true => format!("{v:.5e}"),
-        false => crate::format::significant_plain(v, 6),
-    };
+    match v.abs() >= 1e6 {
+        true => written(&format!("{v:.5e}")),
+        false => written(&crate::format::significant_plain(v, 6)),
+    }
+}
+
+/// `v` as a tick label with an exponent (`1e-6`, `2.5e4`), 1 as `1`.
+fn exponent_label(v: f64) -> String {
+    match v == 1.0 {
+        true => "1".to_string(),
+        false => written(&format!("{v:.5e}")),
+    }
+}
+
+/// A locale-free number (`1.20000`, `3.5e-7`) as a label: trailing zeros dropped, in the
+/// language's digits and separators.
+fn written(s: &str) -> String {
     let localized = |digits: &str| {
         let digits = trim_zeros(digits);
         let decimals = digits.split_once('.').map_or(0, |(_, f)| f.len());
@@ -102,7 +122,7 @@ pub fn tick_label(v: f64) -> String {
     };
     match s.split_once('e') {
         Some((mantissa, exp)) => format!("{}e{exp}", localized(mantissa)),
-        None => localized(&s),
+        None => localized(s),
     }
 }
 

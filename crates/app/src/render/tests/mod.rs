@@ -146,6 +146,22 @@ fn a_tick_at_zero_reads_0_not_the_rounding_left_from_adding_steps() {
 }
 
 #[test]
+fn a_wide_log_axis_writes_every_decade_alike() {
+    use super::ticks::axis_tick_label;
+    // Six decades and more: every tick but 1 with an exponent.
+    let errors = Axis::log("error", "m", (1e-14, 1e4));
+    let labels: Vec<String> = [1e4, 100.0, 1.0, 0.01, 1e-4, 1e-6]
+        .iter()
+        .map(|&v| axis_tick_label(v, &errors))
+        .collect();
+    assert_eq!(labels, ["1e4", "1e2", "1", "1e-2", "1e-4", "1e-6"]);
+    // Fewer decades (a frequency axis): plain numbers.
+    let hz = Axis::log("f", "Hz", (0.1, 100.0));
+    assert_eq!(axis_tick_label(0.2, &hz), "0.2");
+    assert_eq!(axis_tick_label(50.0, &hz), "50");
+}
+
+#[test]
 fn held_axes_keep_their_ranges_and_widen_only_for_data_that_leaves_them() {
     // Data shrunk under a third of a held axis: that axis takes the data's own range.
     let mut shrunk = sample();
