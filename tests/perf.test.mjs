@@ -227,18 +227,25 @@ test('a held drag draws the same pixels from the kept static layer as a fresh dr
   await context.close();
 });
 
-test('once the axes rest, the plots on screen keep their static layers, so a drag starts from them', { skip }, async () => {
-  // Each plot canvas's frames drawn from a kept copy of its layer: a drawImage from a
-  // canvas of its own size at (0, 0).
-  const before = async (context) => context.addInitScript(() => {
+/**
+ * A context set-up (`open`'s `before`) that counts, as `window.__fromLayer`, the frames of
+ * plot `key` drawn from a kept copy of its static layer: a drawImage from a canvas of its
+ * own size at (0, 0).
+ */
+function countLayerFrames(key) {
+  return (context) => context.addInitScript((key) => {
     window.__fromLayer = 0;
     const draw = CanvasRenderingContext2D.prototype.drawImage;
     CanvasRenderingContext2D.prototype.drawImage = function (src, ...at) {
       const whole = at.length === 2 && src instanceof HTMLCanvasElement && src.width === this.canvas.width && src.height === this.canvas.height;
-      if (whole && this.canvas.dataset.plot === 'magnitude') window.__fromLayer += 1;
+      if (whole && this.canvas.dataset.plot === key) window.__fromLayer += 1;
       return draw.call(this, src, ...at);
     };
-  });
+  }, key);
+}
+
+test('once the axes rest, the plots on screen keep their static layers, so a drag starts from them', { skip }, async () => {
+  const before = countLayerFrames('magnitude');
   const { page, errors, context } = await open(browser, `${server.url}?demo=resonance&zeta=0.2`, { colorScheme: 'light', before });
   await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
   await drawn(page);
@@ -277,15 +284,7 @@ test('a drag that keeps pushing a curve out of its held axes widens them in step
   // The 2-DOF car's motion plot on a phone's stage: a heavier wheel moves it further on
   // each move. A held axis that widened only as far as the data went was another axis on
   // nearly every frame, and a frame with new axes draws its static layer whole.
-  const before = async (context) => context.addInitScript(() => {
-    window.__fromLayer = 0;
-    const draw = CanvasRenderingContext2D.prototype.drawImage;
-    CanvasRenderingContext2D.prototype.drawImage = function (src, ...at) {
-      const whole = at.length === 2 && src instanceof HTMLCanvasElement && src.width === this.canvas.width && src.height === this.canvas.height;
-      if (whole && this.canvas.dataset.plot === 'motion') window.__fromLayer += 1;
-      return draw.call(this, src, ...at);
-    };
-  });
+  const before = countLayerFrames('motion');
   const { page, errors, context } = await open(browser, `${server.url}?demo=quarter-car-2dof`, { viewport: { width: 360, height: 740 }, deviceScaleFactor: 2, before });
   await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
   await drawn(page);
