@@ -7,8 +7,8 @@ use crate::demos::rows::readouts;
 /// Every readout in display order.
 pub(super) fn table() -> Vec<ReadoutDef<Results>> {
     readouts! { Results, |r|;
-        number "f_body", "body bounce frequency [Hz]", "Hz", 4 => Some(r.f_body);
-        number "f_wheel", "wheel hop frequency [Hz]", "Hz", 4 => Some(r.f_wheel);
+        number "f_body", "body bounce frequency", "Hz", 4 => Some(r.f_body);
+        number "f_wheel", "wheel hop frequency", "Hz", 4 => Some(r.f_wheel);
         number "window", "RMS window: the run from rest, 0 … T", "s", 3
             => r.metrics.map(|m| m.window);
         formatted "rms_body_accel", "RMS body acceleration over 0 … T (comfort)", "m/s²"
