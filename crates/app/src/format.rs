@@ -37,14 +37,20 @@ pub fn shortest(v: f64) -> String {
 }
 
 /// Formats `v` with `sig` significant digits and an SI prefix for `unit`
-/// (`0.0012 s` → `1.20 ms`). Dimensionless values and percentages get no prefix.
+/// (`0.0012 s` → `1.20 ms`). Dimensionless values and percentages get no prefix; nor does
+/// a frequency from a thousandth of its unit up to 1 (`0.9576 Hz`, not `957.6 mHz`: a
+/// vehicle's bounce or a slow oscillator is read in hertz or rad/s, never in milli-).
 pub fn si(v: f64, unit: &str, sig: usize) -> String {
     if !v.is_finite() {
         return "—".to_string();
     }
     let prefixable =
         !unit.is_empty() && !unit.starts_with('1') && !matches!(unit, "%" | "rad" | "°");
-    let (scaled, prefix) = if prefixable { engineering(v) } else { (v, "") };
+    let plain_frequency = matches!(unit, "Hz" | "rad/s") && (1e-3..1.0).contains(&v.abs());
+    let (scaled, prefix) = match prefixable && !plain_frequency {
+        true => engineering(v),
+        false => (v, ""),
+    };
     let num = significant(scaled, sig);
     match (prefix, unit) {
         (_, "") => num,
@@ -137,5 +143,15 @@ mod tests {
         assert_eq!(si(f64::NAN, "s", 3), "—");
         assert_eq!(si(0.0, "s", 3), "0 s");
         assert_eq!(significant(1.0e-7, 3), "1.00e-7");
+    }
+
+    #[test]
+    fn a_frequency_under_its_unit_is_written_without_milli() {
+        assert_eq!(si(0.957_62, "Hz", 4), "0.9576 Hz");
+        assert_eq!(si(-0.25, "rad/s", 3), "-0.250 rad/s");
+        assert_eq!(si(0.0012, "Hz", 3), "0.00120 Hz");
+        assert_eq!(si(0.000_5, "Hz", 3), "500 µHz");
+        assert_eq!(si(12_500.0, "rad/s", 3), "12.5 krad/s");
+        assert_eq!(si(0.5, "s", 3), "500 ms");
     }
 }
