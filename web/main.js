@@ -286,7 +286,7 @@ function observeVisibility() {
           }
         }
       }
-      // Right after the full module took over, the catch-up redraws (one plot a frame).
+      // Right after the full module took over, the catch-up redraws (one plot a task).
       if (stale && !app.settling) requestAnimationFrame(() => drawStale(false));
     },
     { rootMargin: `${NEAR_SCREEN * 100}% 0px` },
@@ -349,7 +349,7 @@ function prepareLayers() {
 
 /**
  * Once the controls rest, each plot on screen whose canvas does not keep its static layer
- * yet is drawn once more (the same pixels), a plot a frame, before what is out of view
+ * yet is drawn once more (the same pixels), a plot a task, before what is out of view
  * catches up: a drag's first frame then draws only the data (it drew the whole plot,
  * about twice the time of the drag's other frames at 4x CPU). At most one round per plot
  * after each update. The first module keeps no layers (no keepLayer).
@@ -367,21 +367,30 @@ function keepLayer() {
   }
 }
 
-/** keepLayer, a frame each, until every plot on screen keeps its layer. */
+/** keepLayer, a task each (after a frame each), until every plot on screen keeps its layer. */
 function keepLayers() {
-  requestAnimationFrame(() => {
-    if (!app.settling && keepLayer()) keepLayers();
-  });
+  setTimeout(() => {
+    if (!app.settling && keepLayer()) requestAnimationFrame(keepLayers);
+  }, 0);
 }
 
-/** Once the controls have rested, everything out of view catches up: one plot a frame, so
- * no task grows long. */
+/**
+ * Once the controls have rested, everything out of view catches up: one plot a task, so
+ * no task grows long. A task of its own, not an animation frame, and the next one after
+ * the frame that shows it: that frame then only commits one canvas (a plot's first
+ * drawing on the full module and the commit of its canvas were one task of 50-80 ms at 4x
+ * CPU; apart, each stays under 50).
+ */
 function scheduleCatchUp(delay = REST_MS.offscreen) {
   clearTimeout(app.catchUp);
   if (!app.staleLeft && !app.schematicStale) {
     app.settling = false;
-    prepareLayers();
-    keepLayers();
+    // A task of its own (setting up the layers' canvases is 10-20 ms at 4x CPU), not the
+    // animation frame that may have called this.
+    setTimeout(() => {
+      prepareLayers();
+      keepLayers();
+    }, 0);
     return;
   }
   app.catchUp = setTimeout(() => {
@@ -390,10 +399,8 @@ function scheduleCatchUp(delay = REST_MS.offscreen) {
       scheduleCatchUp(wait);
       return;
     }
-    requestAnimationFrame(() => {
-      if (!keepLayer()) drawStale(true);
-      scheduleCatchUp(0);
-    });
+    if (!keepLayer()) drawStale(true);
+    requestAnimationFrame(() => scheduleCatchUp(0));
   }, delay);
 }
 

@@ -213,7 +213,7 @@ impl Session {
     /// its static layer yet: a layer is kept once it has been drawn twice in a row, so
     /// without this a drag's first frame drew its plots whole (the slowest frame of every
     /// drag, about twice the others at 4× CPU slowdown). The pixels do not change. Called
-    /// while the controls rest, a plot a frame; `true` if it drew one.
+    /// while the controls rest, a plot a task; `true` if it drew one.
     #[cfg(not(feature = "first"))]
     #[wasm_bindgen(js_name = keepLayer)]
     pub fn keep_layer(&mut self, scale: f64, dark: bool) -> Result<bool, JsError> {
