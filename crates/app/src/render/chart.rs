@@ -73,13 +73,36 @@ const TITLE_SIZE: f64 = 15.0;
 /// [`draw_title`] place the title inside it as [`build`]'s caption would be.
 const MARGIN: f64 = 10.0;
 
-/// The right margin (px at scale 1): wider beside a colour bar.
+/// The right margin (px at scale 1): wider beside a colour bar, and on a log x axis that
+/// ends on a labelled tick, wide enough for the half of its label past the end (the
+/// work–precision plot's `100000` was cut in two).
 fn right_margin(fig: &Figure) -> f64 {
     if fig.heatmap.is_some() {
-        COLOUR_BAR_WIDTH
-    } else {
-        MARGIN
+        return COLOUR_BAR_WIDTH;
     }
+    MARGIN.max(end_label_overhang(&fig.x))
+}
+
+/// Width of a digit of the tick labels (px at scale 1, 12 px sans-serif: 0.56 em), a
+/// generous estimate, so that the margin needs no text measured.
+const DIGIT_WIDTH: f64 = 6.8;
+
+/// How far (px at scale 1) the label of a tick at the right end of log axis `axis` reaches
+/// past the end, with 2 px to spare; 0 if no labelled tick is within 2 % of its decades
+/// from the end, or on a linear axis (whose labels are short numbers).
+fn end_label_overhang(axis: &crate::figure::Axis) -> f64 {
+    let (lo, hi) = axis.range;
+    if axis.scale != AxisScale::Log || !(lo > 0.0 && hi > lo) {
+        return 0.0;
+    }
+    let Some(&last) = super::ticks::log_ticks(lo, hi).last() else {
+        return 0.0;
+    };
+    if (hi / last).log10() > 0.02 * (hi / lo).log10() {
+        return 0.0;
+    }
+    let chars = axis_tick_label(last, axis).chars().count() as f64;
+    DIGIT_WIDTH * chars / 2.0 + 2.0
 }
 
 /// The title as drawn and its size (px): centred between the margins, fitted to the room.
@@ -381,4 +404,21 @@ pub(super) fn draw<DB: DrawingBackend>(
         f64::from(ys.end),
     );
     Ok((area, placement))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::figure::Axis;
+
+    #[test]
+    fn a_log_axis_ending_on_a_tick_leaves_room_for_half_its_label() {
+        // `100000` at 12 px: six digits, half of them past the end.
+        let wide = end_label_overhang(&Axis::log("N", "", (10.0, 1e5)));
+        assert!(wide >= 3.0 * 6.5, "{wide}");
+        // Ending between ticks (the last, 10⁴, is a fifth of the decades from the end), or
+        // linear: the usual margin.
+        assert_eq!(end_label_overhang(&Axis::log("N", "", (10.0, 5e4))), 0.0);
+        assert_eq!(end_label_overhang(&Axis::linear("t", "s", (0.0, 1e5))), 0.0);
+    }
 }
