@@ -129,7 +129,7 @@ const REMEMBER_WIDTHS: bool = cfg!(not(feature = "first"));
 /// Width and height (px) of `text` in `style`: the width remembered, or measured on
 /// `context` after `set_font` has made the style's font (its CSS shorthand, see
 /// [`css_font`]) the context's (and then remembered in its slot, in place of what was
-/// there).
+/// there). In the full module every digit is measured as `0` ([`with_zeros`]).
 pub(crate) fn measure(
     context: &CanvasRenderingContext2d,
     text: &str,
@@ -137,6 +137,14 @@ pub(crate) fn measure(
     set_font: impl FnOnce(String),
 ) -> (u32, u32) {
     let font = css_font(style);
+    let zeros;
+    let text = match REMEMBER_WIDTHS {
+        true => {
+            zeros = with_zeros(text);
+            zeros.as_deref().unwrap_or(text)
+        }
+        false => text,
+    };
     let hash = width_hash(&font, text);
     let slot = (hash % WIDTH_SLOTS as u64) as usize;
     let known = match REMEMBER_WIDTHS {
@@ -164,9 +172,39 @@ pub(crate) fn measure(
     )
 }
 
+/// `text` with every ASCII digit written `0` (`None` if it has none), for measuring: a
+/// label whose number changes every frame of a drag (a legend's `DP45: order 5.02`, a
+/// marker's value) then measures once, not once a frame. The same width where digits
+/// share one width, as in the default sans-serif faces of the common systems (Arial,
+/// Helvetica, Liberation Sans, DejaVu Sans); in a face with proportional digits, within a
+/// pixel or two (`0` is one of the wider digits), which a legend box's padding absorbs.
+fn with_zeros(text: &str) -> Option<String> {
+    text.bytes().any(|b| b.is_ascii_digit()).then(|| {
+        text.chars()
+            .map(|c| if c.is_ascii_digit() { '0' } else { c })
+            .collect()
+    })
+}
+
 /// `canvas`'s 2D context; `None` if it has another kind. A canvas answers `"2d"` with a
 /// `CanvasRenderingContext2d` or with null, so the object is not checked again (an
 /// `instanceof` call into JavaScript per plot per frame).
 pub(crate) fn context_of(canvas: &HtmlCanvasElement) -> Option<CanvasRenderingContext2d> {
     Some(canvas.get_context("2d").ok()??.unchecked_into())
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn digits_are_measured_as_zeros() {
+        assert_eq!(
+            super::with_zeros("DP45: 5.02").as_deref(),
+            Some("DP00: 0.00")
+        );
+        assert_eq!(
+            super::with_zeros("ζ = −1,5 e-7").as_deref(),
+            Some("ζ = −0,0 e-0")
+        );
+        assert_eq!(super::with_zeros("Euler"), None);
+    }
 }
