@@ -78,6 +78,10 @@ pub trait Demo {
     /// the full one to [`Demo::refine`]. Off (the default, and in every native test) the
     /// full study runs inside `update`, as before.
     fn set_progressive(&mut self, on: bool);
+    /// Whether a control is held (a drag under way): a progressive demo may answer with an
+    /// even coarser study meanwhile, as its every event is one frame of the drag; the full
+    /// study still follows at rest.
+    fn set_held(&mut self, held: bool);
     /// Does up to about `budget_ms` of the pending full study. `None`: nothing pending;
     /// `Some(f)` with `f < 1`: that fraction done; `Some(1.0)`: the full study just
     /// finished: [`Demo::figure`] shows it at once, the readouts from the next
@@ -145,6 +149,9 @@ pub trait Model: 'static {
 
     /// See [`Demo::set_progressive`].
     fn set_progressive(&mut self, _on: bool) {}
+
+    /// See [`Demo::set_held`].
+    fn set_held(&mut self, _held: bool) {}
 
     /// See [`Demo::refine`].
     fn refine(&mut self, _budget_ms: f64) -> Option<f64> {
@@ -231,6 +238,10 @@ impl<M: Model> Demo for Typed<M> {
 
     fn set_progressive(&mut self, on: bool) {
         self.model.set_progressive(on);
+    }
+
+    fn set_held(&mut self, held: bool) {
+        self.model.set_held(held);
     }
 
     fn refine(&mut self, budget_ms: f64) -> Option<f64> {

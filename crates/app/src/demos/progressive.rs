@@ -12,6 +12,8 @@ pub(super) struct Progressive<J> {
     on: bool,
     /// Whether the study held is the coarse stand-in for the current inputs.
     provisional: bool,
+    /// Whether a control is held (see [`super::Demo::set_held`]).
+    held: bool,
     /// The full study under way, if any.
     pub(super) job: Option<J>,
 }
@@ -21,6 +23,7 @@ impl<J> Default for Progressive<J> {
         Self {
             on: false,
             provisional: false,
+            held: false,
             job: None,
         }
     }
@@ -43,6 +46,17 @@ impl<J> Progressive<J> {
         }
     }
 
+    /// See [`super::Demo::set_held`].
+    pub(super) fn set_held(&mut self, held: bool) {
+        self.held = held;
+    }
+
+    /// Whether a control is held and studies are progressive: a demo may then compute an
+    /// even coarser stand-in.
+    pub(super) fn is_held(&self) -> bool {
+        self.on && self.held
+    }
+
     /// Whether the study held is the coarse stand-in while the full one runs.
     pub(super) fn is_provisional(&self) -> bool {
         self.provisional
@@ -63,8 +77,8 @@ impl<J> Progressive<J> {
     }
 }
 
-/// The three progressive-study hooks of [`super::Model`] (`set_progressive`, `refine`,
-/// `provisional`), inside `impl Model` of a demo whose [`Progressive`] state is its field
+/// The four progressive-study hooks of [`super::Model`] (`set_progressive`, `set_held`,
+/// `refine`, `provisional`), inside `impl Model` of a demo whose [`Progressive`] state is its field
 /// `progress`: `progressive_hooks!(KEYS, refine_method)`, where `KEYS` are the readouts and
 /// plots drawn from its study and `self.refine_method(budget_ms)` continues the full study
 /// (see [`super::Demo::refine`]).
@@ -72,6 +86,10 @@ macro_rules! progressive_hooks {
     ($keys:expr, $refine:ident) => {
         fn set_progressive(&mut self, on: bool) {
             self.progress.set_on(on);
+        }
+
+        fn set_held(&mut self, held: bool) {
+            self.progress.set_held(held);
         }
 
         fn refine(&mut self, budget_ms: f64) -> Option<f64> {

@@ -279,6 +279,7 @@ impl Session {
             self.released = None;
         }
         self.dragging = on;
+        self.demo.set_held(on);
     }
 
     /// Sets how far (0…1) the axes have moved, since the last drag ended, from the ranges

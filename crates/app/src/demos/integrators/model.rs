@@ -239,9 +239,13 @@ impl Cache {
         if self.study.as_ref().map(|st| st.key) != Some(key) {
             // Inputs moved on: a full study under way for other inputs is dropped unseen.
             progress.job = None;
-            progress.size_now(FULL.steps, progressive::COARSE.steps);
+            let coarse = match progress.is_held() {
+                true => progressive::HELD,
+                false => progressive::COARSE,
+            };
+            progress.size_now(FULL.steps, coarse.steps);
             let budget = match progress.is_provisional() {
-                true => progressive::COARSE,
+                true => coarse,
                 false => FULL,
             };
             // No study at all (no grids for these inputs) leaves nothing to refine either.

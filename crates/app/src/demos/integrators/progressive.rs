@@ -1,6 +1,7 @@
 //! Progressive convergence study (issue 13): on a page, a moved ζ, ωₙ or T gets a coarse
 //! study at once ([`COARSE`]: the same nested grids with an eighth of the step budgets, so
-//! the finest three step sizes are left out, and DP45 down to 10⁻⁴ only) and the full study
+//! the finest three step sizes are left out, and DP45 down to 10⁻⁴ only; [`HELD`], coarser
+//! still, while the control is held) and the full study
 //! one method per slice in later short tasks ([`Integrators::refine_study`]): the four
 //! fixed-step methods, then the DP45 tolerance sweep. The full study replaces the coarse one
 //! only if it was computed for the inputs still current. A moved x₀ needs no study: the
@@ -27,6 +28,19 @@ pub(super) const COARSE: Budget = Budget {
     steps: STUDY_BUDGET / 8,
     euler: EULER_BUDGET / 8,
     tols: &COARSE_TOLS,
+};
+
+/// DP45 tolerances of the study while a control is held.
+const HELD_TOLS: [f64; 2] = [1e-2, 1e-3];
+
+/// The coarse study while a control is held (each event a frame of the drag): a quarter
+/// of [`COARSE`]'s budgets, so its two finest step sizes are left out too, and DP45 down
+/// to 10⁻³ only; about half [`COARSE`]'s time. The full study follows at rest as after
+/// any coarse one.
+pub(super) const HELD: Budget = Budget {
+    steps: COARSE.steps / 4,
+    euler: COARSE.euler / 4,
+    tols: &HELD_TOLS,
 };
 
 /// Readouts and plots drawn from the coarse study while the full one runs.

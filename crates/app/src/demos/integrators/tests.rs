@@ -153,6 +153,38 @@ fn progressive_updates_show_a_coarse_study_marked_then_exactly_the_full_one() {
 }
 
 #[test]
+fn a_held_control_gets_a_coarser_study_and_the_full_one_at_rest() {
+    let params = |q| crate::demos::testing::params("integrators", q);
+    let want = crate::demos::create("integrators")
+        .unwrap()
+        .update(&params("wn=3"));
+    let mut demo = crate::demos::create("integrators").unwrap();
+    demo.set_progressive(true);
+    demo.update(&params(""));
+    while demo.refine(5.0).is_some_and(|f| f < 1.0) {}
+    demo.set_held(true);
+    let held = demo.update(&params("wn=3"));
+    assert!(demo.provisional().contains(&"convergence"));
+    assert!(
+        held.figures[2].description.starts_with(
+            "Provisional: from a coarse study (at most 750 steps per method, 1500 for \
+             forward Euler; DP45 down to 1e-3)"
+        ),
+        "{}",
+        held.figures[2].description
+    );
+    // Still about the textbook order, from fewer step sizes.
+    let o = number(&held, "order_rk4");
+    assert!((o - 4.0).abs() < 0.5, "{o}");
+    // Released: the full study replaces it, exactly as without progressive studies.
+    demo.set_held(false);
+    while demo.refine(5.0).is_some_and(|f| f < 1.0) {}
+    let full = demo.update(&params("wn=3"));
+    assert!(demo.provisional().is_empty());
+    assert!(format!("{:?}", shown(&full)) == format!("{:?}", shown(&want)));
+}
+
+#[test]
 fn progressive_updates_keep_h_tol_and_toggles_immediate() {
     let spec = crate::demos::create("integrators").unwrap().spec();
     let params = |q| crate::params::resolve_query(&spec, q).0;
