@@ -54,6 +54,8 @@ pub fn si(v: f64, unit: &str, sig: usize) -> String {
     let num = significant(scaled, sig);
     match (prefix, unit) {
         (_, "") => num,
+        // The degree sign follows the number without a space (SI Brochure, 5.4.3).
+        (_, "°") => format!("{num}°"),
         (p, "%") => format!("{num}{p} %"),
         (p, u) => format!("{num} {p}{u}"),
     }
@@ -139,6 +141,7 @@ mod tests {
         assert_eq!(si(24_000.0, "N/m", 3), "24.0 kN/m");
         assert_eq!(si(-4.472, "1/s", 4), "-4.472 1/s");
         assert_eq!(si(4.598, "%", 4), "4.598 %");
+        assert_eq!(si(-30.0, "°", 3), "-30.0°");
         assert_eq!(si(0.3, "", 3), "0.300");
         assert_eq!(si(f64::NAN, "s", 3), "—");
         assert_eq!(si(0.0, "s", 3), "0 s");

@@ -74,7 +74,7 @@ fn the_schematic_twists_with_the_deck() {
     let a = d.at(0.0);
     let b = d.at(2.5); // about half a period later
     assert_ne!(a.series[1].points, b.series[1].points);
-    assert!(a.description.contains("2.00 °"), "{}", a.description);
+    assert!(a.description.contains("2.00°"), "{}", a.description);
     for t in [0.0, 100.0, 1e9] {
         let f = d.at(t);
         assert!(f
