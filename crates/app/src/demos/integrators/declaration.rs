@@ -89,9 +89,9 @@ pub(super) fn declaration() -> Declaration<P, Results> {
 
 /// Max error over the run of fixed-step method `k` \[m\], or the time at which it overflowed.
 fn max_err(r: &Results, k: usize) -> Result<Option<f64>, String> {
-    match r.runs[k].overflow {
+    match r.fixed.runs[k].overflow {
         Some(t) => Err(t!("integrators-overflow-note", time = si(t, "s", 3))),
-        None => Ok(r.max_err[k]),
+        None => Ok(r.fixed.max_err[k]),
     }
 }
 

@@ -107,7 +107,7 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
     let mut markers = Vec::new();
     let mut words = Vec::new();
     for (k, look) in LOOKS.iter().enumerate() {
-        let run = &r.runs[k];
+        let run = &r.fixed.runs[k];
         let sol = &run.sol;
         let clipped = sol.y.iter().any(|y| !inside(y[0]));
         words.push(text::method_words(&look.name(), r, k, run, clipped));
@@ -183,9 +183,9 @@ pub(super) fn error(p: &P, r: &Results) -> Figure {
         if !p.show[k] {
             continue;
         }
-        let sol = &r.runs[k].sol;
+        let sol = &r.fixed.runs[k].sol;
         let errs = |i: usize| {
-            let e = (sol.y[i][0] - r.exact.get(i).map_or(f64::NAN, |x| x[0])).abs();
+            let e = (sol.y[i][0] - r.fixed.exact.get(i).map_or(f64::NAN, |x| x[0])).abs();
             if e > 0.0 {
                 e
             } else {

@@ -6,6 +6,7 @@ use super::progressive::{self, StudyJob};
 use super::P;
 use crate::demos::progressive::Progressive;
 use std::cell::OnceCell;
+use std::rc::Rc;
 use zeta_solver::integrate::analysis::{error_norms, error_norms_at, FitWindow, StepLimit};
 use zeta_solver::integrate::convergence::{nested_study, NestedGrids, NestedStudy};
 use zeta_solver::integrate::stability::{region_boundary, Stability, REGION_RAYS};
@@ -136,6 +137,22 @@ pub(super) struct Run {
     pub(super) overflow: Option<f64>,
 }
 
+/// The fixed-step runs at the current step and their errors: the bulk of a step's work
+/// when `h` is small (T = 60 s at h = 1 ms is 60 000 steps of each method), and the same
+/// for every tolerance and every method shown, so kept across steps that only move those
+/// (and the step again at the end of a study).
+#[derive(Debug)]
+pub(super) struct FixedRuns {
+    /// What the runs are of: ζ, ωₙ (rad/s), h (s), T (s) and x₀ (m).
+    key: [f64; 5],
+    /// The exact state at each grid point.
+    pub(super) exact: Vec<[f64; 2]>,
+    /// The fixed-step runs, in [`FIXED`] order.
+    pub(super) runs: Vec<Run>,
+    /// Each run's largest displacement error (m), `None` if it overflowed.
+    pub(super) max_err: [Option<f64>; 4],
+}
+
 /// What one step computes.
 pub struct Results {
     pub(super) resp: FreeResponse,
@@ -146,11 +163,8 @@ pub struct Results {
     pub(super) h_last: f64,
     /// Number of steps.
     pub(super) n: usize,
-    /// The exact state at each grid point.
-    pub(super) exact: Vec<[f64; 2]>,
-    /// The fixed-step runs, in [`FIXED`] order.
-    pub(super) runs: Vec<Run>,
-    pub(super) max_err: [Option<f64>; 4],
+    /// The exact state and the fixed-step runs on the grid, shared with the cache.
+    pub(super) fixed: Rc<FixedRuns>,
     pub(super) growth: [f64; 4],
     pub(super) limit: [StepLimit; 4],
     pub(super) stable: [bool; 4],
@@ -170,6 +184,8 @@ pub(super) struct Cache {
     /// The stable steps of the system `(ζ, ωₙ)`, which moving h, T, x₀ or the tolerance
     /// leaves as they are.
     limits: Option<([f64; 2], Limits)>,
+    /// The last step's fixed-step runs.
+    runs: Option<Rc<FixedRuns>>,
 }
 
 /// The largest stable steps of each fixed-step method (in [`FIXED`] order) and of DP45
@@ -261,11 +277,23 @@ impl Cache {
             true => (study.clone(), problem.resp),
             false => (study.scaled(p.x0), FreeResponse::new(sys, p.x0, 0.0)),
         };
+        let grid = ExactStepGrid::new(0.0, p.t_end, p.h).ok()?;
+        // The runs depend on neither the tolerance nor which methods are shown.
+        let runs_key = [key[0], key[1], p.h, p.t_end, p.x0];
+        let fixed = match &self.runs {
+            Some(runs) if runs.key == runs_key => runs.clone(),
+            _ => {
+                let runs = Rc::new(run_fixed(runs_key, &resp, &problem.lin, p, &grid));
+                self.runs = Some(runs.clone());
+                runs
+            }
+        };
         run_current(
             sys,
             resp,
             &problem.lin,
             p,
+            (grid, fixed),
             (study, limits.fixed),
             progress.is_provisional(),
         )
@@ -408,18 +436,17 @@ pub(super) fn compute_study(problem: &Problem<'_>, key: StudyKey, budget: Budget
     })
 }
 
-fn run_current(
-    sys: SecondOrder,
-    resp: FreeResponse,
+/// Each fixed-step method from `p.x0` on `grid`, and the exact state at its points; `key`
+/// is what they are of (see [`FixedRuns::key`]).
+fn run_fixed(
+    key: [f64; 5],
+    resp: &FreeResponse,
     lin: &Linear2<fn(f64) -> f64>,
     p: &P,
-    (study, limit): (Study, [StepLimit; 4]),
-    provisional: bool,
-) -> Option<Results> {
+    grid: &ExactStepGrid,
+) -> FixedRuns {
     // h ≥ 1e−3 s and T ≤ 60 s keep this within 60 000 steps.
-    let grid = ExactStepGrid::new(0.0, p.t_end, p.h).ok()?;
     let n = grid.steps();
-    let h = grid.h();
     let exact: Vec<[f64; 2]> = (0..=n).map(|i| resp.state(grid.time(i))).collect();
     let mut max_err = [None; 4];
     let mut runs = Vec::with_capacity(FIXED.len());
@@ -430,7 +457,7 @@ fn run_current(
             stats: Stats::default(),
         };
         let mut overflow = None;
-        match m.solve_exact_step_into(lin, [p.x0, 0.0], &grid, &mut sol.y) {
+        match m.solve_exact_step_into(lin, [p.x0, 0.0], grid, &mut sol.y) {
             Ok(stats) => sol.stats = stats,
             Err(IntegrationError::NonFinite { t }) => overflow = Some(t),
             Err(_) => overflow = Some(0.0),
@@ -442,6 +469,24 @@ fn run_current(
         }
         runs.push(Run { sol, overflow });
     }
+    FixedRuns {
+        key,
+        exact,
+        runs,
+        max_err,
+    }
+}
+
+fn run_current(
+    sys: SecondOrder,
+    resp: FreeResponse,
+    lin: &Linear2<fn(f64) -> f64>,
+    p: &P,
+    (grid, fixed): (ExactStepGrid, Rc<FixedRuns>),
+    (study, limit): (Study, [StepLimit; 4]),
+    provisional: bool,
+) -> Option<Results> {
+    let h = grid.h();
     let growth = FIXED.map(|m| m.growth_per_step(&sys, h));
     let stable = limit.map(|l| l.allows(h));
     let dp45 = run_dp45(lin, p, p.tol);
@@ -455,10 +500,8 @@ fn run_current(
         poles: sys.poles(),
         h,
         h_last: grid.last_step(),
-        n,
-        exact,
-        runs,
-        max_err,
+        n: grid.steps(),
+        fixed,
         growth,
         limit,
         stable,

@@ -284,3 +284,32 @@ fn the_study_shown_at_any_x0_is_what_a_study_from_that_x0_measures() {
         );
     }
 }
+
+#[test]
+fn the_runs_are_kept_while_only_the_tolerance_or_the_methods_shown_move() {
+    use crate::demos::Model;
+    use std::rc::Rc;
+    let decl = Integrators::declare();
+    let p = |q: &str| decl.read(&crate::demos::testing::params("integrators", q));
+    let mut m = Integrators::default();
+    let first = m.step(&p("h=0.01")).unwrap();
+    // Neither the tolerance nor a toggle changes a fixed-step run: the same runs, not
+    // recomputed, and DP45 rerun at the new tolerance.
+    let tol = m.step(&p("h=0.01&tol=1e-3&rk4=0")).unwrap();
+    assert!(Rc::ptr_eq(&first.fixed, &tol.fixed));
+    assert!(tol.dp45_err != first.dp45_err);
+    // Each of the others does, with the numbers a fresh model computes.
+    for q in [
+        "h=0.02",
+        "h=0.01&x0=0.5",
+        "h=0.01&T=10",
+        "h=0.01&zeta=0.3",
+        "h=0.01&wn=3",
+    ] {
+        let moved = m.step(&p(q)).unwrap();
+        assert!(!Rc::ptr_eq(&first.fixed, &moved.fixed), "{q}");
+        let fresh = Integrators::default().step(&p(q)).unwrap();
+        assert_eq!(moved.fixed.max_err, fresh.fixed.max_err, "{q}");
+        assert_eq!(moved.fixed.exact, fresh.fixed.exact, "{q}");
+    }
+}

@@ -130,7 +130,7 @@ pub(super) fn method_words(name: &str, r: &Results, k: usize, run: &Run, clipped
             growth = si(g, "", 3)
         )
     } else if g > 1.0 && !r.stable[k] {
-        let error = error_text(r.max_err[k]);
+        let error = error_text(r.fixed.max_err[k]);
         let growth = si(g, "", 4);
         if clipped {
             t!(
@@ -152,7 +152,7 @@ pub(super) fn method_words(name: &str, r: &Results, k: usize, run: &Run, clipped
             "integrators-method-bounded",
             method = name,
             growth = si(g, "", 4),
-            error = error_text(r.max_err[k])
+            error = error_text(r.fixed.max_err[k])
         )
     }
 }
