@@ -912,6 +912,7 @@ integrators-describe-stability = z = hλ 复平面上的稳定区域 |R(z)| ≤ 
 integrators-work-words = { $method }：从 { $error_first }（{ $work_first } 次求值）到 { $error_last }（{ $work_last } 次求值）
 integrators-describe-work = 最大误差与所花计算量的关系，计算量以右端函数 f 的求值次数计，双对数坐标，包含所有方法：定步长方法取收敛性研究中的各步长（误差取其公共检查点），DP45 取容差 { $from } … { $to }（误差取其接受的各步）。越低越精确，越靠左越省；p 阶方法以斜率 −p 下降；DP45 的各次计算中，由容差决定步长的画为圆点，由稳定性决定步长的画为叉号。{ $methods }。
 integrators-provisional = 临时结果：基于粗略研究（每种方法最多 { $budget } 步，显式欧拉 { $euler_budget } 步；DP45 至 { $tol }），完整研究（{ $full_budget } 与 { $full_euler_budget } 步；DP45 至 { $full_tol }）仍在计算中。{ $description }
+integrators-runs-provisional = 临时结果：目前已算到 t = { $until }（共 { $duration }），其余部分仍在计算中。{ $description }
 integrators-dp45-stability-runs = 步长由稳定性决定的计算（超过 { $share } 的步长达到其最大稳定步长的 { $fraction } 或以上）：{ $count }/{ $runs }
 integrators-dp45-order = DP45 观测阶数 { $order }（在 { $from } … { $to } 次求值范围内拟合，此处步长由容差决定）；{ $runs }
 integrators-dp45-no-order = DP45 没有观测阶数：步长由稳定性决定，或渐近区间内剩余的计算太少；{ $runs }

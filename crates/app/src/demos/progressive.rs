@@ -51,6 +51,11 @@ impl<J> Progressive<J> {
         self.held = held;
     }
 
+    /// Whether studies are progressive (on a page).
+    pub(super) fn is_on(&self) -> bool {
+        self.on
+    }
+
     /// Whether a control is held and studies are progressive: a demo may then compute an
     /// even coarser stand-in.
     pub(super) fn is_held(&self) -> bool {

@@ -424,13 +424,35 @@ pub trait FixedStep {
         out: &mut [[f64; N]],
     ) -> Result<Stats, IntegrationError> {
         finite_at(&y0, grid.time(0))?;
+        match out.first_mut() {
+            Some(first) => *first = y0,
+            None => return Ok(Stats::default()),
+        }
+        self.resume_exact_step_into(sys, grid, 0, out)
+    }
+
+    /// Continues a run on an [`ExactStepGrid`] from its point `from`, whose state is
+    /// `out[from]`: writes the state at `grid.time(i)` into `out[i]` for
+    /// `from < i ≤ min(n, out.len() − 1)` and returns the work counters of those steps. A run
+    /// resumed slice by slice (`out` one slice longer each time) is the one run, to the bit.
+    /// On failure, as [`FixedStep::solve_exact_step_into`].
+    fn resume_exact_step_into<const N: usize, S: System<N>>(
+        &self,
+        sys: &S,
+        grid: &ExactStepGrid,
+        from: usize,
+        out: &mut [[f64; N]],
+    ) -> Result<Stats, IntegrationError> {
         let mut stats = Stats::default();
-        let mut y = y0;
-        for (i, slot) in out.iter_mut().enumerate().take(grid.steps() + 1) {
-            if i > 0 {
-                let step = (grid.time(i - 1), grid.step(i - 1), grid.time(i));
-                counted_step(self, sys, step, &mut y, &mut stats)?;
-            }
+        let Some(&start) = out.get(from) else {
+            return Ok(stats);
+        };
+        finite_at(&start, grid.time(from))?;
+        let mut y = start;
+        let end = grid.steps().min(out.len() - 1);
+        for (i, slot) in out.iter_mut().enumerate().take(end + 1).skip(from + 1) {
+            let step = (grid.time(i - 1), grid.step(i - 1), grid.time(i));
+            counted_step(self, sys, step, &mut y, &mut stats)?;
             *slot = y;
         }
         Ok(stats)
@@ -525,6 +547,41 @@ mod tests {
         // 0.1 does not divide 1 exactly in binary, but 10 steps must result.
         assert_eq!(Grid::new(0.0, 1.0, 0.1).unwrap().n, 10);
         assert_eq!(Grid::new(2.0, 2.0, 0.1).unwrap().n, 0);
+    }
+
+    #[test]
+    fn a_run_resumed_slice_by_slice_is_the_one_run() {
+        let sys = Linear2::free(SecondOrder::from_natural(3.0, 0.1).unwrap());
+        let grid = ExactStepGrid::new(0.0, 5.0, 0.013).unwrap();
+        let n = grid.steps() + 1;
+        for m in Method::ALL {
+            let mut whole = vec![[f64::NAN; 2]; n];
+            let stats = m.solve_exact_step_into(&sys, [1.0, 0.0], &grid, &mut whole);
+            let mut sliced = vec![[f64::NAN; 2]; n];
+            sliced[0] = [1.0, 0.0];
+            let mut rhs = 0;
+            // `out` a point longer each slice: its last point is where the next one starts.
+            for (from, end) in [(0, 1), (0, 100), (99, 101), (100, n)] {
+                rhs += m
+                    .resume_exact_step_into(&sys, &grid, from, &mut sliced[..end])
+                    .unwrap()
+                    .n_rhs;
+            }
+            // Bit for bit, and the same work.
+            assert_eq!(whole, sliced, "{}", m.name());
+            assert_eq!(stats.unwrap().n_rhs, rhs, "{}", m.name());
+        }
+        // Nothing past the grid's end, nothing from a point outside `out`.
+        let mut out = vec![[1.0, 0.0]; n + 3];
+        let done = Rk4
+            .resume_exact_step_into(&sys, &grid, 0, &mut out)
+            .unwrap();
+        assert_eq!(done.n_accepted, grid.steps());
+        assert_eq!(out[n], [1.0, 0.0]);
+        let none = Rk4
+            .resume_exact_step_into(&sys, &grid, n + 5, &mut out)
+            .unwrap();
+        assert_eq!(none.n_accepted, 0);
     }
 
     #[test]

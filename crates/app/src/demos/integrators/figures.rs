@@ -114,12 +114,14 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
         if !p.show[k] {
             continue;
         }
-        let stride = sol.t.len().div_ceil(MAX_DRAWN).max(1);
+        // Strides over the whole grid, so that runs so far keep their spacing.
+        let points = r.n + 1;
+        let stride = points.div_ceil(MAX_DRAWN).max(1);
         let pts: Vec<(f64, f64)> = strided(sol.t.len(), stride)
             .map(|i| (sol.t[i], sol.y[i][0]))
             .collect();
         if let Some(shape) = look.mark {
-            let every = sol.t.len().div_ceil(MAX_MARKS / 2).max(1);
+            let every = points.div_ceil(MAX_MARKS / 2).max(1);
             markers.extend(
                 strided(sol.t.len(), every)
                     .filter(|&i| inside(sol.y[i][0]))
@@ -157,7 +159,7 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
         Err(e) => words.push(text::dp45_failed(e)),
     }
     // The exact solution does not depend on h, the tolerance or the methods shown.
-    Figure {
+    let fig = Figure {
         series,
         backdrop: 1,
         markers,
@@ -168,7 +170,8 @@ pub(super) fn response(p: &P, r: &Results) -> Figure {
         )
     }
     .with_origin_lines()
-    .described(text::describe_response(p, r, &words))
+    .described(text::describe_response(p, r, &words));
+    text::runs_so_far(fig, p, r)
 }
 
 /// `|x_num − x_exact|` on a log scale at each method's own grid points.
@@ -198,7 +201,8 @@ pub(super) fn error(p: &P, r: &Results) -> Figure {
             hi = hi.max(q.1);
         }
         if let Some(shape) = look.mark {
-            let every = sol.t.len().div_ceil(MAX_MARKS / 2).max(1);
+            // Over the whole grid, as in the response plot.
+            let every = (r.n + 1).div_ceil(MAX_MARKS / 2).max(1);
             markers.extend(
                 strided(sol.t.len(), every)
                     .map(|i| (sol.t[i], errs(i)))
@@ -243,7 +247,7 @@ pub(super) fn error(p: &P, r: &Results) -> Figure {
     } else {
         (floor, p.x0)
     };
-    Figure {
+    let fig = Figure {
         series,
         markers,
         ..Figure::plot(
@@ -252,7 +256,8 @@ pub(super) fn error(p: &P, r: &Results) -> Figure {
             log_axis(&t!("integrators-axis-error"), "m", (lo, hi)),
         )
     }
-    .described(text::describe_error(r, &parts, hi >= clip, clip))
+    .described(text::describe_error(r, &parts, hi >= clip, clip));
+    text::runs_so_far(fig, p, r)
 }
 
 /// Indices `0, stride, 2·stride, …` and always the last one.

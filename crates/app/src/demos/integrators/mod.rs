@@ -28,8 +28,10 @@
 //!   provisional, and the full one in short slices; off (tests, snapshots) it runs in the step.
 //!
 //! `declaration.rs` declares the demo; `model.rs` is its step (solver calls only),
-//! `progressive.rs` runs the full study in slices on a page, `figures.rs`, `convergence.rs`, `work.rs` and `stability.rs` build the plots, `text.rs`
-//! holds the prose.
+//! `runs.rs` the fixed-step runs at h (kept, and long ones in slices on a page),
+//! `progressive.rs` runs the full study in slices on a page, `figures.rs`,
+//! `convergence.rs`, `work.rs` and `stability.rs` build the plots, `text.rs` holds the
+//! prose.
 
 mod axes;
 mod convergence;
@@ -37,11 +39,12 @@ mod declaration;
 mod figures;
 mod model;
 mod progressive;
+mod runs;
 mod stability;
 mod text;
 mod work;
 
-use super::progressive::{progressive_hooks, Progressive};
+use super::progressive::Progressive;
 use super::Model;
 use crate::declare::Declaration;
 use crate::figure::Figure;
@@ -92,7 +95,30 @@ impl Model for Integrators {
         self.cache.step(p, &mut self.progress)
     }
 
-    progressive_hooks!(progressive::PROVISIONAL, refine_study);
+    fn set_progressive(&mut self, on: bool) {
+        self.progress.set_on(on);
+    }
+
+    fn set_held(&mut self, held: bool) {
+        self.progress.set_held(held);
+    }
+
+    /// The fixed-step runs under way first (what the response and error plots show), then
+    /// the study.
+    fn refine(&mut self, budget_ms: f64) -> Option<f64> {
+        match self.cache.runs.refine(budget_ms) {
+            Some(done) => Some(done),
+            None => self.refine_study(budget_ms),
+        }
+    }
+
+    fn provisional(&self) -> Vec<&'static str> {
+        let mut keys = self.progress.provisional(&progressive::PROVISIONAL);
+        if self.cache.runs.pending() {
+            keys.extend(runs::PROVISIONAL);
+        }
+        keys
+    }
 
     fn figure(&self, plot: usize, p: &P, r: &Results) -> Option<Figure> {
         let studied = match plot {

@@ -3,19 +3,20 @@
 //! the study is progressive (`progressive.rs`): a coarse one at once, the full one in slices.
 
 use super::progressive::{self, StudyJob};
+use super::runs::{FixedRuns, RunsCache};
 use super::P;
 use crate::demos::progressive::Progressive;
 use std::cell::OnceCell;
 use std::rc::Rc;
-use zeta_solver::integrate::analysis::{error_norms, error_norms_at, FitWindow, StepLimit};
+use zeta_solver::integrate::analysis::{error_norms, FitWindow, StepLimit};
 use zeta_solver::integrate::convergence::{nested_study, NestedGrids, NestedStudy};
 use zeta_solver::integrate::stability::{region_boundary, Stability, REGION_RAYS};
 use zeta_solver::integrate::work_precision::{
     dopri5_point, fit_work_points, WorkPoint, WorkPrecision,
 };
 use zeta_solver::integrate::{
-    Dopri5, Dopri5Config, Dopri5Solution, Euler, ExactStepGrid, FixedStep, Heun, IntegrationError,
-    Linear2, Method, Rk4, Solution, Stats,
+    Dopri5, Dopri5Config, Dopri5Solution, Euler, ExactStepGrid, Heun, IntegrationError, Linear2,
+    Method, Rk4, Solution,
 };
 use zeta_solver::{Complex, FreeResponse, SecondOrder};
 
@@ -129,30 +130,6 @@ impl Study {
     }
 }
 
-/// One fixed-step run at the current `h`.
-#[derive(Debug, Clone)]
-pub(super) struct Run {
-    pub(super) sol: Solution<2>,
-    /// Time at which the numbers overflowed, if they did.
-    pub(super) overflow: Option<f64>,
-}
-
-/// The fixed-step runs at the current step and their errors: the bulk of a step's work
-/// when `h` is small (T = 60 s at h = 1 ms is 60 000 steps of each method), and the same
-/// for every tolerance and every method shown, so kept across steps that only move those
-/// (and the step again at the end of a study).
-#[derive(Debug)]
-pub(super) struct FixedRuns {
-    /// What the runs are of: ζ, ωₙ (rad/s), h (s), T (s) and x₀ (m).
-    key: [f64; 5],
-    /// The exact state at each grid point.
-    pub(super) exact: Vec<[f64; 2]>,
-    /// The fixed-step runs, in [`FIXED`] order.
-    pub(super) runs: Vec<Run>,
-    /// Each run's largest displacement error (m), `None` if it overflowed.
-    pub(super) max_err: [Option<f64>; 4],
-}
-
 /// What one step computes.
 pub struct Results {
     pub(super) resp: FreeResponse,
@@ -176,7 +153,7 @@ pub struct Results {
 }
 
 /// What the demo keeps between steps.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Default)]
 pub(super) struct Cache {
     pub(super) study: Option<Study>,
     /// The stability regions' outlines: parameter-free, traced when first drawn.
@@ -184,8 +161,8 @@ pub(super) struct Cache {
     /// The stable steps of the system `(ζ, ωₙ)`, which moving h, T, x₀ or the tolerance
     /// leaves as they are.
     limits: Option<([f64; 2], Limits)>,
-    /// The last step's fixed-step runs.
-    runs: Option<Rc<FixedRuns>>,
+    /// The fixed-step runs of the last step, and those under way.
+    pub(super) runs: RunsCache,
 }
 
 /// The largest stable steps of each fixed-step method (in [`FIXED`] order) and of DP45
@@ -266,8 +243,13 @@ impl Cache {
             };
             // No study at all (no grids for these inputs) leaves nothing to refine either.
             self.study = compute_study(&problem, key, budget);
+            // The first module leaves the full study to the full module, which takes over
+            // within seconds (and leaves its slices out of its own download).
             match self.study.is_some() && progress.is_provisional() {
-                true => progress.job = StudyJob::start(sys, &unit, key, limits),
+                true if !cfg!(feature = "first") => {
+                    progress.job = StudyJob::start(sys, &unit, key, limits)
+                }
+                true => {}
                 false => progress.finished(),
             }
         }
@@ -280,14 +262,13 @@ impl Cache {
         let grid = ExactStepGrid::new(0.0, p.t_end, p.h).ok()?;
         // The runs depend on neither the tolerance nor which methods are shown.
         let runs_key = [key[0], key[1], p.h, p.t_end, p.x0];
-        let fixed = match &self.runs {
-            Some(runs) if runs.key == runs_key => runs.clone(),
-            _ => {
-                let runs = Rc::new(run_fixed(runs_key, &resp, &problem.lin, p, &grid));
-                self.runs = Some(runs.clone());
-                runs
-            }
-        };
+        // On a page a step computes the first steps of long runs, the rest left to
+        // `refine`. The first module has no slices (it runs them whole, as off a page, and
+        // leaves the slicing out of its download).
+        let sliced = progress.is_on() && !cfg!(feature = "first");
+        let fixed = self
+            .runs
+            .get(runs_key, (resp, problem.lin), p, grid, sliced);
         run_current(
             sys,
             resp,
@@ -434,47 +415,6 @@ pub(super) fn compute_study(problem: &Problem<'_>, key: StudyKey, budget: Budget
         fixed,
         dp45,
     })
-}
-
-/// Each fixed-step method from `p.x0` on `grid`, and the exact state at its points; `key`
-/// is what they are of (see [`FixedRuns::key`]).
-fn run_fixed(
-    key: [f64; 5],
-    resp: &FreeResponse,
-    lin: &Linear2<fn(f64) -> f64>,
-    p: &P,
-    grid: &ExactStepGrid,
-) -> FixedRuns {
-    // h ≥ 1e−3 s and T ≤ 60 s keep this within 60 000 steps.
-    let n = grid.steps();
-    let exact: Vec<[f64; 2]> = (0..=n).map(|i| resp.state(grid.time(i))).collect();
-    let mut max_err = [None; 4];
-    let mut runs = Vec::with_capacity(FIXED.len());
-    for (k, m) in FIXED.iter().enumerate() {
-        let mut sol = Solution {
-            t: (0..=n).map(|i| grid.time(i)).collect(),
-            y: vec![[f64::NAN; 2]; n + 1],
-            stats: Stats::default(),
-        };
-        let mut overflow = None;
-        match m.solve_exact_step_into(lin, [p.x0, 0.0], grid, &mut sol.y) {
-            Ok(stats) => sol.stats = stats,
-            Err(IntegrationError::NonFinite { t }) => overflow = Some(t),
-            Err(_) => overflow = Some(0.0),
-        }
-        if overflow.is_none() {
-            // Every run is on `grid`: `exact[i]` is the exact state at its point `i`.
-            let e = error_norms_at(&sol, &exact)[0].max;
-            max_err[k] = e.is_finite().then_some(e);
-        }
-        runs.push(Run { sol, overflow });
-    }
-    FixedRuns {
-        key,
-        exact,
-        runs,
-        max_err,
-    }
 }
 
 fn run_current(

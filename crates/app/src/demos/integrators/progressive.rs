@@ -7,7 +7,9 @@
 //! only if it was computed for the inputs still current. A moved x₀ needs no study: the
 //! study is of the release from x₀ = 1, scaled (`Study::scaled`). Off (native tests,
 //! snapshots) the full study runs in the step, as before. The flags and the job live in the
-//! state every progressive demo shares, `demos/progressive.rs`.
+//! state every progressive demo shares, `demos/progressive.rs`. A first module (feature
+//! `first`) starts no full study: the full module computes it behind the page and takes
+//! over with it.
 
 use super::model::{
     dp45_fit, dp45_run, fixed_study, study_grids, Budget, Limits, Problem, Study, StudyKey,
@@ -128,6 +130,9 @@ impl Integrators {
     /// the fraction done, or `None` when no study is pending; at 1 the full study has
     /// replaced the coarse one.
     pub(super) fn refine_study(&mut self, budget_ms: f64) -> Option<f64> {
+        if cfg!(feature = "first") {
+            return None;
+        }
         let job = self.progress.job.as_mut()?;
         let watch = Stopwatch::start();
         while !job.finished() {

@@ -313,3 +313,44 @@ fn the_runs_are_kept_while_only_the_tolerance_or_the_methods_shown_move() {
         assert_eq!(moved.fixed.exact, fresh.fixed.exact, "{q}");
     }
 }
+
+#[test]
+fn long_runs_show_their_start_at_once_and_the_whole_runs_at_rest() {
+    let params = |q| crate::demos::testing::params("integrators", q);
+    let q = "h=0.001&T=20";
+    let want = crate::demos::create("integrators")
+        .unwrap()
+        .update(&params(q));
+    let mut demo = crate::demos::create("integrators").unwrap();
+    demo.set_progressive(true);
+    let first = demo.update(&params(q));
+    // 20 000 steps of each method: the first 4096 at once (to t = 4.096 s), marked.
+    let marked = demo.provisional();
+    for key in ["response", "error", "max_err_euler", "max_err_rk4"] {
+        assert!(marked.contains(&key), "{key}: {marked:?}");
+    }
+    assert!(
+        first.figures[0]
+            .description
+            .starts_with("Provisional: the runs so far, to t = 4.10 s of 20.0 s"),
+        "{}",
+        first.figures[0].description
+    );
+    // The runs so far: fewer points drawn than of the whole runs.
+    let so_far = &first.figures[0].series[1].points;
+    let whole = &want.figures[0].series[1].points;
+    assert!(so_far.len() < whole.len());
+    // Moved on mid-way: the runs for the old inputs are dropped, never shown.
+    assert!(demo.refine(0.0).is_some_and(|f| f < 1.0));
+    let q2 = "h=0.001&T=25";
+    let want2 = crate::demos::create("integrators")
+        .unwrap()
+        .update(&params(q2));
+    demo.update(&params(q2));
+    while demo.refine(5.0).is_some_and(|f| f < 1.0) {}
+    while demo.refine(5.0).is_some_and(|f| f < 1.0) {}
+    let done = demo.update(&params(q2));
+    assert!(demo.provisional().is_empty(), "{:?}", demo.provisional());
+    // Exactly what a step computes whole.
+    assert!(format!("{:?}", shown(&done)) == format!("{:?}", shown(&want2)));
+}

@@ -1,7 +1,8 @@
 //! The integrators demo's prose: summary, equation, the table of methods and the figures'
 //! text alternatives.
 
-use super::model::{Budget, Run, FULL};
+use super::model::{Budget, FULL};
+use super::runs::Run;
 use super::{Results, P};
 use crate::format::{si, significant};
 use crate::spec::Table;
@@ -266,6 +267,25 @@ pub(super) fn describe_error(r: &Results, parts: &[String], clipped: bool, clip:
 /// A figure drawn from the coarse study (`coarse`) while the full one runs, marked as
 /// provisional in its description (its title is left as it is: it already fills a phone's
 /// width).
+/// `fig`, drawn from the fixed-step runs, described as drawn from the runs so far while
+/// the rest are under way (see `runs.rs`).
+pub(super) fn runs_so_far(
+    mut fig: crate::figure::Figure,
+    p: &P,
+    r: &Results,
+) -> crate::figure::Figure {
+    // The first module computes whole runs: never a start only.
+    if let (false, Some(until)) = (cfg!(feature = "first"), r.fixed.until) {
+        fig.description = t!(
+            "integrators-runs-provisional",
+            until = si(until, "s", 3),
+            duration = si(p.t_end, "s", 3),
+            description = std::mem::take(&mut fig.description)
+        );
+    }
+    fig
+}
+
 pub(super) fn provisional(
     mut fig: crate::figure::Figure,
     coarse: &Budget,
