@@ -3,10 +3,21 @@
 // against physics re-implemented here; then every slider, toggle and preset is exercised.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open as openPage, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
 import { golden, goldenState } from './support/golden.mjs';
 import { waitForChange } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
+
+/**
+ * A page of the demo once its study is whole: the first module shows a coarse one (marked
+ * provisional) until the full module, which computes the full one behind the page, takes
+ * over.
+ */
+async function open(...args) {
+  const opened = await openPage(...args);
+  await opened.page.waitForFunction(() => !document.querySelector('[data-provisional]'));
+  return opened;
+}
 
 useSession();
 

@@ -565,6 +565,16 @@ function showCaptions(descriptions) {
   }
 }
 
+/** An update's readouts, what reads them (slider descriptions, the table's live cells) and
+ * its provisional marks. */
+function showResults(out) {
+  showReadouts(app.view.readouts, out.readouts, new Set(out.provisional));
+  markProvisional(out.provisional);
+  describeSliders(out.readouts);
+  highlightRow(app.view.table, out.readouts);
+  fillLiveCells(app.view.table, out.readouts);
+}
+
 function drawFrame() {
   app.framePending = false;
   if (app.needsRecovery) {
@@ -578,8 +588,7 @@ function drawFrame() {
     app.layerRounds = 0;
     app.settling = false; // this update drew the plots on screen (see takeOver)
     app.staleLeft = true; // plots out of view were skipped; drawStale(true) says for sure
-    showReadouts(app.view.readouts, out.readouts, new Set(out.provisional));
-    markProvisional(out.provisional);
+    showResults(out);
     for (const [key, value] of out.derived) {
       const control = app.view.controls.get(key);
       if (control) showValue(control, value);
@@ -587,9 +596,6 @@ function drawFrame() {
     if (out.derived.length) syncUrl();
     applyConditions(app.view.spec, app.root);
     if (out.tour) showTour(out.tour);
-    describeSliders(out.readouts);
-    highlightRow(app.view.table, out.readouts);
-    fillLiveCells(app.view.table, out.readouts);
     showCaptions(out.descriptions);
     if (out.descriptions.length) announce(out.descriptions[0].text);
     if (!app.firstDrawn) {
@@ -1198,7 +1204,7 @@ async function computeBehind({ glue }) {
     if (app.view.animation) session.attach('schematic', app.view.animation.canvas);
     await nextTask();
     if (moved()) throw null;
-    session.update(window.devicePixelRatio || 1, isDark());
+    let out = session.update(window.devicePixelRatio || 1, isDark());
     for (;;) {
       await nextTask();
       if (moved()) throw null;
@@ -1207,11 +1213,11 @@ async function computeBehind({ glue }) {
       if (done >= 1) {
         await nextTask();
         if (moved()) throw null;
-        session.update(window.devicePixelRatio || 1, isDark());
+        out = session.update(window.devicePixelRatio || 1, isDark());
         break;
       }
     }
-    return { session, language };
+    return { session, language, out };
   } catch (err) {
     try {
       session?.free();
@@ -1229,7 +1235,7 @@ async function computeBehind({ glue }) {
  * plots on screen show what it would draw, so it redraws them one a frame (a first
  * drawing fills its kept layers and text fits) while the controls rest.
  */
-function takeOver({ glue, exports }, { session, language }) {
+function takeOver({ glue, exports }, { session, language, out }) {
   const old = app.session;
   try {
     app.missing.push(...app.wasm.takeMissingMessages()); // reported by the diagnostics
@@ -1242,6 +1248,9 @@ function takeOver({ glue, exports }, { session, language }) {
   app.exports = exports;
   app.module = 'full';
   app.session = session;
+  // The same numbers, but a study the first module left provisional (the integrators')
+  // is whole now: its readouts and marks (the plots follow in the catch-up).
+  showResults(out);
   for (const key of app.view.shownPlots) session.setVisible(key, app.onScreen.has(key));
   app.staleLeft = true;
   app.schematicStale = Boolean(app.view.animation);
