@@ -703,12 +703,12 @@ design-map-title = { $metric ->
        *[peak-transmissibility] Peak transmissibility |X/U|
     }: { $low } → { $high }
 design-bar-label = { $metric ->
-        [settling-time] settling time into ±{ $band } of x₀, free response from rest [s]
-        [peak-rebound] peak rebound, free response from rest [% of x₀]
+        [settling-time] settling time into ±{ $band } of x₀ [s]
+        [peak-rebound] peak rebound [% of x₀]
         [accel-rms] a_w (W_k-weighted RMS) [m/s²]
        *[peak-transmissibility] peak transmissibility |X/U| [m/m]
     }{ $scale ->
-        [log] , logarithmic colours
+        [log] , log scale
        *[linear] {""}
     }
 design-axis-spring-rate = spring rate k

@@ -698,12 +698,12 @@ design-map-title = { $metric ->
        *[peak-transmissibility] Transmisibilidad máxima |X/U|
     }: { $low } → { $high }
 design-bar-label = { $metric ->
-        [settling-time] tiempo de establecimiento en ±{ $band } de x₀, respuesta libre desde el reposo [s]
-        [peak-rebound] rebote máximo, respuesta libre desde el reposo [% de x₀]
+        [settling-time] tiempo de establecimiento en ±{ $band } de x₀ [s]
+        [peak-rebound] rebote máximo [% de x₀]
         [accel-rms] a_w (RMS ponderada con W_k) [m/s²]
        *[peak-transmissibility] transmisibilidad máxima |X/U| [m/m]
     }{ $scale ->
-        [log] , colores logarítmicos
+        [log] , escala log.
        *[linear] {""}
     }
 design-axis-spring-rate = rigidez del resorte k

@@ -1359,12 +1359,12 @@ design-map-title = { $metric ->
        *[peak-transmissibility] Transmissibilité maximale |X/U|
     } : { $low } → { $high }
 design-bar-label = { $metric ->
-        [settling-time] temps d'établissement dans ±{ $band } de x₀, réponse libre depuis le repos [s]
-        [peak-rebound] rebond maximal, réponse libre depuis le repos [% de x₀]
+        [settling-time] temps d'établissement dans ±{ $band } de x₀ [s]
+        [peak-rebound] rebond maximal [% de x₀]
         [accel-rms] a_w (RMS pondérée W_k) [m/s²]
        *[peak-transmissibility] transmissibilité maximale |X/U| [m/m]
     }{ $scale ->
-        [log] , couleurs logarithmiques
+        [log] , échelle log.
        *[linear] {""}
     }
 design-axis-spring-rate = raideur du ressort k

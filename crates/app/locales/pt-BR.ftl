@@ -1359,12 +1359,12 @@ design-map-title = { $metric ->
        *[peak-transmissibility] Transmissibilidade máxima |X/U|
     }: { $low } → { $high }
 design-bar-label = { $metric ->
-        [settling-time] tempo de acomodação em ±{ $band } de x₀, resposta livre a partir do repouso [s]
-        [peak-rebound] ressalto máximo, resposta livre a partir do repouso [% de x₀]
+        [settling-time] tempo de acomodação em ±{ $band } de x₀ [s]
+        [peak-rebound] ressalto máximo [% de x₀]
         [accel-rms] a_w (RMS ponderado por W_k) [m/s²]
        *[peak-transmissibility] transmissibilidade máxima |X/U| [m/m]
     }{ $scale ->
-        [log] , cores em escala logarítmica
+        [log] , escala log.
        *[linear] {""}
     }
 design-axis-spring-rate = rigidez da mola k

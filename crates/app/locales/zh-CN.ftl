@@ -1344,8 +1344,8 @@ design-map-title = { $metric ->
        *[peak-transmissibility] 最大传递率 |X/U|
     }：{ $low } → { $high }
 design-bar-label = { $metric ->
-        [settling-time] 调节时间（x₀ 的 ±{ $band }，由静止释放的自由响应）[s]
-        [peak-rebound] 最大回弹（由静止释放的自由响应）[x₀ 的 %]
+        [settling-time] 调节时间（x₀ 的 ±{ $band }）[s]
+        [peak-rebound] 最大回弹 [x₀ 的 %]
         [accel-rms] a_w（W_k 加权均方根）[m/s²]
        *[peak-transmissibility] 最大传递率 |X/U| [m/m]
     }{ $scale ->
