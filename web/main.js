@@ -1143,7 +1143,8 @@ function betweenBursts() {
 /**
  * After the first plot from the first module: loads the full module behind the page and
  * switches to it while the controls rest, with the same values, so nothing the user sees
- * changes, and in steps that each fit in a frame at a slow device's speed: the full
+ * changes (but a study the first module left provisional, now whole), and in steps that
+ * each fit in a frame at a slow device's speed: the full
  * module's session computes behind the page (computeBehind), takes over (takeOver), and
  * redraws the plots one a frame. Input in between starts again at the next rest.
  */

@@ -264,9 +264,6 @@ pub(super) fn describe_error(r: &Results, parts: &[String], clipped: bool, clip:
     }
 }
 
-/// A figure drawn from the coarse study (`coarse`) while the full one runs, marked as
-/// provisional in its description (its title is left as it is: it already fills a phone's
-/// width).
 /// `fig`, drawn from the fixed-step runs, described as drawn from the runs so far while
 /// the rest are under way (see `runs.rs`).
 pub(super) fn runs_so_far(
@@ -286,6 +283,9 @@ pub(super) fn runs_so_far(
     fig
 }
 
+/// A figure drawn from the coarse study (`coarse`) while the full one runs, marked as
+/// provisional in its description (its title is left as it is: it already fills a phone's
+/// width).
 pub(super) fn provisional(
     mut fig: crate::figure::Figure,
     coarse: &Budget,
