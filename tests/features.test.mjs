@@ -65,6 +65,9 @@ test('play animates the schematic and the time cursor; Space pauses; the scrubbe
 
 test('hovering a plot shows the values under the pointer', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes`);
+  // A hover shows values once the full module has taken over (a first module has no
+  // probe: tests/first-module.test.mjs); one move before that showed nothing, at random.
+  await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: 10000 });
   await page.locator('canvas[data-plot="response"]').scrollIntoViewIfNeeded();
   const box = await page.locator('canvas[data-plot="response"]').boundingBox();
   await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
@@ -74,6 +77,41 @@ test('hovering a plot shows the values under the pointer', async () => {
   assert.match(text, /x\(t\), underdamped = /);
   assert.deepEqual(errors, []);
   await context.close();
+});
+
+test('a crosshair follows the pointer: one at a time, none once it leaves', async () => {
+  // design has no animation: before, only drawTime cleared an overlay, so its crosshairs
+  // piled up as the pointer moved.
+  for (const id of ['design', 'regimes']) {
+    const { page, errors, context } = await open(browser, `${server.url}?demo=${id}`);
+    await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: 10000 });
+    const plot = page.locator('canvas[data-plot]').first();
+    await plot.scrollIntoViewIfNeeded();
+    const box = await plot.boundingBox();
+    const ink = () =>
+      page.evaluate(() => {
+        const o = document.querySelector('canvas.overlay');
+        if (!o.width) return 0; // an empty overlay is 0 x 0
+        const d = o.getContext('2d').getImageData(0, 0, o.width, o.height).data;
+        let n = 0;
+        for (let i = 3; i < d.length; i += 4) if (d[i]) n++;
+        return n;
+      });
+    const inks = [];
+    for (const [fx, fy] of [[0.4, 0.4], [0.6, 0.6], [0.5, 0.3]]) {
+      await page.mouse.move(box.x + box.width * fx, box.y + box.height * fy);
+      await page.waitForSelector('.probe:not([hidden])');
+      inks.push(await ink());
+    }
+    // One crosshair (two lines across the plot, rings at the curves) each time: about the
+    // same ink, never the sum of the earlier ones.
+    assert.ok(inks[0] > 100, `${id}: a crosshair is drawn (${inks})`);
+    for (const n of inks.slice(1)) assert.ok(Math.abs(n - inks[0]) < 0.5 * inks[0], `${id}: one crosshair at a time (${inks})`);
+    await page.mouse.move(2, 2);
+    assert.equal(await ink(), 0, `${id}: no crosshair once the pointer left`);
+    assert.deepEqual(errors, []);
+    await context.close();
+  }
 });
 
 test('CSV, SVG and PNG downloads are produced and parse; CSV numbers match the state', async () => {

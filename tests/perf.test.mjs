@@ -402,6 +402,7 @@ test('a paused time cursor is on every time plot again once the plots out of vie
       Object.fromEntries(
         [...document.querySelectorAll('[data-plot-wrap]')].map((w) => {
           const c = w.querySelector('canvas:not([data-plot])');
+          if (!c.width) return [w.dataset.plotWrap, 0]; // an empty overlay is 0 x 0
           const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
           let n = 0;
           for (let i = 3; i < d.length; i += 4) if (d[i]) n++;
@@ -432,6 +433,7 @@ test('a paused time cursor is on every time plot again once the plots out of vie
       (keys) =>
         keys.every((k) => {
           const c = document.querySelector(`[data-plot-wrap="${k}"] canvas:not([data-plot])`);
+          if (!c.width) return false; // empty
           const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
           for (let i = 3; i < d.length; i += 4) if (d[i]) return true;
           return false;

@@ -539,9 +539,12 @@ function observeCanvasSizes() {
   for (const [canvas] of sizedCanvases()) app.canvasSizes.observe(canvas);
 }
 
-/** Every canvas sized to its box, with its size key: each plot, its overlay, the schematic. */
+/**
+ * Every canvas sized to its box, with its size key: each plot and the schematic. An
+ * overlay is sized when something is drawn on it (overlayContext).
+ */
 function sizedCanvases() {
-  const boxes = [...app.view.canvases].flatMap(([key, canvas]) => [[canvas, key], [app.view.overlays.get(key).overlay, `${key}:overlay`]]);
+  const boxes = [...app.view.canvases].map(([key, canvas]) => [canvas, key]);
   if (app.view.animation) boxes.push([app.view.animation.canvas, 'schematic']);
   return boxes;
 }
@@ -669,12 +672,12 @@ function drawCursors(dpr) {
     // Cleared and drawn only when the cursor moves (or the overlay was resized, the theme
     // changed, or a probe drew on it): clearing every overlay every frame cost a full-size
     // canvas operation per time plot, on screen or not, while a slider moved.
-    const drawnKey = `${x}|${overlay.width}|${overlay.height}|${isDark()}`;
+    const plot = app.view.canvases.get(key);
+    const drawnKey = `${x}|${plot.width}|${plot.height}|${isDark()}`;
     if (cursorDrawn.get(overlay) === drawnKey) continue;
     cursorDrawn.set(overlay, drawnKey);
-    const ctx = overlay.getContext('2d');
-    ctx.clearRect(0, 0, overlay.width, overlay.height);
-    if (x === undefined) continue;
+    const ctx = overlayContext(key, x !== undefined);
+    if (!ctx) continue;
     ctx.strokeStyle = isDark() ? 'rgba(230,233,237,0.8)' : 'rgba(33,37,41,0.7)';
     ctx.lineWidth = Math.max(1, dpr);
     ctx.setLineDash([4 * dpr, 3 * dpr]);
@@ -683,6 +686,24 @@ function drawCursors(dpr) {
     ctx.lineTo(x, overlay.height);
     ctx.stroke();
   }
+}
+
+/**
+ * The cleared 2D context of plot `key`'s overlay, sized to the plot's canvas, for drawing
+ * on it (`draw`), or `null` after emptying it. An empty overlay is 0 × 0: a canvas of
+ * the page's size, even blank, is copied at each commit of a frame (4-5 ms each at 4x CPU
+ * in Chromium's software compositing, every canvas on screen at every commit).
+ */
+function overlayContext(key, draw) {
+  const { overlay } = app.view.overlays.get(key);
+  const plot = app.view.canvases.get(key);
+  const [w, h] = draw ? [plot.width, plot.height] : [0, 0];
+  if (overlay.width !== w || overlay.height !== h) {
+    [overlay.width, overlay.height] = [w, h]; // cleared by the resize
+  } else if (draw) {
+    overlay.getContext('2d').clearRect(0, 0, w, h);
+  }
+  return draw ? overlay.getContext('2d') : null;
 }
 
 /** The provisional keys each view last marked (markProvisional), joined. */
@@ -921,6 +942,16 @@ function tick(now) {
   if (app.playing) requestAnimationFrame(tick);
 }
 
+/**
+ * Takes a probe's crosshair off plot `key`'s overlay: the time cursor is drawn again
+ * (drawTime; the crosshair dropped its cursorDrawn), or, without an animation, the overlay
+ * is emptied (before, crosshairs piled up there as the pointer moved).
+ */
+function eraseProbe(key) {
+  drawTime();
+  if (!app.view.animation || !app.timeSpan) overlayContext(key, false);
+}
+
 function wireProbes() {
   for (const [key, canvas] of app.view.canvases) {
     const { overlay, tip, stage } = app.view.overlays.get(key);
@@ -947,12 +978,13 @@ function wireProbes() {
         reportFailure(err);
         return;
       }
-      drawTime();
+      eraseProbe(key);
       if (!probe) {
         tip.hidden = true;
         return;
       }
       cursorDrawn.delete(overlay); // the crosshair goes with the next drawTime
+      if (!overlay.width) overlayContext(key, true); // drawTime left it empty: no cursor
       const ctx = overlay.getContext('2d');
       ctx.save();
       ctx.strokeStyle = isDark() ? 'rgba(230,233,237,0.6)' : 'rgba(33,37,41,0.5)';
@@ -1009,7 +1041,7 @@ function wireProbes() {
       // A finger "leaves" as it lifts: keep a touch read-out until the next touch.
       if (ev.pointerType !== 'mouse') return;
       tip.hidden = true;
-      drawTime();
+      eraseProbe(key);
     });
   }
 }
