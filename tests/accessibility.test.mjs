@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
-import { open, SHOTS } from './support/browser.mjs';
+import { open, SHOTS, fullShot } from './support/browser.mjs';
 import { useSession, server, browser, demoIds } from './support/session.mjs';
 
 const require = createRequire(import.meta.url);
@@ -96,7 +96,7 @@ for (const scheme of ['light', 'dark']) {
         const { page, errors, context } = await open(browser, `${server.url}?demo=${id}`, { viewport: { width: w, height: h }, colorScheme: scheme });
         const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
         assert.ok(overflow <= 0, `${id} at ${w}px (${scheme}): horizontal overflow ${overflow}px`);
-        await page.screenshot({ path: `${SHOTS}${id}-${w}x${h}-${scheme}.png`, fullPage: true });
+        await fullShot(page, `${SHOTS}${id}-${w}x${h}-${scheme}.png`);
         assert.deepEqual(errors, []);
         await context.close();
       }

@@ -4,7 +4,7 @@
 // checked here is that the page shows them, and that the twins' readouts agree.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch, assertFiguresMatch } from './support/golden.mjs';
 import { assertFitsPhone, pressOn, typeValue, waitForChange } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -38,7 +38,7 @@ test('defaults and every preset show the readouts and text alternatives computed
     const [ink] = await canvasFingerprint(page, 'schematic');
     assert.ok(ink > 2000, `${state.name}: schematic has ink (${ink} px)`);
     const slug = state.name.split(/[ :(]/)[0].toLowerCase();
-    await page.screenshot({ path: `${SHOTS}analogy-${slug}-1280.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}analogy-${slug}-1280.png`);
     assert.deepEqual(errors, []);
     await context.close();
   }

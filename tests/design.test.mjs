@@ -4,7 +4,7 @@
 // picking designs by clicking the map and the Pareto front, and the sweep's compute time.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, assertReadoutsMatch, assertFiguresMatch, stateSlug } from './support/golden.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
@@ -37,7 +37,7 @@ for (const state of golden('design').states) {
     await assertFiguresMatch(page, state, PLOTS, 3000);
     const [mapInk] = await canvasFingerprint(page, 'map');
     assert.ok(mapInk > 60000, `the heat map fills its plot (${mapInk} px)`);
-    await page.screenshot({ path: `${SHOTS}design-${stateSlug(state.name)}-1280.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}design-${stateSlug(state.name)}-1280.png`);
     assert.deepEqual(errors, []);
     await context.close();
   });
@@ -180,7 +180,7 @@ test('the 100 × 100 sweep reruns while the mass moves and reports its compute t
   t.diagnostic(`mass slider event (sweep + draw): median ${ev[5].toFixed(1)} ms`);
   await page.setViewportSize({ width: 360, height: 740 });
   await page.waitForTimeout(300);
-  await page.screenshot({ path: `${SHOTS}design-360.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}design-360.png`);
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createServer } from 'node:http';
-import { open, readout, waitForReadout, SHOTS } from './support/browser.mjs';
+import { open, readout, waitForReadout, SHOTS, fullShot } from './support/browser.mjs';
 import { serve } from './support/server.mjs';
 import { useSession, server as app, browser } from './support/session.mjs';
 
@@ -70,7 +70,7 @@ test('a host page on another origin drives one sandboxed embed and hears its cha
     assert.equal(await frameB.isHidden('[data-param="wn"]'), true);
     assert.equal(await frameB.isDisabled('#p-zeta'), true);
     assert.equal(await frameB.isHidden('.site-header'), true);
-    await page.screenshot({ path: `${SHOTS}embed-host-page.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}embed-host-page.png`);
     assert.deepEqual(errors, []);
   } finally {
     await context.close();
@@ -204,7 +204,7 @@ for (const [w, h] of [[320, 480], [1280, 800]]) {
     const { page, errors, context } = await open(browser, `${app.url}?demo=regimes&embed=1`, { viewport: { width: w, height: h } });
     const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
     assert.ok(overflow <= 0, `horizontal overflow ${overflow}px`);
-    await page.screenshot({ path: `${SHOTS}embed-${w}x${h}.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}embed-${w}x${h}.png`);
     assert.deepEqual(errors, []);
     await context.close();
   });

@@ -4,7 +4,7 @@
 // every slider and menu, the animation, the narrow screen.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, caption, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, goldenState, openRecorded } from './support/golden.mjs';
 import { nudge, assertDrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -53,7 +53,7 @@ test('failure day: the twist grows to a large amplitude within the plotted minut
     return [count(Math.round(width * 0.15), Math.round(width * 0.35)), count(Math.round(width * 0.65), Math.round(width * 0.85))];
   });
   assert.ok(halves[1] > 1.5 * halves[0], `ink left ${halves[0]}, right ${halves[1]}`);
-  await page.screenshot({ path: `${SHOTS}flutter-failure-day-1280.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}flutter-failure-day-1280.png`);
   assert.deepEqual(errors, []);
   await context.close();
 });
@@ -66,7 +66,7 @@ test('a narrow phone screen still shows every plot', async () => {
   await assertDrawn(page, PLOTS, 1000);
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth - innerWidth);
   assert.ok(overflow <= 0, `no sideways scrolling (${overflow} px)`);
-  await page.screenshot({ path: `${SHOTS}flutter-failure-day-360.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}flutter-failure-day-360.png`);
   await page.locator('.plots').screenshot({ path: `${SHOTS}flutter-360-plots.png` });
   assert.deepEqual(errors, []);
   await context.close();

@@ -3,7 +3,7 @@
 // against physics re-implemented here; then every slider, toggle and preset is exercised.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open as openPage, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open as openPage, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, goldenState } from './support/golden.mjs';
 import { waitForChange } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -85,7 +85,7 @@ test('h = 0.3 s integrates with steps of exactly 0.3 s; the last one ends at T',
   // The same from the golden file, which the native tests computed with this h.
   const light = goldenState('integrators', LIGHT);
   assert.equal(light.readouts.find((r) => r.key === 'h_used').value, '3.00000000000e-1');
-  await page.screenshot({ path: `${SHOTS}integrators-preset-1280.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}integrators-preset-1280.png`);
   assert.deepEqual(errors, []);
   await context.close();
 });
@@ -213,7 +213,7 @@ for (const [name, query, want] of PRESETS) {
     for (const [k, v] of Object.entries(want)) assert.ok(same(k, await readout(page, k), v), `${name}: ${k}`);
     await assertInk(page);
     const slug = name.toLowerCase().replace(/[^a-z0-9]+/g, '-');
-    await page.screenshot({ path: `${SHOTS}integrators-${slug}-1280.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}integrators-${slug}-1280.png`);
     // The same preset from its button, starting at the default.
     const other = await open(browser, `${server.url}?demo=integrators`);
     await other.page.getByRole('button', { name: new RegExp(name) }).click();
@@ -250,7 +250,7 @@ test('RK4 beyond its limit: the growth factor is reported honestly', async () =>
 test('narrow screen (360 × 740)', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?${PRESET}`, { viewport: { width: 360, height: 740 } });
   await assertInk(page);
-  await page.screenshot({ path: `${SHOTS}integrators-preset-360.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}integrators-preset-360.png`);
   for (const plot of PLOTS) {
     await page.locator(`canvas[data-plot="${plot}"]`).screenshot({ path: `${SHOTS}integrators-360-${plot}.png` });
   }

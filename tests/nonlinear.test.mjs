@@ -4,7 +4,7 @@
 // shows them and how it behaves: presets, the effect row, every slider, the narrow screen.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, caption, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, goldenState, openRecorded } from './support/golden.mjs';
 import { nudge, assertDrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -17,7 +17,7 @@ for (const state of golden('nonlinear').states) {
   test(`${state.name}: readouts as computed natively, plots drawn, effect row highlighted`, async () => {
     const { page, errors, context } = await openRecorded(browser, server.url, 'nonlinear', state, { plots: PLOTS, row: 'effect' });
     const slug = state.name.toLowerCase().replace(/[^a-z]+/g, '-');
-    await page.screenshot({ path: `${SHOTS}nonlinear-${slug}-1280.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}nonlinear-${slug}-1280.png`);
     assert.deepEqual(errors, []);
     await context.close();
   });
@@ -40,7 +40,7 @@ test('a narrow phone screen still shows every plot', async () => {
     viewport: { width: 360, height: 740 },
   });
   await assertDrawn(page, PLOTS, 1000);
-  await page.screenshot({ path: `${SHOTS}nonlinear-360.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}nonlinear-360.png`);
   await page.locator('.plots').screenshot({ path: `${SHOTS}nonlinear-360-plots.png` });
   assert.deepEqual(errors, []);
   await context.close();

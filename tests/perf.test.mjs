@@ -446,3 +446,47 @@ test('a paused time cursor is on every time plot again once the plots out of vie
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('a canvas out of view is not painted (content-visibility), keeps its box, and shows its plot once scrolled to', async () => {
+  const phone = { viewport: { width: 360, height: 740 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true };
+  const { page, errors, context } = await open(browser, `${server.url}?demo=flutter`, phone);
+  await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: 10000 });
+  await drawn(page);
+  const boxes = () =>
+    page.evaluate(() =>
+      [...document.querySelectorAll('.plot-stage canvas[data-plot], .schematic canvas')].map((c) => {
+        const r = c.getBoundingClientRect();
+        return [c.dataset.plot, getComputedStyle(c).contentVisibility, Math.round(r.width), Math.round(r.height)];
+      }),
+    );
+  const skipped = await boxes();
+  assert.ok(skipped.length >= 5, JSON.stringify(skipped));
+  for (const [key, cv, w, h] of skipped) assert.ok(cv === 'auto' && w > 200 && h > 100, `${key}: ${cv} ${w} x ${h}`);
+  // The same boxes as when every canvas is painted: the size comes from the box (width,
+  // aspect-ratio), not the bitmap that containment hides.
+  await page.evaluate(() => document.querySelectorAll('canvas').forEach((c) => (c.style.contentVisibility = 'visible')));
+  assert.deepEqual((await boxes()).map(([k, , w, h]) => [k, w, h]), skipped.map(([k, , w, h]) => [k, w, h]));
+  await page.evaluate(() => document.querySelectorAll('canvas').forEach((c) => (c.style.contentVisibility = '')));
+  // The last plot, far below the first screen, shows its drawing once scrolled to.
+  const last = page.locator('.plot-stage canvas[data-plot]').last();
+  await last.scrollIntoViewIfNeeded();
+  await drawn(page);
+  // What the screen shows there (a screenshot, decoded in the page), not the bitmap.
+  const png = (await last.screenshot()).toString('base64');
+  const shades = await page.evaluate(async (data) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${data}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    [c.width, c.height] = [img.width, img.height];
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const d = ctx.getImageData(0, 0, c.width, c.height).data;
+    const seen = new Set();
+    for (let i = 0; i < d.length; i += 4) seen.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
+    return seen.size;
+  }, png);
+  assert.ok(shades > 20, `the scrolled-to plot is on screen, not blank (${shades} colours)`);
+  assert.deepEqual(errors, []);
+  await context.close();
+});

@@ -4,7 +4,7 @@
 // the keyboard and the menus and check that readouts, pixels and the animation follow.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, readout, canvasFingerprint, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, goldenState, openRecorded } from './support/golden.mjs';
 import { nudge, assertDrawn } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -22,7 +22,7 @@ for (const state of golden(ID).states) {
   test(`${state.name}: the readouts computed natively, every plot drawn`, async () => {
     const { page, errors, context } = await openRecorded(browser, server.url, ID, state, { plots: PLOTS });
     const shot = state.name.replace(/[^A-Za-z0-9]+/g, '-').toLowerCase();
-    await page.screenshot({ path: `${SHOTS}${ID}-${shot}-1280.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}${ID}-${shot}-1280.png`);
     assert.deepEqual(errors, []);
     await context.close();
   });
@@ -84,7 +84,7 @@ test('a narrow phone screen still shows every plot', async () => {
     viewport: { width: 360, height: 740 },
   });
   await assertDrawn(page, PLOTS, 1000);
-  await page.screenshot({ path: `${SHOTS}${ID}-360.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}${ID}-360.png`);
   await page.locator('.plots').screenshot({ path: `${SHOTS}${ID}-360-plots.png` });
   assert.deepEqual(errors, []);
   await context.close();

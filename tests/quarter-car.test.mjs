@@ -3,7 +3,7 @@
 // snapshots (crates/app/tests/snapshots/quarter-car.snap); nothing is recomputed here.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, caption, readout, canvasFingerprint, waitForReadout, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, waitForReadout, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
 import { waitForChange, assertDrawn, assertKeyboardMove } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -31,7 +31,7 @@ test('defaults and every preset show the readouts and captions computed natively
     }
     assert.ok((await page.locator('canvas').count()) >= 4, 'three plots and the schematic');
     const slug = state.name.replace(/[^A-Za-z0-9.]+/g, '-');
-    await page.screenshot({ path: `${SHOTS}quarter-car-${slug}-1280.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}quarter-car-${slug}-1280.png`);
     assert.deepEqual(errors, []);
     await context.close();
   }
@@ -136,7 +136,7 @@ test('narrow screen (360 × 740)', async () => {
   await assertDrawn(page, PLOTS, 1000);
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
   assert.ok(overflow <= 0, `no horizontal scroll (${overflow} px)`);
-  await page.screenshot({ path: `${SHOTS}quarter-car-360.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}quarter-car-360.png`);
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -2,7 +2,7 @@
 // the keyboard and the mouse.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, readout, canvasFingerprint, waitForUrlParam, waitForReadout, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForUrlParam, waitForReadout, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, assertReadoutsMatch } from './support/golden.mjs';
 import { assertStillWorks, typeValue } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -24,7 +24,7 @@ test('opens from the URL with its values, readouts and drawn plots', async () =>
     return [c.width, Math.round(c.clientWidth * devicePixelRatio)];
   });
   assert.equal(sizes[0], sizes[1]);
-  await page.screenshot({ path: `${SHOTS}regimes-1280.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}regimes-1280.png`);
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -4,7 +4,7 @@
 // (crates/app/tests/snapshots/resonance.snap); nothing is recomputed here.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
 import { allReadouts, assertLinkReproduces, assertFitsPhone, pressOn, waitForChange } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -39,7 +39,7 @@ test('defaults and every preset show the readouts and captions computed natively
       assert.ok(ink > 2000, `${state.name}: ${plot} has ink (${ink} px)`);
     }
     const slug = state.name.replace(/[^A-Za-z0-9.]+/g, '-');
-    await page.screenshot({ path: `${SHOTS}resonance-${slug}-1280.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}resonance-${slug}-1280.png`);
     assert.deepEqual(errors, []);
     await context.close();
   }
@@ -108,7 +108,7 @@ test('the magnitude view switches between linear and dB', async () => {
   await page.waitForFunction(() => /dB/.test(document.querySelector('figure:has(canvas[data-plot="magnitude"])').textContent));
   assert.notDeepEqual(await canvasFingerprint(page, 'magnitude'), linear);
   assert.equal(await readout(page, 'Q'), q, 'the view changes no readout');
-  await page.screenshot({ path: `${SHOTS}resonance-db-1280.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}resonance-db-1280.png`);
   // And by URL key.
   const again = await open(browser, `${server.url}?demo=${ID}&zeta=0.05&view=db`);
   assert.equal(await again.page.inputValue('#p-view'), '1');

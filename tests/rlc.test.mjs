@@ -3,7 +3,7 @@
 // snapshots (crates/app/tests/snapshots/rlc.snap), not recomputed here.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch, assertFiguresMatch } from './support/golden.mjs';
 import { assertDrawn, assertKeyboardMove } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -19,7 +19,7 @@ test('defaults and every preset show the readouts and text alternatives computed
     await assertReadoutsMatch(page, state);
     await assertFiguresMatch(page, state, PLOTS, 2000);
     const slug = state.name.split(',')[0].toLowerCase().replace(/[^a-z]+/g, '-');
-    await page.screenshot({ path: `${SHOTS}rlc-${slug}-1280.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}rlc-${slug}-1280.png`);
     assert.deepEqual(errors, []);
     await context.close();
   }
@@ -100,7 +100,7 @@ test('narrow screen (360 × 740)', async () => {
     viewport: { width: 360, height: 740 },
   });
   await assertDrawn(page, PLOTS, 1000);
-  await page.screenshot({ path: `${SHOTS}rlc-360.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}rlc-360.png`);
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -4,7 +4,7 @@
 // moved from the keyboard, and the time of a 100 000-draw run.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, assertReadoutsMatch, assertFiguresMatch, stateSlug } from './support/golden.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
@@ -21,7 +21,7 @@ for (const state of golden('uncertainty').states) {
     await page.waitForFunction(() => !document.querySelector('[data-provisional]'));
     await assertReadoutsMatch(page, state);
     await assertFiguresMatch(page, state, PLOTS, 3000);
-    await page.screenshot({ path: `${SHOTS}uncertainty-${stateSlug(state.name)}-1280.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}uncertainty-${stateSlug(state.name)}-1280.png`);
     assert.deepEqual(errors, []);
     await context.close();
   });
@@ -171,7 +171,7 @@ test('100 000 draws: a coarse run first, then the full run, reported with its co
   t.diagnostic(`100 000-draw Monte Carlo in the browser: ${times.map((x) => x.toFixed(0)).join(', ')} ms`);
   await page.setViewportSize({ width: 360, height: 740 });
   await page.waitForTimeout(300);
-  await page.screenshot({ path: `${SHOTS}uncertainty-360.png`, fullPage: true });
+  await fullShot(page, `${SHOTS}uncertainty-360.png`);
   assert.deepEqual(errors, []);
   await context.close();
 });

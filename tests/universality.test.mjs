@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
-import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, waitForUrlParam, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
@@ -116,7 +116,7 @@ test('screenshots at 1280×800 and 360×740', async () => {
     const [ink] = await canvasFingerprint(page, 'normalised');
     assert.ok(ink > 3000, `normalised plot has ink (${ink} px)`);
     await applyConditions(page);
-    await page.screenshot({ path: `${SHOTS}universality-${w}${name}.png`, fullPage: true });
+    await fullShot(page, `${SHOTS}universality-${w}${name}.png`);
     assert.deepEqual(errors, []);
     await context.close();
   }

@@ -49,6 +49,26 @@ export async function open(browser, url, options = {}) {
   return { page, errors, context };
 }
 
+/**
+ * A screenshot of the whole page at `path`, every canvas painted: the page paints a canvas
+ * only near the window (content-visibility, style.css), and a full-page capture does not
+ * count as the window.
+ */
+export async function fullShot(page, path) {
+  const paint = (on) =>
+    page.evaluate(
+      (on) =>
+        new Promise((done) => {
+          for (const c of document.querySelectorAll('canvas')) c.style.contentVisibility = on ? 'visible' : '';
+          requestAnimationFrame(() => requestAnimationFrame(done));
+        }),
+      on,
+    );
+  await paint(true);
+  await page.screenshot({ path, fullPage: true });
+  await paint(false);
+}
+
 /** Waits until every readout has been filled in once. */
 export async function waitForReadouts(page) {
   await page.waitForFunction(() => {
