@@ -58,6 +58,11 @@ function slide(page, key, value, preset = '') {
             texts: Object.fromEntries([...document.querySelectorAll('[data-readout][data-provisional]')].map((e) => [e.dataset.readout, e.querySelector('dd').textContent])),
             busy: document.querySelector('[data-plot-wrap][data-provisional]')?.getAttribute('aria-busy') ?? '',
             caption: document.querySelector('[data-plot-wrap][data-provisional] figcaption')?.textContent ?? '',
+            bars: [...document.querySelectorAll('[data-plot-wrap][data-provisional] .study-progress')].map((b) => ({
+              hidden: b.hidden,
+              value: b.getAttribute('value'),
+              label: b.getAttribute('aria-label'),
+            })),
           };
           if (!preset) return resolve(marks);
           setTimeout(() => {
@@ -132,6 +137,35 @@ test('uncertainty: a moved tolerance shows the first 1000 draws marked provision
     assert.equal(f.readouts.draws, '10000');
     assert.equal(Number(f.readouts.yield).toPrecision(12), Number(want).toPrecision(12), 'only the run for the current tolerance is shown as final');
   }
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a provisional plot shows how far its full study has come, and the bar goes with the mark', { skip }, async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty`);
+  await settled(page);
+  await page.evaluate(() => document.querySelector('[data-plot-wrap="hist"]').scrollIntoView({ block: 'center' }));
+  // Slower, so the run of 10 000 draws takes several of the bar's 100 ms steps.
+  const cdp = await context.newCDPSession(page);
+  await cdp.send('Emulation.setCPUThrottlingRate', { rate: 6 });
+  await page.evaluate(() => {
+    window.__progress = [];
+    const fig = document.querySelector('[data-plot-wrap="hist"]');
+    new MutationObserver(() => {
+      const b = fig.querySelector('.study-progress');
+      if (b) window.__progress.push([b.hidden, Number(b.getAttribute('value'))]);
+    }).observe(fig, { attributes: true, subtree: true, childList: true });
+  });
+  const now = await slide(page, 'dm', 17);
+  assert.ok(now.plots.includes('hist'), JSON.stringify(now.plots));
+  assert.deepEqual(now.bars[0], { hidden: false, value: '0', label: 'Computing the full result' });
+  await settled(page);
+  await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
+  const seen = await page.evaluate(() => window.__progress);
+  const shown = seen.filter(([hidden]) => !hidden).map(([, v]) => v);
+  assert.ok(shown.some((v) => v > 0 && v < 100), `a part done shown: ${JSON.stringify(seen)}`);
+  for (let i = 1; i < shown.length; i++) assert.ok(shown[i] >= shown[i - 1], `never back: ${JSON.stringify(seen)}`);
+  assert.equal(await page.locator('[data-plot-wrap="hist"] .study-progress').isHidden(), true, 'hidden with the mark');
   assert.deepEqual(errors, []);
   await context.close();
 });

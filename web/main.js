@@ -8,7 +8,7 @@
 // the host-page API outside a frame) are not imported here: they load when first used, and
 // at idle after the first plot, so a click does not wait on the network (see `later`).
 import './state.js'; // first: expands a state= token in the address before anything reads it
-import { applyConditions, buildDemo, fillLiveCells, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow, setAttr, setText } from './ui.js';
+import { applyConditions, buildDemo, el, fillLiveCells, fromSlider, notify, showReadouts, showValue, formatValue, highlightRow, setAttr, setText } from './ui.js';
 import { cancelPendingWrite, currentQuery, demoFromUrl, queryFor, writeState } from './url.js';
 import { applyEmbedView, connectPage, embedOptions, loadPrediction, loadStyles } from './view.js';
 import { useFullModuleWith, useGlue } from './glue.js';
@@ -724,9 +724,37 @@ function markProvisional(keys) {
       const on = now.has(fig.dataset.plotWrap);
       fig.toggleAttribute('data-provisional', on);
       setAttr(fig, 'aria-busy', String(on));
+      let bar = fig.querySelector('.study-progress');
+      const stage = fig.querySelector('.plot-stage');
+      if (on && !bar && stage) {
+        bar = el('progress', { class: 'study-progress', max: '100', value: progressValue, 'aria-label': t('studyProgress') });
+        stage.append(bar);
+      }
+      if (bar && on && bar.hidden) setAttr(bar, 'value', progressValue);
+      if (bar) bar.hidden = !on;
     }
   }
-  if (keys.length) scheduleRefine();
+  if (keys.length) {
+    showStudyProgress(0, true); // an update starts the study again
+    scheduleRefine();
+  }
+}
+
+/** When the study's progress bars were last moved (performance.now()), and to what. */
+let progressShown = 0;
+let progressValue = '0';
+
+/**
+ * Moves the provisional plots' progress bars to `done` (0-1) of the full study, at most
+ * every 100 ms (`now`: at once): each move costs a frame's commit.
+ */
+function showStudyProgress(done, now = false) {
+  const t0 = performance.now();
+  if (!now && t0 - progressShown < 100) return;
+  const value = String(Math.round(Math.min(1, Math.max(0, done)) * 100));
+  if (value === progressValue) return; // each frame of a drag starts again from 0
+  [progressShown, progressValue] = [t0, value];
+  for (const bar of document.querySelectorAll('.study-progress:not([hidden])')) setAttr(bar, 'value', value);
 }
 
 /** Runs the pending full study in short slices between frames; redraws when it is done. */
@@ -742,7 +770,10 @@ function scheduleRefine() {
     const done = app.session.refine(REFINE_SLICE_MS);
     if (done === undefined) return;
     if (done >= 1) requestDraw();
-    else app.refineTimer = setTimeout(slice, 0);
+    else {
+      showStudyProgress(done);
+      app.refineTimer = setTimeout(slice, 0);
+    }
   };
   app.refineTimer = setTimeout(slice, 0);
 }
@@ -1243,6 +1274,7 @@ async function computeBehind({ glue }) {
       if (moved()) throw null;
       const done = session.refine(REFINE_SLICE_MS);
       if (done === undefined) break;
+      showStudyProgress(done); // the study the first module left provisional (integrators')
       if (done >= 1) {
         await nextTask();
         if (moved()) throw null;

@@ -66,6 +66,7 @@ page-demos-nav = Demos
 page-no-script = Zeta Lab needs JavaScript and WebAssembly.
 page-catalogue-failed = The { $name } catalogue could not be loaded ({ $text }); the page is in English.
 page-provisional = { $value } (provisional)
+page-study-progress = Computing the full result
 page-readouts-shown = Readouts shown
 page-state-token = State token
 page-theme-auto = auto

@@ -58,6 +58,7 @@ page-demos-nav = Demostraciones
 page-no-script = Zeta Lab necesita JavaScript y WebAssembly.
 page-catalogue-failed = No se pudo cargar el catálogo de { $name } ({ $text }); la página se muestra en inglés.
 page-provisional = { $value } (provisional)
+page-study-progress = Calculando el resultado completo
 page-readouts-shown = Resultados visibles
 page-state-token = Código de estado
 page-theme-auto = automático

@@ -1251,6 +1251,7 @@ page-demos-nav = Démonstrations
 page-no-script = Zeta Lab nécessite JavaScript et WebAssembly.
 page-catalogue-failed = Le catalogue { $name } n’a pas pu être chargé ({ $text }) ; la page reste en anglais.
 page-provisional = { $value } (provisoire)
+page-study-progress = Calcul du résultat complet
 page-readouts-shown = Résultats affichés
 page-state-token = Jeton d’état
 page-theme-auto = automatique

@@ -1251,6 +1251,7 @@ page-demos-nav = Demonstrações
 page-no-script = O Zeta Lab precisa de JavaScript e WebAssembly.
 page-catalogue-failed = Não foi possível carregar o catálogo { $name } ({ $text }); a página continua em inglês.
 page-provisional = { $value } (provisório)
+page-study-progress = Calculando o resultado completo
 page-readouts-shown = Resultados exibidos
 page-state-token = Código de estado
 page-theme-auto = automático

@@ -1248,6 +1248,7 @@ page-demos-nav = 演示
 page-no-script = Zeta Lab 需要 JavaScript 和 WebAssembly。
 page-catalogue-failed = 无法加载{ $name }语言包（{ $text }）；页面仍以英文显示。
 page-provisional = { $value }（暂定）
+page-study-progress = 正在计算完整结果
 page-readouts-shown = 显示的读数
 page-state-token = 状态令牌
 page-theme-auto = 自动
