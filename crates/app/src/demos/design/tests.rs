@@ -255,6 +255,34 @@ fn progressive_updates_show_a_marked_coarse_sweep_then_exactly_the_full_one() {
 }
 
 #[test]
+fn a_held_control_gets_a_coarser_stand_in_and_the_same_full_sweep() {
+    let spec = DesignSpace::declare().spec();
+    let params = |q| resolve_query(&spec, q).0;
+    let mut reference = crate::demos::create("design").unwrap();
+    let want = reference.update(&params("m=420"));
+    let mut demo = crate::demos::create("design").unwrap();
+    demo.set_progressive(true);
+    demo.set_held(true);
+    let held = demo.update(&params("m=420"));
+    let cells = super::progressive::HELD_CELLS;
+    assert!(cells < super::progressive::COARSE_CELLS);
+    assert_eq!(number(&held, "grid_size"), (cells * cells) as f64);
+    assert!(held.figures[0]
+        .description
+        .starts_with(&format!("Provisional: from a coarse {cells} × {cells}")));
+    // Released: the full sweep at rest is the one a non-progressive model computes.
+    demo.set_held(false);
+    while demo.refine(5.0).is_some_and(|done| done < 1.0) {}
+    assert!(demo.provisional().is_empty());
+    let full = demo.update(&params("m=420"));
+    assert!(format!("{:?}", shown(&full)) == format!("{:?}", shown(&want)));
+    // Not held, a move gets the usual coarse grid.
+    let moved = demo.update(&params("m=430"));
+    let coarse = super::progressive::COARSE_CELLS;
+    assert_eq!(number(&moved, "grid_size"), (coarse * coarse) as f64);
+}
+
+#[test]
 fn progressive_updates_keep_unmoved_maps_immediate() {
     let spec = DesignSpace::declare().spec();
     let mut demo = crate::demos::create("design").unwrap();
