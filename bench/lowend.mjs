@@ -13,6 +13,7 @@
 // ZETA_ROOT=dir measures the build in dir instead of dist/.
 // Usage: node bench/lowend.mjs [events-per-slider] [demo,demo…]   (after scripts/build.sh)
 import { resolve } from 'node:path';
+import { countBytes } from '../tests/support/browser.mjs';
 import { quantile, installSlider, fraction, benchArgs, withSite, demoIds, run } from './slide.mjs';
 
 const { events: EVENTS, only: ONLY } = benchArgs(40);
@@ -60,23 +61,7 @@ async function lowEndPage(browser, { network }) {
   await cdp.send('Network.enable');
   await cdp.send('Network.setCacheDisabled', { cacheDisabled: true });
   if (network) await cdp.send('Network.emulateNetworkConditions', SLOW_4G);
-  let bytes = 0;
-  const sent = new Map(); // requestId → wall-clock ms when the page asked for it
-  const finished = []; // {sentAt, bytes}
-  cdp.on('Network.requestWillBeSent', (e) => {
-    if (!sent.has(e.requestId)) sent.set(e.requestId, e.wallTime * 1000);
-  });
-  cdp.on('Network.loadingFinished', (e) => {
-    bytes += e.encodedDataLength;
-    finished.push({ sentAt: sent.get(e.requestId) ?? -Infinity, bytes: e.encodedDataLength });
-  });
-  /**
-   * Bytes of the requests the page made before wall-clock time `ms` (its first plot), so
-   * that what it fetches at idle right after the plot is not counted while the benchmark's
-   * poll catches up.
-   */
-  const bytesSentBefore = (ms) => finished.filter((f) => f.sentAt < ms).reduce((n, f) => n + f.bytes, 0);
-  return { context, page, cdp, bytes: () => bytes, bytesSentBefore };
+  return { context, page, cdp, ...countBytes(cdp) };
 }
 
 async function main() {

@@ -1,11 +1,11 @@
 // Issue 13's download budget, enforced: a demo's page transfers at most 200 KB before its
 // first plot (brotli, as a static host serves it, headers included; cold cache), counted as
-// bench/lowend.mjs counts it, without its network and CPU throttling. The README's low-end
+// bench/lowend.mjs counts it (countBytes), without its network and CPU throttling. The README's low-end
 // table reports the same bytes; integrators has the least room.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { serve } from './support/server.mjs';
-import { launch } from './support/browser.mjs';
+import { countBytes, launch } from './support/browser.mjs';
 
 /** Bytes (1 KB = 1000 B) a page may transfer before its first plot. */
 const BUDGET = 200_000;
@@ -30,18 +30,13 @@ async function bytesBeforeFirstPlot(url) {
   const cdp = await context.newCDPSession(page);
   await cdp.send('Network.enable');
   await cdp.send('Network.setCacheDisabled', { cacheDisabled: true });
-  const sent = new Map();
-  const finished = [];
-  cdp.on('Network.requestWillBeSent', (e) => {
-    if (!sent.has(e.requestId)) sent.set(e.requestId, e.wallTime * 1000);
-  });
-  cdp.on('Network.loadingFinished', (e) => finished.push({ sentAt: sent.get(e.requestId) ?? -Infinity, bytes: e.encodedDataLength }));
+  const counted = countBytes(cdp);
   await page.goto(url);
   await page.waitForFunction(() => performance.getEntriesByName('zeta:first-draw').length > 0, null, { timeout: 30000 });
   const wall = await page.evaluate(() => performance.timeOrigin + performance.getEntriesByName('zeta:first-draw')[0].startTime);
   // Let the responses of requests made before the plot finish being counted.
   await page.waitForLoadState('networkidle');
-  const bytes = finished.filter((f) => f.sentAt < wall).reduce((n, f) => n + f.bytes, 0);
+  const bytes = counted.bytesSentBefore(wall);
   await context.close();
   return bytes;
 }

@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
-import { open, readout, canvasFingerprint, waitForReadout } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, overlayInk, waitForReadout } from './support/browser.mjs';
 import { typeValue } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
@@ -41,13 +41,7 @@ test('play animates the schematic and the time cursor; Space pauses; the scrubbe
   await page.waitForFunction(() => parseFloat(document.querySelector('.anim-time').textContent.slice(4)) > 0.3);
   assert.notDeepEqual(await canvasFingerprint(page, 'schematic'), still);
   // A dashed cursor is drawn on the response plot's overlay.
-  const ink = await page.evaluate(() => {
-    const o = document.querySelector('[data-plot-wrap="response"] canvas.overlay');
-    const d = o.getContext('2d').getImageData(0, 0, o.width, o.height).data;
-    let n = 0;
-    for (let i = 3; i < d.length; i += 4) if (d[i] > 0) n++;
-    return n;
-  });
+  const ink = await overlayInk(page, 'response');
   assert.ok(ink > 20, `time cursor drawn (${ink} px)`);
   await page.focus('main');
   await page.keyboard.press('Space');
@@ -88,15 +82,8 @@ test('a crosshair follows the pointer: one at a time, none once it leaves', asyn
     const plot = page.locator('canvas[data-plot]').first();
     await plot.scrollIntoViewIfNeeded();
     const box = await plot.boundingBox();
-    const ink = () =>
-      page.evaluate(() => {
-        const o = document.querySelector('canvas.overlay');
-        if (!o.width) return 0; // an empty overlay is 0 x 0
-        const d = o.getContext('2d').getImageData(0, 0, o.width, o.height).data;
-        let n = 0;
-        for (let i = 3; i < d.length; i += 4) if (d[i]) n++;
-        return n;
-      });
+    const key = await plot.getAttribute('data-plot');
+    const ink = () => overlayInk(page, key);
     const inks = [];
     for (const [fx, fy] of [[0.4, 0.4], [0.6, 0.6], [0.5, 0.3]]) {
       await page.mouse.move(box.x + box.width * fx, box.y + box.height * fy);

@@ -5,7 +5,7 @@
 // natively for the parameters then current.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, canvasFingerprint, readout, drawn } from './support/browser.mjs';
+import { open, canvasFingerprint, readout, drawn, overlayInk } from './support/browser.mjs';
 import { goldenState, assertReadoutsMatch } from './support/golden.mjs';
 import { readFileSync } from 'node:fs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -142,10 +142,11 @@ test('uncertainty: a moved tolerance shows the first 1000 draws marked provision
 });
 
 test('a provisional plot shows how far its full study has come, and the bar goes with the mark', { skip }, async () => {
-  const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty`);
+  // 100 000 draws, 6x slower: the run takes several of the bar's 100 ms steps (the default
+  // 10 000 could finish within one, and then no part done was ever shown).
+  const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&N=100000`);
   await settled(page);
   await page.evaluate(() => document.querySelector('[data-plot-wrap="hist"]').scrollIntoView({ block: 'center' }));
-  // Slower, so the run of 10 000 draws takes several of the bar's 100 ms steps.
   const cdp = await context.newCDPSession(page);
   await cdp.send('Emulation.setCPUThrottlingRate', { rate: 6 });
   await page.evaluate(() => {
@@ -431,19 +432,12 @@ test('a paused time cursor is on every time plot again once the plots out of vie
   await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: 10000 });
   await drawn(page);
   // Ink on each plot's overlay (where the cursor is drawn), by plot key.
-  const cursors = () =>
-    page.evaluate(() =>
-      Object.fromEntries(
-        [...document.querySelectorAll('[data-plot-wrap]')].map((w) => {
-          const c = w.querySelector('canvas:not([data-plot])');
-          if (!c.width) return [w.dataset.plotWrap, 0]; // an empty overlay is 0 x 0
-          const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-          let n = 0;
-          for (let i = 3; i < d.length; i += 4) if (d[i]) n++;
-          return [w.dataset.plotWrap, n];
-        }),
-      ),
-    );
+  const keys = await page.$$eval('[data-plot-wrap]', (ws) => ws.map((w) => w.dataset.plotWrap));
+  const cursors = async () => {
+    const out = {};
+    for (const k of keys) out[k] = await overlayInk(page, k);
+    return out;
+  };
   await page.evaluate(() => {
     const scrub = document.querySelector('input[type=range]:not([data-key])');
     scrub.value = '500';

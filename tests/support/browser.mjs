@@ -69,6 +69,43 @@ export async function fullShot(page, path) {
   await paint(false);
 }
 
+/**
+ * Counts what the page behind CDP session `cdp` transfers (encoded bytes, headers
+ * included; the caller enables `Network`): `bytes()`, everything so far, and
+ * `bytesSentBefore(ms)`, the requests the page made before wall-clock time `ms` (its first
+ * plot), so what it fetches right after that is not counted while a poll catches up.
+ * The low-end benchmark and the budget test count with it.
+ */
+export function countBytes(cdp) {
+  let bytes = 0;
+  const sent = new Map(); // requestId → wall-clock ms when the page asked for it
+  const finished = []; // {sentAt, bytes}
+  cdp.on('Network.requestWillBeSent', (e) => {
+    if (!sent.has(e.requestId)) sent.set(e.requestId, e.wallTime * 1000);
+  });
+  cdp.on('Network.loadingFinished', (e) => {
+    bytes += e.encodedDataLength;
+    finished.push({ sentAt: sent.get(e.requestId) ?? -Infinity, bytes: e.encodedDataLength });
+  });
+  const bytesSentBefore = (ms) => finished.filter((f) => f.sentAt < ms).reduce((n, f) => n + f.bytes, 0);
+  return { bytes: () => bytes, bytesSentBefore };
+}
+
+/**
+ * Inked pixels on plot `key`'s overlay (the time cursor, a crosshair); 0 when it is empty
+ * (0 x 0).
+ */
+export function overlayInk(page, key) {
+  return page.evaluate((key) => {
+    const c = document.querySelector(`[data-plot-wrap="${key}"] canvas.overlay`);
+    if (!c.width) return 0;
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 3; i < d.length; i += 4) if (d[i]) n++;
+    return n;
+  }, key);
+}
+
 /** Waits until every readout has been filled in once. */
 export async function waitForReadouts(page) {
   await page.waitForFunction(() => {
