@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
-import { open, SHOTS, fullShot } from './support/browser.mjs';
+import { open, SHOTS, fullShot, drawn } from './support/browser.mjs';
 import { useSession, server, browser, demoIds } from './support/session.mjs';
 
 const require = createRequire(import.meta.url);
@@ -119,6 +119,9 @@ test('touch: a tap on a plot shows the values under the finger; sliders move by 
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes`, { hasTouch: true, isMobile: true, viewport: { width: 360, height: 740 } });
   const plot = page.locator('canvas[data-plot="response"]');
   await plot.scrollIntoViewIfNeeded();
+  // A plot just scrolled to is drawn once the page has seen it come into view (and just
+  // after the full module took over, once the catch-up has redrawn it): tap what is shown.
+  await drawn(page);
   const box = await plot.boundingBox();
   await page.touchscreen.tap(box.x + box.width * 0.5, box.y + box.height * 0.5);
   await page.waitForSelector('[data-plot-wrap="response"] .probe:not([hidden])');

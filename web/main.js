@@ -123,6 +123,7 @@ const LATER = {
   sound: () => import('./sound.js'),
   tour: () => import('./tour.js'),
   embed: () => import('./embed.js'),
+  studies: () => import('./studies.js'),
 };
 const loading = new Map();
 function later(name) {
@@ -736,6 +737,8 @@ function markProvisional(keys) {
   }
   if (keys.length) {
     showStudyProgress(0, true); // an update starts the study again
+    // The full study goes to the worker (studies.js); the page's slices do the rest.
+    if (app.module === 'full') withModule('studies', (m) => m.offload(app, requestDraw, scheduleRefine, showStudyProgress));
     scheduleRefine();
   }
 }

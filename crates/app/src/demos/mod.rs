@@ -91,6 +91,24 @@ pub trait Demo {
     /// Keys of the readouts and plots of the last [`Demo::recompute`] that show a coarse,
     /// provisional study while the full one runs (empty when everything shown is final).
     fn provisional(&self) -> Vec<&'static str>;
+    /// Whether the page runs the full study in a worker (`on`): [`Demo::refine`] then leaves
+    /// it alone and the page hands the worker's result to [`Demo::adopt_study`].
+    #[cfg(not(feature = "first"))]
+    fn set_worker(&mut self, on: bool);
+    /// In a page's worker: computes up to about `budget_ms` of the pending full study
+    /// (started by a progressive [`Demo::recompute`] for the page's inputs) without showing
+    /// it. `None`: no study pending (the demo has none, or these inputs need none);
+    /// `Some(f)`: that fraction done, `Some(1.0)` when [`Demo::export_study`] can send it.
+    #[cfg(not(feature = "first"))]
+    fn advance_study(&mut self, budget_ms: f64) -> Option<f64>;
+    /// In a page's worker: the finished pending study as bytes for [`Demo::adopt_study`].
+    #[cfg(not(feature = "first"))]
+    fn export_study(&self) -> Option<Vec<u8>>;
+    /// In the page: takes in a study a worker computed ([`Demo::export_study`]) if it is
+    /// for the pending study's inputs, which then finishes as [`Demo::refine`] finishes it
+    /// (`Some(1.0)`); `None`, nothing changed, for a study of inputs since moved on.
+    #[cfg(not(feature = "first"))]
+    fn adopt_study(&mut self, bytes: &[u8]) -> Option<f64>;
 }
 
 /// A demo in the one shape every demo has: a declaration (parameters and readouts as
@@ -162,6 +180,28 @@ pub trait Model: 'static {
     fn provisional(&self) -> Vec<&'static str> {
         Vec::new()
     }
+
+    /// See [`Demo::set_worker`].
+    #[cfg(not(feature = "first"))]
+    fn set_worker(&mut self, _on: bool) {}
+
+    /// See [`Demo::advance_study`].
+    #[cfg(not(feature = "first"))]
+    fn advance_study(&mut self, _budget_ms: f64) -> Option<f64> {
+        None
+    }
+
+    /// See [`Demo::export_study`].
+    #[cfg(not(feature = "first"))]
+    fn export_study(&self) -> Option<Vec<u8>> {
+        None
+    }
+
+    /// See [`Demo::adopt_study`].
+    #[cfg(not(feature = "first"))]
+    fn adopt_study(&mut self, _bytes: &[u8]) -> Option<f64> {
+        None
+    }
 }
 
 /// A [`Model`] with its declaration, as a [`Demo`] the registry can hold.
@@ -181,6 +221,18 @@ impl<M: Model> Typed<M> {
         let r = self.model.step(&p);
         self.tour = r.as_ref().and_then(|r| self.model.tour(&p, r));
         self.last = r.map(|r| (p, r));
+    }
+
+    /// After a full study finished (`done` is `Some(1.0)`): the model now holds it, which
+    /// figures read, so it steps again so that a figure built before the next recompute
+    /// (an export) pairs it with its own results. Returns `done`.
+    fn keep_finished(&mut self, done: Option<f64>) -> Option<f64> {
+        if done.is_some_and(|f| f >= 1.0) {
+            if let Some((p, _)) = self.last.take() {
+                self.step_and_keep(p);
+            }
+        }
+        done
     }
 
     /// Wraps `model` with its declaration.
@@ -246,14 +298,32 @@ impl<M: Model> Demo for Typed<M> {
 
     fn refine(&mut self, budget_ms: f64) -> Option<f64> {
         let done = self.model.refine(budget_ms);
-        // The model now holds the full study, which figures read: step again so that a
-        // figure built before the next recompute (an export) pairs it with its own results.
-        if done.is_some_and(|f| f >= 1.0) {
-            if let Some((p, _)) = self.last.take() {
-                self.step_and_keep(p);
-            }
-        }
-        done
+        self.keep_finished(done)
+    }
+
+    #[cfg(not(feature = "first"))]
+    #[cfg(not(feature = "first"))]
+    fn set_worker(&mut self, on: bool) {
+        self.model.set_worker(on);
+    }
+
+    #[cfg(not(feature = "first"))]
+    #[cfg(not(feature = "first"))]
+    fn advance_study(&mut self, budget_ms: f64) -> Option<f64> {
+        self.model.advance_study(budget_ms)
+    }
+
+    #[cfg(not(feature = "first"))]
+    #[cfg(not(feature = "first"))]
+    fn export_study(&self) -> Option<Vec<u8>> {
+        self.model.export_study()
+    }
+
+    #[cfg(not(feature = "first"))]
+    #[cfg(not(feature = "first"))]
+    fn adopt_study(&mut self, bytes: &[u8]) -> Option<f64> {
+        let done = self.model.adopt_study(bytes);
+        self.keep_finished(done)
     }
 
     fn provisional(&self) -> Vec<&'static str> {

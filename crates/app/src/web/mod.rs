@@ -7,15 +7,20 @@
 //! - `draw`: how a session builds and draws its figures;
 //! - `plots`: what the page asks of one drawn plot (pointer, exports);
 //! - `translate`: the spec, figures and notices in the page's language;
-//! - `result`: what `Session::set` and `Session::update` return.
+//! - `result`: what `Session::set` and `Session::update` return;
+//! - `study`: [`Study`], a demo's full study computed in the page's worker.
 
 mod draw;
 mod plots;
 mod result;
 mod session;
+#[cfg(not(feature = "first"))]
+mod study;
 mod translate;
 
 pub use session::Session;
+#[cfg(not(feature = "first"))]
+pub use study::Study;
 
 use crate::demos;
 use crate::theme::Theme;

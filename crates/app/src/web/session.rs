@@ -244,6 +244,24 @@ impl Session {
         self.demo.refine(budget_ms)
     }
 
+    /// Whether the page computes the full study in its worker (`on`): [`Session::refine`]
+    /// then leaves it alone and the worker's result comes in through
+    /// [`Session::adopt_study`]. Not in the first module (feature `first`), which has no worker.
+    #[cfg(not(feature = "first"))]
+    #[wasm_bindgen(js_name = setWorker)]
+    pub fn set_worker(&mut self, on: bool) {
+        self.demo.set_worker(on);
+    }
+
+    /// Takes in the worker's finished study ([`Study::result`](super::Study::result)):
+    /// `1` when it was for the pending study's inputs (then call `update`), `undefined`
+    /// when those inputs have moved on (nothing changes).
+    #[cfg(not(feature = "first"))]
+    #[wasm_bindgen(js_name = adoptStudy)]
+    pub fn adopt_study(&mut self, bytes: &[u8]) -> Option<f64> {
+        self.demo.adopt_study(bytes)
+    }
+
     /// Draws the schematic at time `t` \[s\]; returns its text alternative.
     #[wasm_bindgen(js_name = drawSchematic)]
     pub fn draw_schematic(&self, t: f64, scale: f64, dark: bool) -> Result<String, JsError> {

@@ -80,6 +80,7 @@ pub struct McConfig {
 /// Per-draw results, one entry per draw (reusable: vectors are resized, not reallocated,
 /// when the draw count is unchanged). NaN where undefined or invalid.
 #[derive(Debug, Clone, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct McSamples {
     /// Damping ratio \[-\].
     pub zeta: Vec<f64>,

@@ -311,6 +311,7 @@ pub struct KcSweepConfig {
 /// Reusable output of [`sweep_kc_into`]: one value per grid point, row-major with `c`
 /// along rows: index `i_c·k.len() + i_k`. NaN where undefined.
 #[derive(Debug, Clone, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct KcMaps {
     /// Settling time of a release from rest \[s\].
     pub settling_time: Vec<f64>,

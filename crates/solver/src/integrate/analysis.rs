@@ -360,6 +360,7 @@ impl Default for FitWindow {
 
 /// One run of a convergence study.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ConvergencePoint {
     /// Step size used (s).
     pub h: f64,
@@ -371,6 +372,7 @@ pub struct ConvergencePoint {
 
 /// Errors for a list of step sizes and the order fitted to them.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ConvergenceStudy {
     /// One entry per step size, in the order given.
     pub points: Vec<ConvergencePoint>,

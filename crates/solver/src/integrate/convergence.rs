@@ -260,6 +260,7 @@ impl NestedGrids {
 
 /// How one level of a nested study ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum RunStatus {
     /// The error was measured.
     Measured,
@@ -271,6 +272,7 @@ pub enum RunStatus {
 
 /// A nested-grid convergence study and how each level ended.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct NestedStudy {
     /// Errors per level and the fitted order.
     pub study: ConvergenceStudy,

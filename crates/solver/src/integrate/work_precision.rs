@@ -40,6 +40,7 @@ pub const MAX_STABILITY_STEPS: f64 = 0.01;
 
 /// One adaptive run of a sweep.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct WorkPoint {
     /// The tolerance of the run.
     pub tolerance: f64,

@@ -8,6 +8,7 @@
 use super::cache::SweepKey;
 use super::comfort::{comfort_rows, Comfort};
 use super::{DesignSpace, Stopwatch};
+use crate::demos::progressive::StudyJob;
 use std::cell::OnceCell;
 use zeta_solver::design::sweep::{
     sweep_kc_into, sweep_kc_rows, sweep_kc_start, KcMaps, KcSweepConfig,
@@ -41,6 +42,52 @@ pub(super) struct SweepJob {
     next_row: usize,
     /// Compute time so far \[ms\].
     ms: f64,
+}
+
+impl StudyJob for SweepJob {
+    /// The five maps, the comfort map and the compute time \[ms\].
+    type Output = (KcMaps, Vec<f64>, f64);
+
+    fn key_text(&self) -> String {
+        format!("{:?}", self.key)
+    }
+
+    fn advance(&mut self, budget_ms: f64) -> f64 {
+        let watch = Stopwatch::start();
+        let rows = self.c_axis.len();
+        while self.next_row < rows {
+            let row = self.next_row;
+            let axes = (&self.k_axis[..], &self.c_axis[..]);
+            sweep_kc_rows(axes.0, axes.1, row..row + 1, &self.cfg, &mut self.maps);
+            comfort_rows(&self.ride, &self.key, axes, row..row + 1, &mut self.comfort);
+            self.next_row += 1;
+            if watch.elapsed_ms() >= budget_ms {
+                break;
+            }
+        }
+        self.ms += watch.elapsed_ms();
+        self.next_row as f64 / rows.max(1) as f64
+    }
+
+    fn finished(&self) -> bool {
+        self.next_row >= self.c_axis.len()
+    }
+
+    fn output(&self) -> Self::Output {
+        (self.maps.clone(), self.comfort.clone(), self.ms)
+    }
+
+    fn take_output(&mut self, (maps, comfort, ms): Self::Output) -> bool {
+        let cells = self.k_axis.len() * self.c_axis.len();
+        let sizes = [&maps.settling_time, &maps.peak_rebound, &maps.accel_rms];
+        let more = [&maps.peak_transmissibility, &maps.zeta, &comfort];
+        if sizes.iter().chain(&more).any(|v| v.len() != cells) {
+            return false;
+        }
+        (self.maps, self.comfort, self.ms) = (maps, comfort, ms);
+        self.next_row = self.c_axis.len();
+        true
+    }
 }
 
 /// Cell centres of `n` cells over `(lo, hi)`.
@@ -96,32 +143,13 @@ impl DesignSpace {
         }
     }
 
-    /// Computes rows of the pending full sweep for about `budget_ms` (at least one row).
-    /// Returns the fraction done, or `None` when no sweep is pending; at 1 the full maps
-    /// have replaced the coarse ones.
+    /// Computes rows of the pending full sweep for about `budget_ms` (at least one row),
+    /// unless the page's worker computes it. Returns the fraction done, or `None` when no
+    /// sweep is pending here; at 1 the full maps have replaced the coarse ones.
     pub(super) fn refine_sweep(&mut self, budget_ms: f64) -> Option<f64> {
-        let job = self.progress.job.as_mut()?;
-        let watch = Stopwatch::start();
-        let rows = job.c_axis.len();
-        while job.next_row < rows {
-            let row = job.next_row;
-            sweep_kc_rows(
-                &job.k_axis,
-                &job.c_axis,
-                row..row + 1,
-                &job.cfg,
-                &mut job.maps,
-            );
-            let axes = (&job.k_axis[..], &job.c_axis[..]);
-            comfort_rows(&job.ride, &job.key, axes, row..row + 1, &mut job.comfort);
-            job.next_row += 1;
-            if watch.elapsed_ms() >= budget_ms {
-                break;
-            }
-        }
-        job.ms += watch.elapsed_ms();
-        if job.next_row < rows {
-            return Some(job.next_row as f64 / rows.max(1) as f64);
+        let done = self.progress.refine(budget_ms)?;
+        if done < 1.0 {
+            return Some(done);
         }
         let job = self.progress.job.take()?;
         // Shown only if computed for the inputs still current (always so here: a step

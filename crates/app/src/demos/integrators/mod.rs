@@ -112,6 +112,29 @@ impl Model for Integrators {
         }
     }
 
+    #[cfg(not(feature = "first"))]
+    fn set_worker(&mut self, worker: bool) {
+        self.progress.set_worker(worker);
+    }
+
+    #[cfg(not(feature = "first"))]
+    fn advance_study(&mut self, budget_ms: f64) -> Option<f64> {
+        self.progress.advance(budget_ms)
+    }
+
+    #[cfg(not(feature = "first"))]
+    fn export_study(&self) -> Option<Vec<u8>> {
+        self.progress.export()
+    }
+
+    #[cfg(not(feature = "first"))]
+    fn adopt_study(&mut self, bytes: &[u8]) -> Option<f64> {
+        match self.progress.import(bytes) {
+            true => self.refine_study(0.0),
+            false => None,
+        }
+    }
+
     fn provisional(&self) -> Vec<&'static str> {
         let mut keys = self.progress.provisional(&progressive::PROVISIONAL);
         if self.cache.runs.pending() {

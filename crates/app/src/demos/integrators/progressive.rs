@@ -89,12 +89,8 @@ impl StudyJob {
         })
     }
 
-    fn finished(&self) -> bool {
-        self.next >= SLICES
-    }
-
     /// Computes the next slice: one fixed-step method's study, or one DP45 run.
-    fn advance(&mut self) {
+    fn step(&mut self) {
         let problem = Problem::new(self.sys, &self.p, self.limits);
         if self.next < FIXED.len() {
             if let Some(s) = fixed_study(self.next, &problem, self.grids, FULL) {
@@ -125,24 +121,56 @@ impl StudyJob {
     }
 }
 
-impl Integrators {
-    /// Continues the pending full study for about `budget_ms` (at least one slice). Returns
-    /// the fraction done, or `None` when no study is pending; at 1 the full study has
-    /// replaced the coarse one.
-    pub(super) fn refine_study(&mut self, budget_ms: f64) -> Option<f64> {
-        if cfg!(feature = "first") {
-            return None;
-        }
-        let job = self.progress.job.as_mut()?;
+impl crate::demos::progressive::StudyJob for StudyJob {
+    /// Each fixed-step method's study and DP45's runs.
+    type Output = (Vec<NestedStudy>, Option<Vec<WorkPoint>>);
+
+    fn key_text(&self) -> String {
+        format!("{:?}", self.key)
+    }
+
+    fn advance(&mut self, budget_ms: f64) -> f64 {
         let watch = Stopwatch::start();
-        while !job.finished() {
-            job.advance();
+        while !self.finished() {
+            self.step();
             if watch.elapsed_ms() >= budget_ms {
                 break;
             }
         }
-        if !job.finished() {
-            return Some(job.next as f64 / SLICES as f64);
+        self.next.min(SLICES) as f64 / SLICES as f64
+    }
+
+    fn finished(&self) -> bool {
+        self.next >= SLICES
+    }
+
+    fn output(&self) -> Self::Output {
+        (self.fixed.clone(), self.dp45.clone())
+    }
+
+    fn take_output(&mut self, (fixed, dp45): Self::Output) -> bool {
+        let fits = dp45
+            .as_ref()
+            .is_none_or(|runs| runs.len() <= FULL.tols.len());
+        if fixed.len() != FIXED.len() || !fits {
+            return false;
+        }
+        (self.fixed, self.dp45, self.next) = (fixed, dp45, SLICES);
+        true
+    }
+}
+
+impl Integrators {
+    /// Continues the pending full study for about `budget_ms` (at least one slice), unless
+    /// the page's worker computes it. Returns the fraction done, or `None` when no study is
+    /// pending here; at 1 the full study has replaced the coarse one.
+    pub(super) fn refine_study(&mut self, budget_ms: f64) -> Option<f64> {
+        if cfg!(feature = "first") {
+            return None;
+        }
+        let done = self.progress.refine(budget_ms)?;
+        if done < 1.0 {
+            return Some(done);
         }
         let study = self.progress.job.take()?.into_study()?;
         // Shown only if computed for the inputs still current (a step with other inputs

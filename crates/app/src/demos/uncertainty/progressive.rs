@@ -8,6 +8,7 @@
 
 use super::cache::McKey;
 use super::{Stopwatch, Uncertainty};
+use crate::demos::progressive::StudyJob;
 use zeta_solver::design::monte_carlo::{McConfig, McRun, McSamples, MAX_DRAWS};
 
 /// Draws of the coarse run shown while the full one runs.
@@ -35,6 +36,66 @@ pub(super) struct McJob {
     samples: McSamples,
     /// Compute time so far \[ms\].
     ms: f64,
+    /// Whether the samples were drawn elsewhere (the page's worker), the run left as it was.
+    taken: bool,
+}
+
+impl StudyJob for McJob {
+    /// The samples and the compute time \[ms\].
+    type Output = (McSamples, f64);
+
+    fn key_text(&self) -> String {
+        format!("{:?}", self.key)
+    }
+
+    fn advance(&mut self, budget_ms: f64) -> f64 {
+        let watch = Stopwatch::start();
+        while !self.finished() {
+            let upto = self.run.done() + SLICE;
+            self.run.advance(&self.cfg, &mut self.samples, upto);
+            if watch.elapsed_ms() >= budget_ms {
+                break;
+            }
+        }
+        self.ms += watch.elapsed_ms();
+        match self.finished() {
+            true => 1.0,
+            false => self.run.done() as f64 / self.run.total().max(1) as f64,
+        }
+    }
+
+    fn finished(&self) -> bool {
+        self.taken || self.run.finished()
+    }
+
+    fn output(&self) -> Self::Output {
+        (self.samples.clone(), self.ms)
+    }
+
+    fn take_output(&mut self, (samples, ms): Self::Output) -> bool {
+        let n = self.run.total();
+        let to = &mut self.samples;
+        let pairs = [
+            (&mut to.zeta, &samples.zeta),
+            (&mut to.wn, &samples.wn),
+            (&mut to.f0, &samples.f0),
+            (&mut to.q, &samples.q),
+            (&mut to.bandwidth, &samples.bandwidth),
+            (&mut to.settling_time, &samples.settling_time),
+        ];
+        if pairs.iter().any(|(_, from)| from.len() != n) {
+            return false;
+        }
+        // Into the buffers this job holds (sized once for the largest run), so the page's
+        // memory stays as it was.
+        for (to, from) in pairs {
+            to.clear();
+            to.extend_from_slice(from);
+        }
+        (to.invalid, to.redraws) = (samples.invalid, samples.redraws);
+        (self.ms, self.taken) = (ms, true);
+        true
+    }
 }
 
 /// Draws per slice between clock reads.
@@ -55,6 +116,7 @@ impl Uncertainty {
             run,
             samples,
             ms: 0.0,
+            taken: false,
         });
     }
 
@@ -65,21 +127,13 @@ impl Uncertainty {
         }
     }
 
-    /// Continues the pending full run for about `budget_ms`. Returns the fraction done, or
-    /// `None` when no run is pending; at 1 the full samples have replaced the coarse ones.
+    /// Continues the pending full run for about `budget_ms`, unless the page's worker
+    /// draws it. Returns the fraction done, or `None` when no run is pending here; at 1 the
+    /// full samples have replaced the coarse ones.
     pub(super) fn refine_run(&mut self, budget_ms: f64) -> Option<f64> {
-        let job = self.progress.job.as_mut()?;
-        let watch = Stopwatch::start();
-        while !job.run.finished() {
-            let upto = job.run.done() + SLICE;
-            job.run.advance(&job.cfg, &mut job.samples, upto);
-            if watch.elapsed_ms() >= budget_ms {
-                break;
-            }
-        }
-        job.ms += watch.elapsed_ms();
-        if !job.run.finished() {
-            return Some(job.run.done() as f64 / job.run.total().max(1) as f64);
+        let done = self.progress.refine(budget_ms)?;
+        if done < 1.0 {
+            return Some(done);
         }
         let job = self.progress.job.take()?;
         // Shown only if drawn for the inputs still current (a step with other inputs drops
