@@ -145,9 +145,16 @@ test('one theme decision: system, forced, projector, and following the system', 
           await page.waitForFunction((t) => document.documentElement.dataset.theme === t, other);
           assert.equal(await bg(page), other === 'dark' ? DARK : LIGHT);
         } else if (w === 1280) {
-          // A forced theme holds when the system changes.
+          // A forced theme holds when the system changes. The page hears of the change at
+          // its next rendering (a 'change' event: preload.js's listener first, its list being
+          // older); wait for that rather than 100 ms, which a slow machine could pass before it.
+          await page.evaluate(() => {
+            window.__schemeChanged = new Promise((done) => {
+              window.matchMedia('(prefers-color-scheme: dark)').addEventListener('change', () => done(), { once: true });
+            });
+          });
           await page.emulateMedia({ colorScheme: c.scheme === 'dark' ? 'light' : 'dark' });
-          await page.waitForTimeout(100);
+          await page.evaluate(() => window.__schemeChanged);
           assert.equal(await page.getAttribute('html', 'data-theme'), c.theme, `${c.name} after a system change`);
         }
         assert.deepEqual(errors, []);

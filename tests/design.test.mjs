@@ -4,7 +4,7 @@
 // picking designs by clicking the map and the Pareto front, and the sweep's compute time.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS, fullShot } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, drawn, waitForUrlParam, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, assertReadoutsMatch, assertFiguresMatch, stateSlug } from './support/golden.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
@@ -43,8 +43,14 @@ for (const state of golden('design').states) {
   });
 }
 
-/** Everything observable: readouts and the three canvases. */
+/**
+ * Everything observable: readouts and the three canvases, once the last input's frame is
+ * drawn. The callers wait for the address, written 150 ms after the input: the frame that
+ * writes the readouts usually comes first, but not surely on a busy machine (the
+ * fingerprints waited for it, the readouts, read first, did not).
+ */
 async function state(page) {
+  await drawn(page);
   const values = await page.$$eval('[data-readout]', (els) => els.map((e) => `${e.dataset.readout}=${e.dataset.value}`).join('&'));
   const prints = [];
   for (const plot of PLOTS) prints.push((await canvasFingerprint(page, plot)).join(':'));

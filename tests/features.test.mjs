@@ -10,6 +10,17 @@ import { server, browser, useSession } from './support/session.mjs';
 
 useSession();
 
+/** How long the full module (350 KB of wasm) may take to load and take over on a slow CI machine. */
+const FULL_MODULE_MS = 30000;
+
+/** Resolves after `n` animation frames of the page. */
+function frames(page, n) {
+  return page.evaluate((n) => new Promise((done) => {
+    const step = (left) => (left ? requestAnimationFrame(() => step(left - 1)) : done());
+    step(n);
+  }), n);
+}
+
 test('presets set their values; reset restores the defaults', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes&zeta=0.5&wn=9`);
   await page.click('button.preset:has-text("Critically damped")');
@@ -47,10 +58,15 @@ test('play animates the schematic and the time cursor; Space pauses; the scrubbe
   await page.keyboard.press('Space');
   assert.equal(await page.getAttribute('button.play', 'aria-pressed'), 'false');
   const t1 = await page.textContent('.anim-time');
+  // Still paused after a while and after several animation frames (the clock moves once a
+  // frame while playing: on a slow machine 300 ms may hold only a frame or two).
   await page.waitForTimeout(300);
+  await frames(page, 10);
   assert.equal(await page.textContent('.anim-time'), t1, 'paused');
   await page.locator('.anim-bar input[type=range]').fill('500');
-  await page.waitForFunction(() => document.querySelector('.anim-time').textContent !== 't = 0.00 s');
+  // The clock leaves the paused time (it left 0 s while playing: waiting for that proved
+  // nothing about the seek).
+  await page.waitForFunction((paused) => document.querySelector('.anim-time').textContent !== paused, t1);
   assert.match(await page.getAttribute('.schematic figcaption', 'class'), /visually-hidden/);
   assert.match(await page.textContent('.schematic figcaption'), /displaced/);
   assert.deepEqual(errors, []);
@@ -61,7 +77,7 @@ test('hovering a plot shows the values under the pointer', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=regimes`);
   // A hover shows values once the full module has taken over (a first module has no
   // probe: tests/first-module.test.mjs); one move before that showed nothing, at random.
-  await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: 10000 });
+  await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: FULL_MODULE_MS });
   await page.locator('canvas[data-plot="response"]').scrollIntoViewIfNeeded();
   const box = await page.locator('canvas[data-plot="response"]').boundingBox();
   await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
@@ -78,16 +94,28 @@ test('a crosshair follows the pointer: one at a time, none once it leaves', asyn
   // piled up as the pointer moved.
   for (const id of ['design', 'regimes']) {
     const { page, errors, context } = await open(browser, `${server.url}?demo=${id}`);
-    await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: 10000 });
+    await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: FULL_MODULE_MS });
     const plot = page.locator('canvas[data-plot]').first();
     await plot.scrollIntoViewIfNeeded();
     const box = await plot.boundingBox();
     const key = await plot.getAttribute('data-plot');
     const ink = () => overlayInk(page, key);
     const inks = [];
+    const tip = `[data-plot-wrap="${key}"] .probe`;
+    let shown = null;
     for (const [fx, fy] of [[0.4, 0.4], [0.6, 0.6], [0.5, 0.3]]) {
       await page.mouse.move(box.x + box.width * fx, box.y + box.height * fy);
-      await page.waitForSelector('.probe:not([hidden])');
+      // The read-out for this position: after the first move the tip is already visible,
+      // and Chromium hands a mouse move to the page with the next animation frame, so
+      // "visible" alone let the ink be read before the crosshair moved.
+      await page.waitForFunction(
+        ([sel, old]) => {
+          const t = document.querySelector(sel);
+          return !t.hidden && t.textContent !== old;
+        },
+        [tip, shown],
+      );
+      shown = await page.textContent(tip);
       inks.push(await ink());
     }
     // One crosshair (two lines across the plot, rings at the curves) each time: about the
@@ -95,6 +123,8 @@ test('a crosshair follows the pointer: one at a time, none once it leaves', asyn
     assert.ok(inks[0] > 100, `${id}: a crosshair is drawn (${inks})`);
     for (const n of inks.slice(1)) assert.ok(Math.abs(n - inks[0]) < 0.5 * inks[0], `${id}: one crosshair at a time (${inks})`);
     await page.mouse.move(2, 2);
+    // The pointer's leaving hides the read-out and erases the crosshair in one handler.
+    await page.waitForSelector(tip, { state: 'hidden' });
     assert.equal(await ink(), 0, `${id}: no crosshair once the pointer left`);
     assert.deepEqual(errors, []);
     await context.close();

@@ -65,7 +65,15 @@ test('?demo=regimes draws from the first module, then switches to the full one u
   // hovering the plot shows nothing and fails nowhere.
   const plot = await page.locator('canvas[data-plot="response"]').boundingBox();
   const middle = [plot.x + plot.width * 0.5, plot.y + plot.height * 0.5];
+  // Chromium hands a mouse move to the page with the next animation frame: wait until the
+  // plot has had it (the page's own handler runs first), so the check below is not vacuous.
+  await page.evaluate(() => {
+    window.__moved = new Promise((done) => {
+      document.querySelector('canvas[data-plot="response"]').addEventListener('pointermove', () => done(), { once: true });
+    });
+  });
   await page.mouse.move(...middle);
+  await page.evaluate(() => window.__moved);
   assert.equal(await page.isVisible('[data-plot-wrap="response"] .probe'), false);
   await page.mouse.move(0, 0);
   await page.focus('#p-zeta');
@@ -114,6 +122,13 @@ test('a drag in progress when the full module arrives is not interrupted', async
     assert.notEqual(now, null);
     last = now;
   }
+  // The last move's frame drawn (the number box follows the move at once, the readout on
+  // the next animation frame): 50 ms after it is not always enough on a slow machine.
+  await page.waitForFunction(() => {
+    const box = document.querySelector('input[type=number][data-key="zeta"]').value;
+    return String(Number(document.querySelector('[data-readout="zeta"]').dataset.value)) === box;
+  });
+  last = await page.getAttribute('[data-readout="zeta"]', 'data-value');
   assert.notEqual(Number(last), 0.2, 'the drag moved ζ');
   // Held: no switch under the pointer.
   assert.equal(await moduleOf(page), 'first');

@@ -183,6 +183,8 @@ test('the language menu lists every language by its own name and switches page a
   assert.deepEqual(fetched, ['fr.ftl'], 'only the chosen catalogue is downloaded');
   // The Share dialog offers every real language for the link.
   await page.click('#share-button');
+  // The dialog opens once share.js is in (fetched at idle after the first plot: maybe not yet).
+  await page.waitForSelector('dialog#share-dialog[open]');
   const shareLangs = await page.$$eval('#share-lang option', (os) => os.map((o) => o.value));
   assert.deepEqual(shareLangs, ['auto', ...real()]);
   await page.selectOption('#share-lang', 'zh-CN');

@@ -33,11 +33,15 @@ async function hostPage(q) {
   await page.goto(`${docs.url}host-example.html?app=${encodeURIComponent(app.url)}&q=${encodeURIComponent(q)}`);
   await page.waitForFunction(() => window.messages.some((m) => m.type === 'zeta:ready'), null, { timeout: 20000 });
   const frame = page.frames().find((f) => f.url().startsWith(app.url));
-  /** Sends `msg` and resolves to the first new message of type `type`. */
+  /**
+   * Sends `msg` and resolves to the first new message of type `type`. Some answers wait
+   * for the full module (350 KB of wasm: zeta:describe, an export) or a reload of the frame
+   * (zeta:setState for a demo its first module does not hold): 30 s for a slow CI machine.
+   */
   const ask = async (msg, type) => {
     const n = await page.evaluate(() => window.messages.length);
     await page.evaluate((m) => window.send(m), msg);
-    await page.waitForFunction(([k, t]) => window.messages.slice(k).some((m) => m.type === t), [n, type], { timeout: 10000 });
+    await page.waitForFunction(([k, t]) => window.messages.slice(k).some((m) => m.type === t), [n, type], { timeout: 30000 });
     return page.evaluate(([k, t]) => window.messages.slice(k).find((m) => m.type === t), [n, type]);
   };
   return { page, context, errors, frame, ask };
@@ -95,7 +99,9 @@ test('a host on another origin gets the schema, a whole state round trip, playba
     assert.equal(pb.speed, 2);
     pb = await h.ask({ type: 'zeta:play' }, 'zeta:playback');
     assert.equal(pb.playing, true);
-    await h.page.waitForTimeout(300);
+    // Playing until the clock shows a later time than the seek's (300 ms were a frame or two
+    // on a busy machine: the clock moves once a frame).
+    await h.frame.waitForFunction(() => parseFloat(document.querySelector('.anim-time').textContent.slice(4)) > 1.5);
     pb = await h.ask({ type: 'zeta:pause' }, 'zeta:playback');
     assert.equal(pb.playing, false);
     assert.ok(pb.t > 1.5, `time advanced while playing (${pb.t})`);

@@ -17,6 +17,34 @@ const skip = /\brefine\(/.test(built) ? false : 'needs the issue-13 page hooks (
 
 useSession();
 
+/** How long the full module (350 KB of wasm) may take to load and take over on a slow CI machine. */
+const FULL_MODULE_MS = 30000;
+
+/**
+ * Resolves once the page's visibility observer (web/main.js observeVisibility: within half a
+ * screen of the window counts as on screen) has been told whether the element at `selector`
+ * is near the screen (`near`): an observer made here with the same margin is told with it,
+ * in the same task. Scrolling is seen at the next rendering, and told in a task after it:
+ * not surely within two animation frames on a busy machine.
+ */
+function observed(page, selector, near) {
+  return page.evaluate(
+    ([sel, near]) =>
+      new Promise((done) => {
+        const io = new IntersectionObserver(
+          (entries) => {
+            if (entries.at(-1).isIntersecting !== near) return;
+            io.disconnect();
+            done();
+          },
+          { rootMargin: '50% 0px' },
+        );
+        io.observe(document.querySelector(sel));
+      }),
+    [selector, near],
+  );
+}
+
 /** Resolves when no readout or plot is marked provisional any more. */
 const settled = (page) => page.waitForFunction(() => !document.querySelector('[data-provisional]'), null, { timeout: 60000 });
 
@@ -199,11 +227,13 @@ test('a plot off screen waits while a control is held, and is drawn when it come
   assert.equal(await caption(page), captionBefore, 'nor is its figure built: its text alternative waits with it');
   // Still held: scrolled into view, it shows the current frame at once.
   await page.evaluate(() => document.querySelector('canvas[data-plot="poles"]').scrollIntoView());
+  await observed(page, 'canvas[data-plot="poles"]', true);
   await page.waitForFunction(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r(true)))));
   const inView = await raw();
   assert.notDeepEqual(inView, before, 'coming into view draws it');
   // Back up, drag on, release: once the controls rest, the plot below catches up.
   await page.evaluate(() => window.scrollTo(0, 0));
+  await observed(page, 'canvas[data-plot="poles"]', false);
   await page.waitForFunction(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r(true)))));
   const old = await readout(page, 'zeta');
   await page.mouse.move(box.x + box.width * 0.8, y, { steps: 2 });
@@ -429,7 +459,7 @@ test('a paused time cursor is on every time plot again once the plots out of vie
   // Once the full module has taken over: a takeover between the scrub and the check below
   // starts a session whose plots out of view are not drawn yet, so they have no cursor
   // until they catch up (what the second half of this test checks).
-  await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: 10000 });
+  await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: FULL_MODULE_MS });
   await drawn(page);
   // Ink on each plot's overlay (where the cursor is drawn), by plot key.
   const keys = await page.$$eval('[data-plot-wrap]', (ws) => ws.map((w) => w.dataset.plotWrap));
@@ -455,6 +485,10 @@ test('a paused time cursor is on every time plot again once the plots out of vie
     r.value = String(Number(r.min) + 0.3 * (Number(r.max) - Number(r.min)));
     r.dispatchEvent(new Event('input', { bubbles: true }));
   });
+  // The update's frame first: it takes the cursor off the plots it does not draw. Checked
+  // before it, every overlay still had its cursor from the scrub and the wait below passed
+  // at once, whatever the catch-up did.
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   // The controls rest, the plots out of view catch up (a plot a frame), each with its cursor.
   const back = await page
     .waitForFunction(
@@ -478,7 +512,7 @@ test('a paused time cursor is on every time plot again once the plots out of vie
 test('a canvas out of view is not painted (content-visibility), keeps its box, and shows its plot once scrolled to', async () => {
   const phone = { viewport: { width: 360, height: 740 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true };
   const { page, errors, context } = await open(browser, `${server.url}?demo=flutter`, phone);
-  await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: 10000 });
+  await page.waitForFunction(() => window.zetaDiagnostics?.module() === 'full', null, { timeout: FULL_MODULE_MS });
   await drawn(page);
   const boxes = () =>
     page.evaluate(() =>

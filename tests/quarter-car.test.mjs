@@ -3,7 +3,7 @@
 // snapshots (crates/app/tests/snapshots/quarter-car.snap); nothing is recomputed here.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, caption, readout, canvasFingerprint, waitForReadout, SHOTS, fullShot } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, drawn, waitForReadout, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, goldenState, assertReadoutsMatch } from './support/golden.mjs';
 import { waitForChange, assertDrawn, assertKeyboardMove } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
@@ -120,7 +120,10 @@ test('undamped and extreme settings keep a working page', async () => {
   await page.focus('#p-k');
   await page.keyboard.press('Home');
   await waitForChange(page, 'zeta', zeta);
-  await page.waitForTimeout(200);
+  // ζ changes with m's frame; k's (the second key) may come a frame later: wait for it
+  // (zetaDiagnostics.drawn() is false from an input until its frame is drawn) instead
+  // of 200 ms.
+  await drawn(page);
   assert.equal(await readout(page, 'regime'), 'overdamped');
   await assertDrawn(page, PLOTS, 1000);
   const all = await page.$$eval('[data-readout]', (els) => els.map((e) => e.dataset.value + e.textContent));

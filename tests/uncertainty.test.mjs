@@ -4,7 +4,7 @@
 // moved from the keyboard, and the time of a 100 000-draw run.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { open, caption, readout, canvasFingerprint, waitForUrlParam, SHOTS, fullShot } from './support/browser.mjs';
+import { open, caption, readout, canvasFingerprint, drawn, waitForUrlParam, SHOTS, fullShot } from './support/browser.mjs';
 import { golden, assertReadoutsMatch, assertFiguresMatch, stateSlug } from './support/golden.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
@@ -43,8 +43,13 @@ test('choosing normal parts redraws the histograms and says so', async () => {
 
 test('the same seed gives the same histogram; another seed a different one', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&system=1&dR=20&dL=20&dC=20`);
-  // The full run's numbers, not the coarse run's drawn first (marked provisional).
-  const settled = (p) => p.waitForFunction(() => !document.querySelector('[data-provisional]'));
+  // The full run's numbers, not the coarse run's drawn first (marked provisional). After an
+  // input, the frame that marks the coarse run comes first: before it nothing is marked,
+  // and a wait for 'nothing provisional' would pass on the old numbers.
+  const settled = async (p) => {
+    await drawn(p);
+    await p.waitForFunction(() => !document.querySelector('[data-provisional]'));
+  };
   await settled(page);
   const q5 = await readout(page, 'Q_p5');
   const z95 = await readout(page, 'zeta_p95');
@@ -154,7 +159,11 @@ test('every control moves from the keyboard; only the chosen system\'s sliders a
 test('100 000 draws: a coarse run first, then the full run, reported with its compute time', async (t) => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&N=100000&system=1`);
   // The full study arrives in slices after a coarse first answer; wait until nothing is provisional.
-  const settled = () => page.waitForFunction(() => !document.querySelector('[data-provisional]'), null, { timeout: 30000 });
+  // (After an input: once its frame, which marks the coarse run, is drawn; see above.)
+  const settled = async () => {
+    await drawn(page);
+    await page.waitForFunction(() => !document.querySelector('[data-provisional]'), null, { timeout: 30000 });
+  };
   await settled();
   assert.equal(await num(page, 'draws'), 100000);
   const times = [await num(page, 'compute_time')];

@@ -67,6 +67,35 @@ export async function assertReadoutsMatch(page, state) {
 }
 
 /**
+ * Waits until the page shows the readouts recorded for `state` (compared as
+ * `assertReadoutsMatch` compares them), then asserts them with `assertReadoutsMatch`. For a
+ * state reached by an action (a preset button, a key): the page applies it and writes the
+ * readouts on the next animation frame, and a read before that frame sees the old values
+ * ("m shows 1, recorded 4"). If the state never comes, the assertion says what differs.
+ */
+export async function waitForReadoutsMatch(page, state) {
+  const want = state.readouts.filter((r) => !('measured' in r)).map((r) => [r.key, r.value]);
+  await page
+    .waitForFunction(
+      (want) =>
+        want.every(([key, expected]) => {
+          const el = document.querySelector(`[data-readout="${key}"]`);
+          if (!el) return false;
+          const n = Number(expected);
+          if (expected !== '' && Number.isFinite(n) && /e/.test(expected)) {
+            return Math.abs(Number(el.dataset.value) - n) <= 1e-11 * Math.max(1, Math.abs(n));
+          }
+          return el.dataset.value === expected;
+        }),
+      want,
+    )
+    .catch((err) => {
+      if (err.name !== 'TimeoutError') throw err;
+    });
+  await assertReadoutsMatch(page, state);
+}
+
+/**
  * Opens demo `id` at recorded `state` (the site served at `url`) and asserts what the page
  * shows: every readout as recorded (`assertReadoutsMatch`), the table row named by readout
  * `row` (if given) marked current, each plot of `plots` and the schematic drawn. Resolves to

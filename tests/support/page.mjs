@@ -1,6 +1,6 @@
 // Helpers the end-to-end tests share for reading readouts and moving sliders.
 import assert from 'node:assert/strict';
-import { open, canvasFingerprint, readout, waitForReadout, SHOTS } from './browser.mjs';
+import { open, canvasFingerprint, drawn, readout, waitForReadout, SHOTS } from './browser.mjs';
 
 /** Waits until readout `key` differs from `old` (a data-value string). */
 export async function waitForChange(page, key, old) {
@@ -147,7 +147,10 @@ export async function assertKeyboardMove(browser, url, key, keys, { drives, stea
     for (const r of drives) await waitForChange(page, r, before[r]);
   } else {
     await page.waitForFunction(([k, old]) => new URLSearchParams(location.search).get(k) !== old, [key, shown]);
+    // The move's frame drawn (the address is written 150 ms after the keys, the readouts on
+    // the next frame: usually before, not surely): a readout read before it is trivially steady.
     await page.waitForTimeout(100);
+    await drawn(page);
     for (const r of steady) assert.equal(await readout(page, r), before[r], `${r} does not change with ${key}`);
   }
   await assertRedrawn(page, pixels, `after moving ${key}`);
