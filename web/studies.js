@@ -30,6 +30,12 @@ export function offload(app, requestDraw, scheduleRefine, showStudyProgress) {
   if (failed || typeof Worker !== 'function' || !session.setWorker) return false;
   session.setWorker(true);
   clearTimeout(timer);
+  if (asked && worker) {
+    // The inputs moved on: the worker drops the study under way at its next slice, so it
+    // does not compete with the page's frames for a study that would not be taken.
+    worker.postMessage({ seq: ++seq });
+    asked = null;
+  }
   timer = setTimeout(() => ask(page, session), REST_MS);
   return true;
 }
