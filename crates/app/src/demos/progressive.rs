@@ -259,7 +259,8 @@ pub(super) fn overtaken(id: &str, first: &str, then: &str) -> Overtaken {
 /// in by the page's instance ([`super::Demo::adopt_study`]) shows exactly what the full
 /// study in the step shows; one for inputs since moved on, or bytes that do not read, is
 /// never taken.
-#[cfg(all(test, not(feature = "first")))]
+#[cfg(test)]
+#[cfg(not(feature = "first"))]
 mod worker {
     use super::super::{create, testing::params, Demo};
     use super::shown;
