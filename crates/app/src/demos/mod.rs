@@ -302,24 +302,20 @@ impl<M: Model> Demo for Typed<M> {
     }
 
     #[cfg(not(feature = "first"))]
-    #[cfg(not(feature = "first"))]
     fn set_worker(&mut self, on: bool) {
         self.model.set_worker(on);
     }
 
-    #[cfg(not(feature = "first"))]
     #[cfg(not(feature = "first"))]
     fn advance_study(&mut self, budget_ms: f64) -> Option<f64> {
         self.model.advance_study(budget_ms)
     }
 
     #[cfg(not(feature = "first"))]
-    #[cfg(not(feature = "first"))]
     fn export_study(&self) -> Option<Vec<u8>> {
         self.model.export_study()
     }
 
-    #[cfg(not(feature = "first"))]
     #[cfg(not(feature = "first"))]
     fn adopt_study(&mut self, bytes: &[u8]) -> Option<f64> {
         let done = self.model.adopt_study(bytes);

@@ -169,13 +169,14 @@ impl<J: StudyJob> Progressive<J> {
     }
 }
 
-/// The progressive-study hooks of [`super::Model`] (`set_progressive`, `set_held`,
-/// `set_worker`, `refine`, `provisional`, and the worker's `advance_study`, `export_study`, `adopt_study`), inside `impl Model` of a demo whose [`Progressive`] state is its field
-/// `progress`: `progressive_hooks!(KEYS, refine_method)`, where `KEYS` are the readouts and
-/// plots drawn from its study and `self.refine_method(budget_ms)` continues the full study
-/// (see [`super::Demo::refine`]).
-macro_rules! progressive_hooks {
-    ($keys:expr, $refine:ident) => {
+/// The hooks of [`super::Model`] that only hand on to a demo's [`Progressive`] state, its
+/// field `progress` (`set_progressive`, `set_held`, `set_worker`, and the worker's
+/// `advance_study`, `export_study`, `adopt_study`), inside `impl Model`:
+/// `study_hooks!(refine_method)`, where `self.refine_method(budget_ms)` continues the full
+/// study (see [`super::Demo::refine`]); a study taken from the worker finishes through it.
+/// For a demo whose `refine` and `provisional` do more than its study's (integrators').
+macro_rules! study_hooks {
+    ($refine:ident) => {
         fn set_progressive(&mut self, on: bool) {
             self.progress.set_on(on);
         }
@@ -187,14 +188,6 @@ macro_rules! progressive_hooks {
         #[cfg(not(feature = "first"))]
         fn set_worker(&mut self, worker: bool) {
             self.progress.set_worker(worker);
-        }
-
-        fn refine(&mut self, budget_ms: f64) -> Option<f64> {
-            self.$refine(budget_ms)
-        }
-
-        fn provisional(&self) -> Vec<&'static str> {
-            self.progress.provisional(&$keys)
         }
 
         #[cfg(not(feature = "first"))]
@@ -213,6 +206,24 @@ macro_rules! progressive_hooks {
                 true => self.$refine(0.0),
                 false => None,
             }
+        }
+    };
+}
+pub(super) use study_hooks;
+
+/// Every progressive-study hook of [`super::Model`]: those of [`study_hooks`], and
+/// `refine` and `provisional` from the study alone: `progressive_hooks!(KEYS,
+/// refine_method)`, where `KEYS` are the readouts and plots drawn from the study.
+macro_rules! progressive_hooks {
+    ($keys:expr, $refine:ident) => {
+        $crate::demos::progressive::study_hooks!($refine);
+
+        fn refine(&mut self, budget_ms: f64) -> Option<f64> {
+            self.$refine(budget_ms)
+        }
+
+        fn provisional(&self) -> Vec<&'static str> {
+            self.progress.provisional(&$keys)
         }
     };
 }

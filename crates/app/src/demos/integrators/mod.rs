@@ -44,7 +44,7 @@ mod stability;
 mod text;
 mod work;
 
-use super::progressive::Progressive;
+use super::progressive::{study_hooks, Progressive};
 use super::Model;
 use crate::declare::Declaration;
 use crate::figure::Figure;
@@ -95,13 +95,7 @@ impl Model for Integrators {
         self.cache.step(p, &mut self.progress)
     }
 
-    fn set_progressive(&mut self, on: bool) {
-        self.progress.set_on(on);
-    }
-
-    fn set_held(&mut self, held: bool) {
-        self.progress.set_held(held);
-    }
+    study_hooks!(refine_study);
 
     /// The fixed-step runs under way first (what the response and error plots show), then
     /// the study.
@@ -109,29 +103,6 @@ impl Model for Integrators {
         match self.cache.runs.refine(budget_ms) {
             Some(done) => Some(done),
             None => self.refine_study(budget_ms),
-        }
-    }
-
-    #[cfg(not(feature = "first"))]
-    fn set_worker(&mut self, worker: bool) {
-        self.progress.set_worker(worker);
-    }
-
-    #[cfg(not(feature = "first"))]
-    fn advance_study(&mut self, budget_ms: f64) -> Option<f64> {
-        self.progress.advance(budget_ms)
-    }
-
-    #[cfg(not(feature = "first"))]
-    fn export_study(&self) -> Option<Vec<u8>> {
-        self.progress.export()
-    }
-
-    #[cfg(not(feature = "first"))]
-    fn adopt_study(&mut self, bytes: &[u8]) -> Option<f64> {
-        match self.progress.import(bytes) {
-            true => self.refine_study(0.0),
-            false => None,
         }
     }
 
