@@ -169,10 +169,17 @@ test('uncertainty: a moved tolerance shows the first 1000 draws marked provision
   await context.close();
 });
 
-test('a provisional plot shows how far its full study has come, and the bar goes with the mark', { skip }, async () => {
-  // 100 000 draws, 6x slower: the run takes several of the bar's 100 ms steps (the default
-  // 10 000 could finish within one, and then no part done was ever shown).
-  const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&N=100000`);
+/**
+ * Opens uncertainty with 100 000 draws on the full module (the first module's study would
+ * be started again by the full module's when it takes over: a new study, its bar from 0
+ * again), its histogram in view, at 6x CPU slowdown (`cdp`), and records each change of
+ * the histogram's progress bar: `shownBar(page)` then gives {shown, seen}, the values shown
+ * in order and the whole record (for messages). 100 000 draws: the run takes several of
+ * the bar's 100 ms steps (the default 10 000 could finish within one).
+ */
+async function watchBar(options = {}) {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=uncertainty&N=100000`, options);
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: FULL_MODULE_MS });
   await settled(page);
   await page.evaluate(() => document.querySelector('[data-plot-wrap="hist"]').scrollIntoView({ block: 'center' }));
   const cdp = await context.newCDPSession(page);
@@ -182,20 +189,75 @@ test('a provisional plot shows how far its full study has come, and the bar goes
     const fig = document.querySelector('[data-plot-wrap="hist"]');
     new MutationObserver(() => {
       const b = fig.querySelector('.study-progress');
-      if (b) window.__progress.push([b.hidden, Number(b.getAttribute('value'))]);
+      if (b) window.__progress.push([b.hidden, Number(b.getAttribute('value')), performance.now()]);
     }).observe(fig, { attributes: true, subtree: true, childList: true });
+    // When the page asks its worker for a study.
+    window.__asked = [];
+    const post = Worker.prototype.postMessage;
+    Worker.prototype.postMessage = function (data, ...rest) {
+      if (data.id) window.__asked.push(performance.now());
+      return post.call(this, data, ...rest);
+    };
   });
+  return { page, errors, context, cdp };
+}
+
+/** The bar's values while shown, in order; `parts`, when each part done (0-100, open) was shown. */
+async function shownBar(page) {
+  const seen = await page.evaluate(() => window.__progress);
+  return {
+    seen: JSON.stringify(seen.map(([hidden, v]) => [hidden, v])),
+    shown: seen.filter(([hidden]) => !hidden).map(([, v]) => v),
+    parts: seen.filter(([hidden, v]) => !hidden && v > 0 && v < 100).map(([, , t]) => t),
+  };
+}
+
+test('a provisional plot shows how far its full study has come, and the bar goes with the mark', { skip }, async () => {
+  // studies.js (the page's side of the worker) arrives late, as on a slow network: the
+  // page's slices must not begin the study the worker would then start again from 0.
+  const late = (c) => c.route('**/web/studies.js', (route) => setTimeout(() => route.continue(), 500));
+  const { page, errors, context, cdp } = await watchBar({ before: late });
   const now = await slide(page, 'dm', 17);
   assert.ok(now.plots.includes('hist'), JSON.stringify(now.plots));
   assert.deepEqual(now.bars[0], { hidden: false, value: '0', label: 'Computing the full result' });
   await settled(page);
   await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
-  const seen = await page.evaluate(() => window.__progress);
-  const shown = seen.filter(([hidden]) => !hidden).map(([, v]) => v);
-  assert.ok(shown.some((v) => v > 0 && v < 100), `a part done shown: ${JSON.stringify(seen)}`);
-  for (let i = 1; i < shown.length; i++) assert.ok(shown[i] >= shown[i - 1], `never back: ${JSON.stringify(seen)}`);
+  const { shown, seen, parts } = await shownBar(page);
+  assert.ok(parts.length > 0, `a part done shown: ${seen}`);
+  for (let i = 1; i < shown.length; i++) assert.ok(shown[i] >= shown[i - 1], `never back: ${seen}`);
+  // All of it the worker's: the page's slices did not begin the study first.
+  const asked = await page.evaluate(() => window.__asked);
+  assert.equal(await page.getAttribute('html', 'data-studies'), 'worker');
+  assert.ok(asked.length > 0 && parts[0] > asked[0], `the first part shown came after the worker was asked (${parts[0]} ms, asked ${asked})`);
   assert.equal(await page.locator('[data-plot-wrap="hist"] .study-progress').isHidden(), true, 'hidden with the mark');
   assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a redraw while the full study runs goes on with it: its bar does not start again', { skip }, async () => {
+  // The page's own slices (the worker blocked) at 6x: the run takes seconds, and the
+  // redraw (the colour scheme flips) lands surely inside it. A redraw starts no study (the
+  // inputs are the same), so the bar only moves on.
+  const before = (c) => c.route('**/study-worker.js', (route) => route.fulfill({ status: 404, body: '' }));
+  const { page, errors, context, cdp } = await watchBar({ before, colorScheme: 'light' });
+  await slide(page, 'dm', 17);
+  await page.waitForFunction(() => window.__progress.some(([hidden, v]) => !hidden && v > 0), null, { timeout: 30000 });
+  const corner = (other) => {
+    const c = document.querySelector('canvas[data-plot="hist"]');
+    const now = [...c.getContext('2d').getImageData(0, 0, 1, 1).data].join();
+    return now !== other && now;
+  };
+  const light = await page.evaluate(corner, '');
+  await page.emulateMedia({ colorScheme: 'dark' });
+  await page.waitForFunction(corner, light, { timeout: 30000 });
+  const during = await page.evaluate(() => document.querySelector('[data-plot-wrap="hist"]').hasAttribute('data-provisional'));
+  assert.ok(during, 'the redraw came while the full run was still under way');
+  await settled(page);
+  await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
+  await page.waitForFunction(() => document.documentElement.dataset.studies === 'page'); // no worker: the page computed it
+  const { shown, seen } = await shownBar(page);
+  for (let i = 1; i < shown.length; i++) assert.ok(shown[i] >= shown[i - 1], `never back: ${seen}`);
+  assert.deepEqual(errors.filter((e) => !/study-worker/.test(e)), []); // its 404 is a warning
   await context.close();
 });
 

@@ -154,9 +154,9 @@ function prefetchLater() {
 /**
  * Runs `use(module)` once `later(name)` has the module. A failed call in it is a wasm
  * failure (reportFailure recovers); a module that could not be fetched is not: the page
- * says so, and the next use fetches it again.
+ * says so, runs `without()`, and the next use fetches it again.
  */
-function withModule(name, use) {
+function withModule(name, use, without) {
   later(name).then((m) => {
     try {
       use(m);
@@ -166,6 +166,7 @@ function withModule(name, use) {
   }, (err) => {
     console.warn(`Zeta Lab: ${name}.js could not be loaded:`, err && err.message);
     notify(app.notices, t('moduleFailed', { text: `${name}.js` }), 'warn');
+    without?.();
   });
 }
 
@@ -573,7 +574,7 @@ function showCaptions(descriptions) {
  * its provisional marks. */
 function showResults(out) {
   showReadouts(app.view.readouts, out.readouts, new Set(out.provisional));
-  markProvisional(out.provisional);
+  markProvisional(out.provisional, out.restarted);
   describeSliders(out.readouts);
   highlightRow(app.view.table, out.readouts);
   fillLiveCells(app.view.table, out.readouts);
@@ -713,8 +714,10 @@ const provisionalMarked = new WeakMap();
 /**
  * Marks readouts and plots drawn from a coarse study while the full one runs (issue 13);
  * the marks are written when the set changes (each frame of a drag gives the same one).
+ * `restarted`: the update started the full study afresh (a redraw goes on with it).
  */
-function markProvisional(keys) {
+function markProvisional(keys, restarted) {
+  if (restarted) showStudyProgress(0, true);
   const joined = keys.join(' ');
   if (provisionalMarked.get(app.view) !== joined) {
     provisionalMarked.set(app.view, joined);
@@ -735,12 +738,15 @@ function markProvisional(keys) {
       if (bar) bar.hidden = !on;
     }
   }
-  if (keys.length) {
-    showStudyProgress(0, true); // an update starts the study again
-    // The full study goes to the worker (studies.js); the page's slices do the rest.
-    if (app.module === 'full') withModule('studies', (m) => m.offload(app, requestDraw, scheduleRefine, showStudyProgress));
+  if (!keys.length) return;
+  // The full module gives a new full study to the worker (studies.js), and only then
+  // starts the page's slices (they leave a worker's study alone, and do the rest): else
+  // the page began a study the worker would then start again. Without studies.js, the page.
+  if (app.module !== 'full') scheduleRefine();
+  else withModule('studies', (m) => {
+    if (restarted) m.offload(app, requestDraw, scheduleRefine, showStudyProgress);
     scheduleRefine();
-  }
+  }, scheduleRefine);
 }
 
 /** When the study's progress bars were last moved (performance.now()), and to what. */

@@ -91,6 +91,11 @@ pub trait Demo {
     /// Keys of the readouts and plots of the last [`Demo::recompute`] that show a coarse,
     /// provisional study while the full one runs (empty when everything shown is final).
     fn provisional(&self) -> Vec<&'static str>;
+    /// A count that moves on whenever a [`Demo::recompute`] starts the full study (or a
+    /// demo's other work left to [`Demo::refine`]) afresh, for new inputs: the page's
+    /// progress bars then start again from 0, and its worker is given the new inputs. The
+    /// same while an update only redraws, or moves an input the study does not depend on.
+    fn study_round(&self) -> u32;
     /// Whether the page runs the full study in a worker (`on`): [`Demo::refine`] then leaves
     /// it alone and the page hands the worker's result to [`Demo::adopt_study`].
     #[cfg(not(feature = "first"))]
@@ -179,6 +184,11 @@ pub trait Model: 'static {
     /// See [`Demo::provisional`].
     fn provisional(&self) -> Vec<&'static str> {
         Vec::new()
+    }
+
+    /// See [`Demo::study_round`].
+    fn study_round(&self) -> u32 {
+        0
     }
 
     /// See [`Demo::set_worker`].
@@ -324,6 +334,10 @@ impl<M: Model> Demo for Typed<M> {
 
     fn provisional(&self) -> Vec<&'static str> {
         self.model.provisional()
+    }
+
+    fn study_round(&self) -> u32 {
+        self.model.study_round()
     }
 }
 

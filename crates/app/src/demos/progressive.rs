@@ -48,6 +48,9 @@ pub(super) struct Progressive<J> {
     worker: bool,
     /// The full study under way, if any.
     pub(super) job: Option<J>,
+    /// How many coarse studies were computed: each starts its full study afresh (see
+    /// [`super::Demo::study_round`]). Wraps.
+    rounds: u32,
 }
 
 impl<J> Default for Progressive<J> {
@@ -58,6 +61,7 @@ impl<J> Default for Progressive<J> {
             held: false,
             worker: false,
             job: None,
+            rounds: 0,
         }
     }
 }
@@ -73,6 +77,9 @@ impl<J> Progressive<J> {
     /// provisional until [`Progressive::finished`]), else `full`.
     pub(super) fn size_now(&mut self, full: usize, coarse: usize) -> usize {
         self.provisional = self.on && full > coarse;
+        if self.provisional {
+            self.rounds = self.rounds.wrapping_add(1);
+        }
         match self.provisional {
             true => coarse,
             false => full,
@@ -104,6 +111,12 @@ impl<J> Progressive<J> {
     /// Whether the study held is the coarse stand-in while the full one runs.
     pub(super) fn is_provisional(&self) -> bool {
         self.provisional
+    }
+
+    /// A count that moves on each time a coarse study starts the full one afresh (see
+    /// [`super::Demo::study_round`]).
+    pub(super) fn rounds(&self) -> u32 {
+        self.rounds
     }
 
     /// The full study has replaced the coarse one.
@@ -174,7 +187,8 @@ impl<J: StudyJob> Progressive<J> {
 /// `advance_study`, `export_study`, `adopt_study`), inside `impl Model`:
 /// `study_hooks!(refine_method)`, where `self.refine_method(budget_ms)` continues the full
 /// study (see [`super::Demo::refine`]); a study taken from the worker finishes through it.
-/// For a demo whose `refine` and `provisional` do more than its study's (integrators').
+/// For a demo whose `refine`, `provisional` and `study_round` do more than its study's
+/// (integrators').
 macro_rules! study_hooks {
     ($refine:ident) => {
         fn set_progressive(&mut self, on: bool) {
@@ -212,7 +226,7 @@ macro_rules! study_hooks {
 pub(super) use study_hooks;
 
 /// Every progressive-study hook of [`super::Model`]: those of [`study_hooks`], and
-/// `refine` and `provisional` from the study alone: `progressive_hooks!(KEYS,
+/// `refine`, `provisional` and `study_round` from the study alone: `progressive_hooks!(KEYS,
 /// refine_method)`, where `KEYS` are the readouts and plots drawn from the study.
 macro_rules! progressive_hooks {
     ($keys:expr, $refine:ident) => {
@@ -224,6 +238,10 @@ macro_rules! progressive_hooks {
 
         fn provisional(&self) -> Vec<&'static str> {
             self.progress.provisional(&$keys)
+        }
+
+        fn study_round(&self) -> u32 {
+            self.progress.rounds()
         }
     };
 }
@@ -362,5 +380,58 @@ mod worker {
     #[test]
     fn a_convergence_study_from_the_worker_is_the_full_study() {
         round_trip("integrators", "zeta=0.1", "zeta=0.3");
+    }
+}
+
+/// The page's progress bars start again from 0, and its worker is given new inputs,
+/// exactly when an update starts the full study afresh: [`super::Demo::study_round`] moves
+/// then, and only then; a redraw, or an input the study does not depend on, carries on
+/// with the study under way.
+#[cfg(test)]
+#[cfg(not(feature = "first"))]
+mod rounds {
+    use super::super::{create, testing::params};
+
+    /// Demo `id` at `first` with part of its study done, then at `first` again and at
+    /// `same` (an input the study does not depend on), then at `moved`.
+    fn rounds(id: &str, first: &str, same: &str, moved: &str) {
+        let mut demo = create(id).expect("registered demo");
+        demo.set_progressive(true);
+        let before = demo.study_round();
+        demo.update(&params(id, first));
+        let round = demo.study_round();
+        assert_ne!(round, before, "{id}?{first}: a study started");
+        let done = demo.refine(0.0).expect("a study under way");
+        assert!(done < 1.0, "{id}: part of it done ({done})");
+        for query in [first, same] {
+            demo.update(&params(id, query));
+            assert_eq!(demo.study_round(), round, "{id}?{query}: the same study");
+            assert!(
+                !demo.provisional().is_empty(),
+                "{id}?{query}: still provisional"
+            );
+        }
+        let next = demo.refine(0.0).expect("still under way");
+        assert!(
+            next > done,
+            "{id}: it went on from {done}, not from the start ({next})"
+        );
+        demo.update(&params(id, moved));
+        assert_ne!(demo.study_round(), round, "{id}?{moved}: a new study");
+    }
+
+    #[test]
+    fn a_sweep_starts_afresh_only_when_the_map_moves() {
+        rounds("design", "m=420", "m=420&k=30000", "m=500");
+    }
+
+    #[test]
+    fn a_monte_carlo_run_starts_afresh_only_when_the_parts_move() {
+        rounds("uncertainty", "dm=12", "dm=12&ts_max=0.7", "dm=15");
+    }
+
+    #[test]
+    fn a_convergence_study_starts_afresh_only_when_the_system_moves() {
+        rounds("integrators", "zeta=0.1", "zeta=0.1&euler=0", "zeta=0.3");
     }
 }

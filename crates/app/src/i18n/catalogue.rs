@@ -88,7 +88,10 @@ fn new_bundle(l: &'static Locale, ftl: &str) -> (Bundle, Vec<String>) {
     let resource = match FluentResource::try_new(ftl.to_string()) {
         Ok(r) => r,
         Err((r, errs)) => {
-            errors.extend(errs.iter().map(|e| format!("{}: {e:?}", l.tag)));
+            errors.extend(
+                errs.iter()
+                    .map(|e| format!("{}: {e} (bytes {}–{})", l.tag, e.pos.start, e.pos.end)),
+            );
             r
         }
     };

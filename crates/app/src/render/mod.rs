@@ -49,8 +49,8 @@ impl std::fmt::Display for RenderError {
 
 impl std::error::Error for RenderError {}
 
-fn err<E: std::fmt::Debug>(e: E) -> RenderError {
-    RenderError(format!("{e:?}"))
+fn err<E: std::fmt::Display>(e: E) -> RenderError {
+    RenderError(e.to_string())
 }
 
 /// Where the data went on the backend: the plotting area in backend pixels and the

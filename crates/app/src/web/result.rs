@@ -23,6 +23,9 @@ pub(super) struct UpdateResult<'a> {
     pub(super) derived: Vec<(&'static str, f64)>,
     /// Keys of readouts and plots showing a coarse study while the full one runs.
     pub(super) provisional: Vec<&'static str>,
+    /// Whether this update started the full study afresh (see
+    /// [`Demo::study_round`](crate::demos::Demo::study_round)): its progress is back to 0.
+    pub(super) restarted: bool,
     /// The guided tour with its checked claims, for the demo that has one (`paper`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) tour: Option<crate::demos::paper::Tour>,

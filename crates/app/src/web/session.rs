@@ -42,6 +42,8 @@ pub struct Session {
     /// The ranges held when the last drag ended, and how far (0…1) the axes have moved
     /// from them to the figures' own (see [`ease_axes`](crate::render::ease_axes)).
     pub(super) released: Option<(Vec<Option<AxisRanges>>, f64)>,
+    /// The demo's [`Demo::study_round`] at the last update.
+    pub(super) study_round: u32,
 }
 
 #[wasm_bindgen]
@@ -50,7 +52,7 @@ impl Session {
     #[wasm_bindgen(constructor)]
     pub fn new(id: &str) -> Result<Session, JsError> {
         let mut demo =
-            demos::create(id).ok_or_else(|| JsError::new(&format!("unknown demo {id:?}")))?;
+            demos::create(id).ok_or_else(|| JsError::new(&format!("unknown demo “{id}”")))?;
         demo.set_progressive(true);
         let spec = demo.spec();
         let params = Params::defaults(&spec);
@@ -69,6 +71,7 @@ impl Session {
             dragging: false,
             shown: vec![None; n],
             released: None,
+            study_round: 0,
         })
     }
 
@@ -122,10 +125,12 @@ impl Session {
 
     /// Recomputes, draws every attached plot canvas that is on screen (sized by the page
     /// at `scale` = devicePixelRatio; see [`Session::set_visible`]) and returns
-    /// `{readouts, descriptions, time_span, derived, provisional, tour}`. Only the figures
+    /// `{readouts, descriptions, time_span, derived, provisional, restarted, tour}`. Only the figures
     /// drawn, and the first plot's (its text is announced), are built.
     pub fn update(&mut self, scale: f64, dark: bool) -> Result<JsValue, JsError> {
         let frame = self.demo.recompute(&self.params);
+        let round = self.demo.study_round();
+        let restarted = std::mem::replace(&mut self.study_round, round) != round;
         let mut derived = Vec::new();
         for (key, value) in self.demo.derived_params() {
             if let Some((v, _)) = self.params.set_raw(&self.spec, key, &format!("{value}")) {
@@ -147,6 +152,7 @@ impl Session {
             time_span: frame.time_span,
             derived,
             provisional: self.demo.provisional(),
+            restarted,
             tour: self.demo.tour(),
         })
     }

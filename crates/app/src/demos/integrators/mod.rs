@@ -114,6 +114,13 @@ impl Model for Integrators {
         keys
     }
 
+    /// The study's rounds and the runs'.
+    fn study_round(&self) -> u32 {
+        self.progress
+            .rounds()
+            .wrapping_add(self.cache.runs.rounds())
+    }
+
     fn figure(&self, plot: usize, p: &P, r: &Results) -> Option<Figure> {
         let studied = match plot {
             0 => return Some(figures::response(p, r)),

@@ -69,6 +69,8 @@ pub(super) struct RunsCache {
     whole: Option<Rc<FixedRuns>>,
     /// The runs under way: the last step showed them so far.
     job: Option<RunsJob>,
+    /// How many runs were started in slices (see [`crate::demos::Demo::study_round`]). Wraps.
+    rounds: u32,
 }
 
 impl RunsCache {
@@ -91,7 +93,10 @@ impl RunsCache {
         }
         let mut job = match (sliced, self.job.take()) {
             (true, Some(job)) if job.key == key => job,
-            _ => RunsJob::start(key, resp, lin, p, grid),
+            _ => {
+                self.rounds = self.rounds.wrapping_add(u32::from(sliced));
+                RunsJob::start(key, resp, lin, p, grid)
+            }
         };
         job.advance(match sliced {
             true => STEPS_NOW,
@@ -105,6 +110,11 @@ impl RunsCache {
         let whole = Rc::new(job.into_runs());
         self.whole = Some(whole.clone());
         whole
+    }
+
+    /// A count that moves on each time runs start in slices.
+    pub(super) fn rounds(&self) -> u32 {
+        self.rounds
     }
 
     /// Whether the last step showed the runs so far, the rest under way.
