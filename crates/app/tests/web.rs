@@ -182,3 +182,21 @@ fn hostile_queries_become_notices_not_errors() {
     assert!(Session::new("no-such-demo").is_err());
     s.update(1.0, false).unwrap();
 }
+
+#[wasm_bindgen_test]
+fn a_click_on_a_plot_this_session_has_not_drawn_yet_still_picks() {
+    // As after the full module takes over: the page shows the first module's drawing of
+    // the map, and the new session has not drawn it (out of view at its update). The click
+    // is read against what is seen: the session draws the plot first, the same pixels.
+    let map = canvas(480, 480);
+    let mut s = Session::new("design").unwrap();
+    assert!(s.attach("map", map.clone()));
+    s.set_visible("map", false);
+    s.update(1.0, false).unwrap();
+    let picked: js_sys::Array = s.pick("map", 200.0, 220.0).unwrap().dyn_into().unwrap();
+    assert_eq!(picked.length(), 2, "k and c picked from the map");
+    assert!(
+        !s.probe("map", 200.0, 220.0).unwrap().is_undefined(),
+        "and read by the pointer"
+    );
+}

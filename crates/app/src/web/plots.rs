@@ -27,11 +27,12 @@ impl Session {
     /// Not in the first module (feature `first`): a pointer over a plot reads values once the
     /// full module has taken over, about a second after the first plot on a slow line.
     #[cfg(not(feature = "first"))]
-    pub fn probe(&self, key: &str, px: f64, py: f64) -> Result<JsValue, JsError> {
-        let Some((i, fig)) = self.figure(key) else {
+    pub fn probe(&mut self, key: &str, px: f64, py: f64) -> Result<JsValue, JsError> {
+        let Some(i) = self.drawn_plot(key)? else {
             return Ok(JsValue::UNDEFINED);
         };
-        let Some(geo) = self.geometry.get(i).copied().flatten() else {
+        let (Some(fig), Some(geo)) = (self.built(i), self.geometry.get(i).copied().flatten())
+        else {
             return Ok(JsValue::UNDEFINED);
         };
         match export::probe(fig, &geo, px, py) {
@@ -101,7 +102,7 @@ impl Session {
     /// the first module (feature `first`), as [`Session::probe`].
     #[cfg(not(feature = "first"))]
     pub fn pick(&mut self, key: &str, px: f64, py: f64) -> Result<JsValue, JsError> {
-        let Some(i) = self.plot_index(key) else {
+        let Some(i) = self.drawn_plot(key)? else {
             return to_js(&Vec::<(&str, f64)>::new());
         };
         let Some((x, y)) = self
@@ -121,5 +122,27 @@ impl Session {
             }
         }
         to_js(&applied)
+    }
+}
+
+impl Session {
+    /// Plot `key`'s index, drawn by this session: one on screen that it has not drawn yet
+    /// (after a take-over the page shows the first module's drawing until the catch-up
+    /// draws it again, the same pixels) is drawn now, from the last update's results, so
+    /// that a click or the pointer on it is read against what is seen. Before, such a click
+    /// found no plot and did nothing (a flake of design's map test on a loaded machine).
+    #[cfg(not(feature = "first"))]
+    fn drawn_plot(&mut self, key: &str) -> Result<Option<usize>, JsError> {
+        let Some(i) = self.plot_index(key) else {
+            return Ok(None);
+        };
+        let undrawn = self.geometry.get(i).is_some_and(Option::is_none) || self.built(i).is_none();
+        if let (true, Some(how)) = (undrawn && self.attached(i), self.last_drawn) {
+            self.build(i);
+            let mut wanted = vec![false; self.canvases.len()];
+            wanted[i] = true;
+            self.draw_plots(&wanted, how)?;
+        }
+        Ok(Some(i))
     }
 }

@@ -44,6 +44,9 @@ pub struct Session {
     pub(super) released: Option<(Vec<Option<AxisRanges>>, f64)>,
     /// The demo's [`Demo::study_round`] at the last update.
     pub(super) study_round: u32,
+    /// How the last update drew: a plot drawn later for a click or the pointer on it
+    /// (`plots.rs`, `drawn_plot`) is drawn the same way.
+    pub(super) last_drawn: Option<Drawn>,
 }
 
 #[wasm_bindgen]
@@ -72,6 +75,7 @@ impl Session {
             shown: vec![None; n],
             released: None,
             study_round: 0,
+            last_drawn: None,
         })
     }
 
@@ -143,6 +147,7 @@ impl Session {
         let built: Vec<bool> = (0..self.figures.len())
             .map(|i| (i == 0 || self.visible[i] && self.attached(i)) && self.build(i).is_some())
             .collect();
+        self.last_drawn = Some(Drawn { scale, dark });
         self.draw_plots(&self.visible.clone(), Drawn { scale, dark })?;
         let descriptions = self.descriptions(&built);
         let frame = self.frame.as_ref().ok_or_else(|| js_err("no frame"))?;
