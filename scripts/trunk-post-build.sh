@@ -16,11 +16,11 @@ fi
 # Release builds: also a "first" module per demo (feature `first`, ZETA_FIRST_DEMO=<id>:
 # only that demo linked), which the page starts with for that demo while the full module
 # loads behind it (web/main.js). Same crate, same profile and target dir, so only zeta-app
-# itself is compiled again. The ids are the registry's lines (crates/app/src/demos/mod.rs)
-# but those marked #[runs_other_demos] (they start from the full module); a name the
-# registry lacks fails the build. wasm-opt (below) shrinks each module in the background
-# while the next one compiles. ZETA_FIRST_DEMOS="<id> …" builds only those (a quicker
-# local build; the others then start from the full module).
+# itself is compiled again. The ids are the registry's lines (crates/app/src/demos/mod.rs);
+# a line marked #[first_with("<other>")] links that demo too (ZETA_FIRST_DEMO="<id>
+# <other>"); a name the registry lacks fails the build. wasm-opt (below) shrinks each
+# module in the background while the next one compiles. ZETA_FIRST_DEMOS="<id> …" builds
+# only those (a quicker local build; the others then start from the full module).
 src="${TRUNK_SOURCE_DIR:-.}"
 opt="$src/node_modules/.bin/wasm-opt"
 optimise() { # the final wasm: see the flags' note below
@@ -40,13 +40,16 @@ if [ "${TRUNK_PROFILE:-}" = "release" ]; then
   target_dir="${CARGO_TARGET_DIR:-$src/target}"
   optimise "$stage/zeta-app_bg.wasm" &
   pids+=($!)
-  ids="$(perl -ne 'print "$1\n" if /^\s*"([a-z0-9-]+)", "[^"]*" => /' "$src/crates/app/src/demos/mod.rs")"
-  if [ "$(printf '%s\n' "$ids" | grep -c .)" -lt 2 ]; then
+  # "<id>" per line, or "<id>+<other>" for a line marked #[first_with("<other>")].
+  lines="$(perl -ne 'print "$2", ($1 ? "+$1" : ""), "\n" if /^\s*(?:#\[first_with\("([a-z0-9-]+)"\)\]\s*)?"([a-z0-9-]+)", "[^"]*" => /' "$src/crates/app/src/demos/mod.rs")"
+  if [ "$(printf '%s\n' "$lines" | grep -c .)" -lt 2 ]; then
     echo "post-build: found no demo ids in the registry" >&2
     exit 1
   fi
-  for id in ${ZETA_FIRST_DEMOS:-$ids}; do
-    (cd "$src" && ZETA_FIRST_DEMO="$id" cargo build --quiet -p zeta-app --release --target wasm32-unknown-unknown --features first)
+  for line in $lines; do
+    id="${line%%+*}"
+    case " ${ZETA_FIRST_DEMOS:-$id} " in *" $id "*) ;; *) continue ;; esac
+    (cd "$src" && ZETA_FIRST_DEMO="${line//+/ }" cargo build --quiet -p zeta-app --release --target wasm32-unknown-unknown --features first)
     wasm-bindgen --target web --no-typescript --out-dir "$stage" --out-name "zeta-first-$id" \
       "$target_dir/wasm32-unknown-unknown/release/zeta_app.wasm"
     optimise "$stage/zeta-first-${id}_bg.wasm" &

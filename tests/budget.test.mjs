@@ -9,8 +9,6 @@ import { countBytes, launch } from './support/browser.mjs';
 
 /** Bytes (1 KB = 1000 B) a page may transfer before its first plot. */
 const BUDGET = 200_000;
-/** The page that runs every demo starts from the full module: outside the budget. */
-const FULL_MODULE_PAGES = new Set(['paper']);
 
 let server;
 let browser;
@@ -49,7 +47,7 @@ test('every demo transfers at most 200 KB (brotli) before its first plot', async
   assert.ok(ids.length >= 12, `the demos: ${ids}`);
   const over = [];
   const seen = {};
-  for (const id of ids.filter((d) => !FULL_MODULE_PAGES.has(d))) {
+  for (const id of ids) {
     const bytes = await bytesBeforeFirstPlot(`${server.url}?demo=${id}`);
     seen[id] = (bytes / 1000).toFixed(1);
     // More than a first module's page could need means the count itself broke.

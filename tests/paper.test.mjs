@@ -33,9 +33,62 @@ function claims(page) {
   );
 }
 
+/**
+ * Resolves once every claim has its verdict: the page's first module links only the demo
+ * of the first figure and leaves the other claims pending; the full module checks them.
+ */
+function checked(page) {
+  const done = () => document.querySelector('[data-claim]') && !document.querySelector('[data-verdict="pending"]');
+  return page.waitForFunction(done, null, { timeout: 30000 });
+}
+
+test('the first module draws the first figure and lists every claim; the full module checks the rest', async () => {
+  // The full module held back (its wasm never arrives): the page as its first module shows it.
+  const hold = (c) => c.route('**/zeta-app_bg.wasm', () => {});
+  const first = await open(browser, `${server.url}?demo=paper`, { before: hold, serviceWorkers: 'block' });
+  const { page } = first;
+  await page.waitForSelector('[data-claim]');
+  assert.equal(await page.evaluate(() => window.zetaDiagnostics.module()), 'first');
+  const early = await claims(page);
+  const own = early.filter((c) => c.link.startsWith('?demo=quarter-car'));
+  const rest = early.filter((c) => !c.link.startsWith('?demo=quarter-car'));
+  assert.ok(own.length > 0 && rest.length > 0, `${own.length} checked, ${rest.length} to come`);
+  assert.equal(Number(await page.getAttribute('[data-readout="claims"]', 'data-value')), own.length, 'claims checked so far');
+  for (const c of own) assert.ok(['confirmed', 'differs'].includes(c.verdict), `${c.id}: ${c.verdict}`);
+  for (const c of rest) {
+    assert.equal(c.verdict, 'pending', c.id);
+    assert.equal(c.computed, '…', c.id);
+    assert.match(c.reason, /^Checking… Checked as soon as the whole app has loaded/, c.id);
+  }
+  const marks = await page.$$eval('[data-provisional]', (els) => els.map((e) => e.dataset.readout ?? e.dataset.plotWrap));
+  for (const key of ['claims', 'confirmed', 'differs']) assert.ok(marks.includes(key), `${key} marked: ${marks}`);
+  assert.ok(marks.includes('fig2a') && !marks.includes('fig1a'), `thumbnails to come marked: ${marks}`);
+  const ink = await page.$eval('canvas[data-plot="fig1a"]', (c) => {
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] !== d[0] || d[i + 1] !== d[1] || d[i + 2] !== d[2]) n++;
+    return n;
+  });
+  assert.ok(ink > 1000, `the first figure is drawn (${ink} px of ink)`);
+  assert.deepEqual(first.errors, []);
+  await first.context.close();
+
+  // Let through: the full module takes over and checks the rest, in place.
+  const { page: full, errors, context } = await open(browser, `${server.url}?demo=paper`);
+  await checked(full);
+  assert.equal(await full.evaluate(() => window.zetaDiagnostics.module()), 'full');
+  const late = await claims(full);
+  assert.deepEqual(late.map((c) => c.id), early.map((c) => c.id), 'the same claims, in the same places');
+  for (const c of own) assert.deepEqual(late.find((x) => x.id === c.id), c, `${c.id}: unchanged`);
+  assert.equal(Number(await full.getAttribute('[data-readout="claims"]', 'data-value')), late.length, 'every claim checked');
+  await full.waitForFunction(() => !document.querySelector('[data-provisional]'));
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('every required claim is on the page with its verdict, and every exhibit has a thumbnail', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=paper`);
-  await page.waitForSelector('[data-claim]');
+  await checked(page);
   const shown = await claims(page);
   for (const [id, verdict] of Object.entries(REQUIRED)) {
     const c = shown.find((x) => x.id === id);
@@ -64,7 +117,7 @@ test('every required claim is on the page with its verdict, and every exhibit ha
 
 test('every claim link opens its demo showing the value the tour states', async () => {
   const { page, context } = await open(browser, `${server.url}?demo=paper`);
-  await page.waitForSelector('[data-claim]');
+  await checked(page);
   const shown = await claims(page);
   await context.close();
   for (const c of shown) {
@@ -92,7 +145,7 @@ test('every claim link opens its demo showing the value the tour states', async 
 
 test('on a phone the tour fits the width, and it prints', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=paper`, { viewport: { width: 360, height: 740 } });
-  await page.waitForSelector('[data-claim]');
+  await checked(page);
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   assert.ok(overflow <= 1, `no horizontal scroll (${overflow} px)`);
   await page.locator('[data-exhibit="fig4a"]').scrollIntoViewIfNeeded();

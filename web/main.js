@@ -570,11 +570,12 @@ function showCaptions(descriptions) {
   }
 }
 
-/** An update's readouts, what reads them (slider descriptions, the table's live cells) and
- * its provisional marks. */
+/** An update's readouts, what reads them (slider descriptions, the table's live cells), its
+ * provisional marks and the paper's tour. */
 function showResults(out) {
   showReadouts(app.view.readouts, out.readouts, new Set(out.provisional));
   markProvisional(out.provisional, out.restarted);
+  if (out.tour) showTour(out.tour);
   describeSliders(out.readouts);
   highlightRow(app.view.table, out.readouts);
   fillLiveCells(app.view.table, out.readouts);
@@ -600,7 +601,6 @@ function drawFrame() {
     }
     if (out.derived.length) syncUrl();
     applyConditions(app.view.spec, app.root);
-    if (out.tour) showTour(out.tour);
     showCaptions(out.descriptions);
     if (out.descriptions.length) announce(out.descriptions[0].text);
     if (!app.firstDrawn) {

@@ -40,18 +40,26 @@ function claimItem(c) {
   pair(t('tourPaper'), c.claimed, 'tour-claimed');
   pair(t('tourApp'), c.computed, 'tour-computed');
   const verdict = el('p', { class: `tour-verdict verdict-${c.verdict}` });
-  verdict.append(el('strong', {}, c.verdict === 'confirmed' ? t('tourConfirmed') : t('tourDiffers')), ' ', c.reason);
+  const word = c.verdict === 'confirmed' ? t('tourConfirmed') : c.verdict === 'differs' ? t('tourDiffers') : t('tourPending');
+  verdict.append(el('strong', {}, word), ' ', c.reason);
   item.append(head, values, verdict, stateLink(c.link, t('tourOpen')));
   return item;
 }
 
 /**
  * Builds the tour into `root` once (the paper does not change while the page is open;
- * a language change rebuilds the page). Returns the section.
+ * a language change rebuilds the page); later, the claims the first module left pending
+ * get their verdicts (the full module checked them). Returns the section.
  */
 export function renderTour(root, tour) {
   let section = root.querySelector('.tour');
-  if (section) return section;
+  if (section) {
+    for (const c of tour.claims) {
+      const shown = section.querySelector(`[data-claim="${c.id}"]`);
+      if (shown && shown.dataset.verdict !== c.verdict) shown.replaceWith(claimItem(c));
+    }
+    return section;
+  }
   // The tour has no parameters and lays out its own thumbnails: no stage picker, no empty form.
   root.classList.add('touring');
   // The paper's own order: each figure or table, with the claims read beside it.

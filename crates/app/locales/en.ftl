@@ -45,6 +45,7 @@ page-tour-paper = The paper says
 page-tour-app = The app computes
 page-tour-confirmed = Confirmed.
 page-tour-differs = Differs.
+page-tour-pending = Checking…
 page-copied = Copied
 page-copy-manual = Select and copy (Ctrl+C)
 page-share-title = Share or embed “{ $title }”
@@ -388,6 +389,10 @@ quarter-car-2dof-marker-road = road
 ### paper
 
 paper-unavailable = this figure's demo is not available
+paper-pending-plot = drawn once the whole app has loaded
+paper-pending-mark = loading…
+paper-pending-value = …
+paper-pending = Checked as soon as the whole app has loaded, in a moment.
 paper-figure = Figure { $number }
 paper-section = Section { $number }
 paper-section-figure = Section { $section }, Figure { $figure }

@@ -37,6 +37,7 @@ page-tour-paper = El artículo dice
 page-tour-app = La aplicación calcula
 page-tour-confirmed = Confirmado.
 page-tour-differs = Difiere.
+page-tour-pending = Comprobando…
 page-copied = Copiado
 page-copy-manual = Seleccione y copie (Ctrl+C)
 page-share-title = Compartir o insertar «{ $title }»
@@ -380,6 +381,10 @@ quarter-car-2dof-marker-road = carretera
 ### paper
 
 paper-unavailable = la demostración de esta figura no está disponible
+paper-pending-plot = se dibuja cuando termine de cargarse la aplicación completa
+paper-pending-mark = cargando…
+paper-pending-value = …
+paper-pending = Se comprueba en cuanto termina de cargarse la aplicación completa, en un momento.
 paper-figure = Figura { $number }
 paper-section = Sección { $number }
 paper-section-figure = Sección { $section }, figura { $figure }

@@ -588,6 +588,10 @@ quarter-car-2dof-preset-6 = Amortisseur souple sur route dégradée
 ### paper
 
 paper-unavailable = la démo de cette figure n'est pas disponible
+paper-pending-plot = tracé une fois l'application complète chargée
+paper-pending-mark = chargement…
+paper-pending-value = …
+paper-pending = Vérifié dès que l'application complète est chargée, dans un instant.
 paper-figure = Figure { $number }
 paper-section = Section { $number }
 paper-section-figure = Section { $section }, figure { $figure }
@@ -1230,6 +1234,7 @@ page-tour-paper = L’article indique
 page-tour-app = L’application calcule
 page-tour-confirmed = Confirmé.
 page-tour-differs = Diffère.
+page-tour-pending = Vérification…
 page-copied = Copié
 page-copy-manual = Sélectionnez et copiez (Ctrl+C)
 page-share-title = Partager ou intégrer « { $title } »

@@ -588,6 +588,10 @@ quarter-car-2dof-preset-6 = Amortecedor macio em pista ruim
 ### paper
 
 paper-unavailable = a demonstração desta figura não está disponível
+paper-pending-plot = desenhado quando o aplicativo completo carregar
+paper-pending-mark = carregando…
+paper-pending-value = …
+paper-pending = Verificado assim que o aplicativo completo carregar, em instantes.
 paper-figure = Figura { $number }
 paper-section = Seção { $number }
 paper-section-figure = Seção { $section }, figura { $figure }
@@ -1230,6 +1234,7 @@ page-tour-paper = O artigo diz
 page-tour-app = O aplicativo calcula
 page-tour-confirmed = Confirmado.
 page-tour-differs = Difere.
+page-tour-pending = Verificando…
 page-copied = Copiado
 page-copy-manual = Selecione e copie (Ctrl+C)
 page-share-title = Compartilhar ou incorporar “{ $title }”

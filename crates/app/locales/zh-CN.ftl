@@ -588,6 +588,10 @@ quarter-car-2dof-preset-6 = 差路面上的软阻尼器
 ### paper
 
 paper-unavailable = 此图对应的演示不可用
+paper-pending-plot = 完整应用加载后绘制
+paper-pending-mark = 加载中…
+paper-pending-value = …
+paper-pending = 完整应用加载后即刻核对。
 paper-figure = 图 { $number }
 paper-section = 第 { $number } 节
 paper-section-figure = 第 { $section } 节，图 { $figure }
@@ -1227,6 +1231,7 @@ page-tour-paper = 论文给出
 page-tour-app = 本应用计算得
 page-tour-confirmed = 一致。
 page-tour-differs = 不一致。
+page-tour-pending = 核对中…
 page-copied = 已复制
 page-copy-manual = 请选中并复制（Ctrl+C）
 page-share-title = 分享或嵌入“{ $title }”

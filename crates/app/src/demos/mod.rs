@@ -351,11 +351,12 @@ fn boxed<M: Model>(model: M) -> Box<dyn Demo> {
 
 /// The one list of demos, in menu order: `id, English title => factory;`. It defines
 /// `MENU` (every id and title) and `REGISTRY` (the factories). The ids and titles here
-/// must equal the declarations' (checked by the registry test). `#[runs_other_demos]`
-/// marks a demo that creates others: it has no first module (the post-build hook builds
-/// one for each unmarked line; a first build of a marked one fails).
+/// must equal the declarations' (checked by the registry test). `#[first_with("<id>")]`
+/// marks a demo that shows another's figures (the paper's tour): its first module also
+/// links that demo, the one its first figure comes from (the post-build hook reads the
+/// mark; `FIRST_WITH` lists them for the tests).
 macro_rules! registry {
-    ($($(#[$full:ident])? $id:literal, $title:literal => $make:expr;)*) => {
+    ($($(#[first_with($with:literal)])? $id:literal, $title:literal => $make:expr;)*) => {
         /// Every demo's id and English title, in menu order: a `first` build, which links
         /// only one demo, still lists every demo in its menu.
         const MENU: &[(&str, &str)] = &[$(($id, $title)),*];
@@ -364,24 +365,34 @@ macro_rules! registry {
         #[cfg(not(feature = "first"))]
         const REGISTRY: &[(&str, Factory)] = &[$(($id, $make)),*];
 
-        /// The `first` build (feature `first`): only [`FIRST_DEMO`] is linked, so its
-        /// module is small enough to draw the first plot soon on a slow network; the page
-        /// then switches to the full module (web/main.js). `cfg!` is decided at compile
-        /// time, so the other factories are never referenced.
+        /// Each demo whose first module also links another, with that other.
+        #[cfg(test)]
+        const FIRST_WITH: &[(&str, &str)] = &[$($(($id, $with),)?)*];
+
+        /// The `first` build (feature `first`): only [`FIRST_DEMO`] is linked (and the demo
+        /// its mark names, if any), so its module is small enough to draw the first plot
+        /// soon on a slow network; the page then switches to the full module
+        /// (web/main.js). `cfg!` is decided at compile time, so the other factories are
+        /// never referenced.
         #[cfg(feature = "first")]
-        const REGISTRY: &[(&str, Factory)] = &[(FIRST_DEMO, {
-            const fn only() -> Factory {
+        const REGISTRY: &[(&str, Factory)] = &{
+            /// A linked demo's factory (each slot below is then filled with its own).
+            const fn any_linked() -> Factory {
                 $(if cfg!(first_demo = $id) {
-                    $(panic!(concat!(
-                        $id, " is #[", stringify!($full), "]: it has no first module"
-                    ));)?
-                    #[allow(unreachable_code)]
                     return $make;
                 })*
                 panic!("ZETA_FIRST_DEMO names no demo of the registry");
             }
-            only()
-        })];
+            const LINKED: usize = 0 $(+ cfg!(first_demo = $id) as usize)*;
+            let mut linked: [(&str, Factory); LINKED] = [(FIRST_DEMO, any_linked()); LINKED];
+            let mut i = 0;
+            $(if cfg!(first_demo = $id) {
+                linked[i] = ($id, $make);
+                i += 1;
+            })*
+            assert!(i == LINKED);
+            linked
+        };
     };
 }
 
@@ -398,11 +409,12 @@ registry! {
     "quarter-car-2dof", "Quarter car with body and wheel" => || boxed(quarter_car_2dof::QuarterCar2Dof::default());
     "design", "Design space (k, c)" => || boxed(design::DesignSpace::default());
     "uncertainty", "Tolerance analysis" => || boxed(uncertainty::Uncertainty::default());
-    #[runs_other_demos] "paper", "The paper, checked" => || boxed(paper::Paper);
+    #[first_with("quarter-car")] "paper", "The paper, checked" => || boxed(paper::Paper::default());
 }
 
-/// The demo a `first` build links (`ZETA_FIRST_DEMO` when it was built, see build.rs; the
-/// default demo if unset). A name the registry lacks fails the build (`REGISTRY`).
+/// The demo a `first` build opens (the first id of `ZETA_FIRST_DEMO` when it was built, see
+/// build.rs; the default demo if unset). A name the registry lacks fails the build
+/// (`REGISTRY`).
 #[cfg(feature = "first")]
 pub const FIRST_DEMO: &str = env!("ZETA_FIRST_DEMO");
 
@@ -437,8 +449,11 @@ mod tests {
             .collect();
         #[cfg(feature = "first")]
         {
-            let title = menu().find(|(id, _)| *id == FIRST_DEMO).unwrap().1;
-            assert_eq!(declared, [(FIRST_DEMO, title)]);
+            let with = FIRST_WITH.iter().find(|(id, _)| *id == FIRST_DEMO);
+            let linked: Vec<_> = menu()
+                .filter(|(id, _)| *id == FIRST_DEMO || with.is_some_and(|(_, w)| w == id))
+                .collect();
+            assert_eq!(declared, linked);
         }
         #[cfg(not(feature = "first"))]
         assert_eq!(menu().collect::<Vec<_>>(), declared);

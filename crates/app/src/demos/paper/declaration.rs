@@ -11,7 +11,7 @@ use crate::spec::PlotSpec;
 pub(super) fn declaration() -> Declaration<P, Results> {
     Declaration {
         readouts: readouts! { Results, |r|;
-            formatted "claims", "claims checked", "" => count(r.tour.claims.len());
+            formatted "claims", "claims checked", "" => count(r.tour.claims.len() - r.count(Verdict::Pending));
             formatted "confirmed", "claims confirmed", "" => count(r.count(Verdict::Confirmed));
             formatted "differs", "claims that differ", "" => count(r.count(Verdict::Differs));
         },

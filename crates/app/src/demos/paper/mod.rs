@@ -23,9 +23,13 @@ use crate::figure::{Axis, Figure, Marker};
 use crate::plot::Ink;
 use tour::{CLAIMS, EXHIBITS};
 
-/// The tour. Stateless: the paper does not change.
-#[derive(Debug, Default, Clone, Copy)]
-pub struct Paper;
+/// The tour. The paper does not change; what a first module could not check yet does.
+#[derive(Debug, Default, Clone)]
+pub struct Paper {
+    /// The readouts and thumbnails of the last step still to come (see
+    /// [`Verdict::Pending`]): none with the full module.
+    pending: Vec<&'static str>,
+}
 
 /// No parameters: the tour is the paper's own configuration.
 #[derive(Debug, Default, Clone, Copy)]
@@ -47,8 +51,12 @@ impl Results {
     }
 }
 
-/// The thumbnail of exhibit `id`: its demo's plot, or the demo's primary plot.
-fn thumbnail(e: &tour::Exhibit, runs: &mut verdict::Runs) -> Figure {
+/// The thumbnail of exhibit `id`: its demo's plot, or the demo's primary plot; `None` when
+/// its demo is not linked (a first module's: see [`Verdict::Pending`]).
+fn thumbnail(e: &tour::Exhibit, runs: &mut verdict::Runs) -> Option<Figure> {
+    if !runs.linked(e.at.demo) {
+        return None;
+    }
     let drawn = crate::demos::create(e.at.demo).and_then(|d| {
         let spec = d.spec();
         let key = if e.plot.is_empty() {
@@ -59,15 +67,48 @@ fn thumbnail(e: &tour::Exhibit, runs: &mut verdict::Runs) -> Figure {
         let i = spec.plots.iter().position(|p| p.key == key)?;
         runs.get(e.at.demo, e.at.query)?.figures.get(i).cloned()
     });
-    match drawn {
-        Some(fig) => fig,
-        None => Figure::schematic(
-            verdict::place(e),
-            Axis::linear("", "", (0.0, 1.0)),
-            Axis::linear("", "", (0.0, 1.0)),
-        )
-        .with_marker(Marker::text(text::unavailable(), (0.5, 0.5), Ink::Black))
-        .described(text::unavailable()),
+    Some(drawn.unwrap_or_else(|| {
+        let says = text::unavailable();
+        placeholder(e, says.clone(), says)
+    }))
+}
+
+/// A thumbnail with only the text `mark` in it, described as `says`, in place of exhibit
+/// `e`'s figure.
+fn placeholder(e: &tour::Exhibit, mark: String, says: String) -> Figure {
+    Figure::schematic(
+        verdict::place(e),
+        Axis::linear("", "", (0.0, 1.0)),
+        Axis::linear("", "", (0.0, 1.0)),
+    )
+    .with_marker(Marker::text(mark, (0.5, 0.5), Ink::Black))
+    .described(says)
+}
+
+impl Paper {
+    /// The tour checked with the demos `runs` can run; what it cannot (a first module's)
+    /// is pending.
+    fn check(&mut self, mut runs: verdict::Runs) -> Results {
+        let tour = Tour {
+            exhibits: EXHIBITS.iter().map(verdict::exhibit).collect(),
+            claims: CLAIMS
+                .iter()
+                .filter_map(|c| verdict::judge(c, &mut runs))
+                .collect(),
+        };
+        self.pending.clear();
+        if tour.claims.iter().any(|c| c.verdict == Verdict::Pending) {
+            self.pending.extend(["claims", "confirmed", "differs"]);
+        }
+        let thumbnails = (EXHIBITS.iter())
+            .map(|e| {
+                thumbnail(e, &mut runs).unwrap_or_else(|| {
+                    self.pending.push(e.id);
+                    placeholder(e, text::loading(), text::pending())
+                })
+            })
+            .collect();
+        Results { tour, thumbnails }
     }
 }
 
@@ -76,17 +117,18 @@ impl Model for Paper {
     type Results = Results;
 
     fn step(&mut self, _p: &P) -> Option<Results> {
-        let mut runs = verdict::Runs::default();
-        Some(Results {
-            tour: Tour {
-                exhibits: EXHIBITS.iter().map(verdict::exhibit).collect(),
-                claims: CLAIMS
-                    .iter()
-                    .filter_map(|c| verdict::judge(c, &mut runs))
-                    .collect(),
-            },
-            thumbnails: EXHIBITS.iter().map(|e| thumbnail(e, &mut runs)).collect(),
-        })
+        Some(self.check(verdict::Runs::default()))
+    }
+
+    /// What the first module could not check or draw yet: the full module does, moments
+    /// later (the page marks them provisional meanwhile).
+    fn provisional(&self) -> Vec<&'static str> {
+        self.pending.clone()
+    }
+
+    /// One round while something is pending: the page shows its marks from the start.
+    fn study_round(&self) -> u32 {
+        u32::from(!self.pending.is_empty())
     }
 
     fn figure(&self, plot: usize, _p: &P, r: &Results) -> Option<Figure> {

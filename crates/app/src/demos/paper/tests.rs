@@ -212,3 +212,76 @@ fn the_tour_is_built_in_spanish_with_no_english_left() {
     // English again once the language is restored.
     assert_eq!(tour(), en);
 }
+
+#[test]
+fn a_first_module_checks_what_it_links_and_leaves_the_rest_pending() {
+    // The paper's first module links the demo of its first figure (the registry's mark);
+    // what needs another demo waits for the full module, shown as pending, never guessed.
+    let first = EXHIBITS[0].at.demo;
+    let with = crate::demos::FIRST_WITH
+        .iter()
+        .find(|(id, _)| *id == "paper");
+    assert_eq!(
+        with.map(|(_, w)| *w),
+        Some(first),
+        "the first module links {first}"
+    );
+    let full = Paper::default().check(verdict::Runs::default());
+    let mut paper = Paper::default();
+    let partial = paper.check(verdict::Runs::only(&[first]));
+    assert_eq!(partial.tour.exhibits, full.tour.exhibits);
+    assert_eq!(partial.tour.claims.len(), CLAIMS.len());
+    let (mut checked, mut pending) = (0, 0);
+    for ((def, c), f) in CLAIMS
+        .iter()
+        .zip(&partial.tour.claims)
+        .zip(&full.tour.claims)
+    {
+        if def.at.demo == first {
+            assert_eq!(c, f, "{}: checked as in the full module", c.id);
+            checked += 1;
+        } else {
+            assert_eq!(c.verdict, Verdict::Pending, "{}", c.id);
+            assert_eq!((&c.id, &c.claimed, &c.link), (&f.id, &f.claimed, &f.link));
+            assert_eq!(c.computed, "…");
+            pending += 1;
+        }
+    }
+    assert!(
+        checked > 0 && pending > 0,
+        "{checked} checked, {pending} pending"
+    );
+    let marked = paper.provisional();
+    for key in ["claims", "confirmed", "differs"] {
+        assert!(marked.contains(&key), "{key}: counts to come");
+    }
+    assert_eq!(partial.count(Verdict::Pending), pending);
+    for ((e, thumb), full_thumb) in EXHIBITS
+        .iter()
+        .zip(&partial.thumbnails)
+        .zip(&full.thumbnails)
+    {
+        if e.at.demo == first {
+            // Debug text: figures may hold NaN gaps, which `==` never equates.
+            assert_eq!(format!("{thumb:?}"), format!("{full_thumb:?}"), "{}", e.id);
+            assert!(!marked.contains(&e.id), "{}", e.id);
+        } else {
+            assert!(marked.contains(&e.id), "{} marked", e.id);
+            assert!(
+                thumb.description.contains("loaded"),
+                "{}",
+                thumb.description
+            );
+        }
+    }
+    assert_eq!(paper.study_round(), 1, "the marks start with the page");
+    // The full module's tour has nothing pending.
+    let mut whole = Paper::default();
+    let all = whole.check(verdict::Runs::default());
+    assert!(all
+        .tour
+        .claims
+        .iter()
+        .all(|c| c.verdict != Verdict::Pending));
+    assert!(whole.provisional().is_empty() && whole.study_round() == 0);
+}

@@ -13,3 +13,13 @@ to open the demo in exactly that state.";
 pub(super) fn unavailable() -> String {
     t!("paper-unavailable")
 }
+
+/// The thumbnail's text while its demo is not linked (a first module's).
+pub(super) fn pending() -> String {
+    t!("paper-pending-plot")
+}
+
+/// The word in a thumbnail while its demo is not linked.
+pub(super) fn loading() -> String {
+    t!("paper-pending-mark")
+}

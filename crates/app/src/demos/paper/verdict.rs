@@ -23,6 +23,9 @@ pub enum Verdict {
     Confirmed,
     /// It does not; the reason says why.
     Differs,
+    /// Not checked yet: its demo is not in the page's first module (which links only the
+    /// demo of the tour's first figure); the full module, moments later, checks it.
+    Pending,
 }
 
 /// One checked claim, as the page shows it.
@@ -89,12 +92,37 @@ fn run(demo: &str, query: &str) -> Option<Frame> {
 /// The linked demos' frames, each `(demo, query)` computed once per tour: several
 /// exhibits and claims share a state (the integrators at h = 0.3 s serve five of them).
 #[derive(Default)]
-pub(super) struct Runs(std::collections::HashMap<(&'static str, &'static str), Option<Frame>>);
+pub(super) struct Runs {
+    frames: std::collections::HashMap<(&'static str, &'static str), Option<Frame>>,
+    /// Tests: the only demos linked, as in a first module (every registered one if `None`).
+    #[cfg(test)]
+    only: Option<Vec<&'static str>>,
+}
 
 impl Runs {
-    /// Demo `demo` at `query` (see [`run`]); `None` if the demo is not registered.
+    /// Tests: runs as a module that links only the demos `only` would make them.
+    #[cfg(test)]
+    pub(super) fn only(only: &[&'static str]) -> Self {
+        Runs {
+            only: Some(only.to_vec()),
+            ..Runs::default()
+        }
+    }
+
+    /// Whether this module links demo `demo` (a first module links one or two).
+    pub(super) fn linked(&self, demo: &str) -> bool {
+        let registered = crate::demos::ids().any(|id| id == demo);
+        #[cfg(test)]
+        let registered = registered && self.only.as_ref().is_none_or(|o| o.contains(&demo));
+        registered
+    }
+
+    /// Demo `demo` at `query` (see [`run`]); `None` if the demo is not linked.
     pub(super) fn get(&mut self, demo: &'static str, query: &'static str) -> Option<&Frame> {
-        self.0
+        if !self.linked(demo) {
+            return None;
+        }
+        self.frames
             .entry((demo, query))
             .or_insert_with(|| run(demo, query))
             .as_ref()
@@ -147,12 +175,44 @@ fn euler_slope(frame_query: &str) -> Option<(f64, f64, f64)> {
     Some((slope, *steps.last()?, h))
 }
 
-/// Checks one claim; `None` only if its demo is missing from the registry.
-pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
-    let frame = runs.get(def.at.demo, def.at.query)?;
-    // The paper's numbers carry two or three digits.
+/// The paper's value of a claim, formatted (two or three digits, as the paper gives them).
+fn claimed(def: &ClaimDef) -> Option<String> {
     let fmt = |v: f64| si(v, def.unit, 3);
-    let (claimed, computed, agrees, why) = match def.check {
+    Some(match def.check {
+        Check::Near { claimed, .. } | Check::Slope { claimed, .. } => fmt(claimed),
+        Check::Below { bound, .. } => format!("< {}", fmt(bound)),
+        Check::Range { claimed, .. } => {
+            t!("paper-range", low = fmt(claimed.0), high = fmt(claimed.1))
+        }
+        Check::PeakFormula { zeta, .. } => si(frf::peak(zeta)?.ratio, "", 6),
+    })
+}
+
+/// A claim whose demo this module does not link (a first module's): the paper's value,
+/// and a verdict to come.
+fn pending(def: &ClaimDef) -> Option<ClaimView> {
+    Some(ClaimView {
+        id: def.id,
+        place: def.place.text(),
+        beside: def.beside,
+        says: (def.says)(),
+        link: link(def.at.demo, def.at.query),
+        claimed: claimed(def)?,
+        computed: t!("paper-pending-value"),
+        verdict: Verdict::Pending,
+        reason: t!("paper-pending"),
+    })
+}
+
+/// Checks one claim (pending if its demo is not linked: see [`Verdict::Pending`]); `None`
+/// only if a readout it reads is missing.
+pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
+    let Some(frame) = runs.get(def.at.demo, def.at.query) else {
+        return pending(def);
+    };
+    let paper = claimed(def)?;
+    let fmt = |v: f64| si(v, def.unit, 3);
+    let (computed, agrees, why) = match def.check {
         Check::Near {
             readout: key,
             claimed,
@@ -160,7 +220,7 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
         } => {
             let (v, shown) = readout(frame, key)?;
             let agrees = (v - claimed).abs() <= tol;
-            let (paper, tolerance) = (fmt(claimed), si(tol, def.unit, 2));
+            let tolerance = si(tol, def.unit, 2);
             let why = if agrees {
                 t!(
                     "paper-near-agrees",
@@ -176,7 +236,7 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
                     tolerance = tolerance
                 )
             };
-            (paper, shown, agrees, why)
+            (shown, agrees, why)
         }
         Check::Below {
             readout: key,
@@ -189,7 +249,7 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
             } else {
                 t!("paper-below-differs", computed = &shown, bound = fmt(bound))
             };
-            (format!("< {}", fmt(bound)), shown, agrees, why)
+            (shown, agrees, why)
         }
         Check::Range {
             lo,
@@ -205,8 +265,7 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
             } else {
                 t!("paper-range-differs", low = a_text, high = b_text)
             };
-            let claimed = t!("paper-range", low = fmt(claimed.0), high = fmt(claimed.1));
-            (claimed, computed, agrees, why)
+            (computed, agrees, why)
         }
         Check::PeakFormula { zeta, tol } => {
             let formula = frf::peak(zeta)?.ratio;
@@ -217,7 +276,7 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
                 found = si(found, "", 6),
                 formula = si(formula, "", 6)
             );
-            (si(formula, "", 6), si(found, "", 6), agrees, why)
+            (si(found, "", 6), agrees, why)
         }
         Check::Slope { claimed, tol } => {
             let (slope, h_min, h_max) = euler_slope(def.at.query)?;
@@ -228,7 +287,7 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
                 smallest = si(h_min, "s", 3),
                 slope = si(slope, "", 3)
             );
-            (fmt(claimed), si(slope, "", 3), agrees, why)
+            (si(slope, "", 3), agrees, why)
         }
     };
     let mut reason = why;
@@ -253,7 +312,7 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
         beside: def.beside,
         says: (def.says)(),
         link: link(def.at.demo, def.at.query),
-        claimed,
+        claimed: paper,
         computed,
         verdict: if agrees {
             Verdict::Confirmed
