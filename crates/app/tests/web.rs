@@ -183,6 +183,8 @@ fn hostile_queries_become_notices_not_errors() {
     s.update(1.0, false).unwrap();
 }
 
+/// The full module's (a first module has neither `pick` nor `probe`).
+#[cfg(not(feature = "first"))]
 #[wasm_bindgen_test]
 fn a_click_on_a_plot_this_session_has_not_drawn_yet_still_picks() {
     // As after the full module takes over: the page shows the first module's drawing of
