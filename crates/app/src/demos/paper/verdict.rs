@@ -188,20 +188,38 @@ fn claimed(def: &ClaimDef) -> Option<String> {
     })
 }
 
-/// A claim whose demo this module does not link (a first module's): the paper's value,
-/// and a verdict to come.
-fn pending(def: &ClaimDef) -> Option<ClaimView> {
-    Some(ClaimView {
+/// Claim `def` as the page shows it: what the definition says, the paper's value
+/// (`claimed`), the app's (`computed`), the verdict and why.
+fn view(
+    def: &ClaimDef,
+    claimed: String,
+    computed: String,
+    verdict: Verdict,
+    reason: String,
+) -> ClaimView {
+    ClaimView {
         id: def.id,
         place: def.place.text(),
         beside: def.beside,
         says: (def.says)(),
         link: link(def.at.demo, def.at.query),
-        claimed: claimed(def)?,
-        computed: t!("paper-pending-value"),
-        verdict: Verdict::Pending,
-        reason: t!("paper-pending"),
-    })
+        claimed,
+        computed,
+        verdict,
+        reason,
+    }
+}
+
+/// A claim whose demo this module does not link (a first module's): the paper's value,
+/// and a verdict to come.
+fn pending(def: &ClaimDef) -> Option<ClaimView> {
+    Some(view(
+        def,
+        claimed(def)?,
+        t!("paper-pending-value"),
+        Verdict::Pending,
+        t!("paper-pending"),
+    ))
 }
 
 /// Checks one claim (pending if its demo is not linked: see [`Verdict::Pending`]); `None`
@@ -306,19 +324,9 @@ pub(super) fn judge(def: &ClaimDef, runs: &mut Runs) -> Option<ClaimView> {
             );
         }
     }
-    Some(ClaimView {
-        id: def.id,
-        place: def.place.text(),
-        beside: def.beside,
-        says: (def.says)(),
-        link: link(def.at.demo, def.at.query),
-        claimed: paper,
-        computed,
-        verdict: if agrees {
-            Verdict::Confirmed
-        } else {
-            Verdict::Differs
-        },
-        reason,
-    })
+    let verdict = match agrees {
+        true => Verdict::Confirmed,
+        false => Verdict::Differs,
+    };
+    Some(view(def, paper, computed, verdict, reason))
 }
