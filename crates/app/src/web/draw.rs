@@ -73,6 +73,17 @@ impl Session {
             .collect()
     }
 
+    /// Draws plot `i` alone (see [`Session::draw_plots`]): a plot a task while the controls
+    /// rest, or one the page needs drawn now.
+    #[cfg(not(feature = "first"))]
+    pub(super) fn draw_one(&mut self, i: usize, how: Drawn) -> Result<(), JsError> {
+        let mut wanted = vec![false; self.canvases.len()];
+        if let Some(w) = wanted.get_mut(i) {
+            *w = true;
+        }
+        self.draw_plots(&wanted, how)
+    }
+
     /// Draws the built figures whose `wanted` flag is set on their attached canvases,
     /// clearing their `stale` mark and keeping where each was drawn.
     pub(super) fn draw_plots(&mut self, wanted: &[bool], how: Drawn) -> Result<(), JsError> {

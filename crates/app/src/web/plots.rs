@@ -129,8 +129,7 @@ impl Session {
     /// Plot `key`'s index, drawn by this session: one on screen that it has not drawn yet
     /// (after a take-over the page shows the first module's drawing until the catch-up
     /// draws it again, the same pixels) is drawn now, from the last update's results, so
-    /// that a click or the pointer on it is read against what is seen. Before, such a click
-    /// found no plot and did nothing (a flake of design's map test on a loaded machine).
+    /// that a click or the pointer on it is read against what is seen.
     #[cfg(not(feature = "first"))]
     fn drawn_plot(&mut self, key: &str) -> Result<Option<usize>, JsError> {
         let Some(i) = self.plot_index(key) else {
@@ -139,9 +138,7 @@ impl Session {
         let undrawn = self.geometry.get(i).is_some_and(Option::is_none) || self.built(i).is_none();
         if let (true, Some(how)) = (undrawn && self.attached(i), self.last_drawn) {
             self.build(i);
-            let mut wanted = vec![false; self.canvases.len()];
-            wanted[i] = true;
-            self.draw_plots(&wanted, how)?;
+            self.draw_one(i, how)?;
         }
         Ok(Some(i))
     }

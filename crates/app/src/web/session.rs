@@ -243,9 +243,7 @@ impl Session {
         let Some(i) = redraw else {
             return Ok(false);
         };
-        let mut wanted = vec![false; self.canvases.len()];
-        wanted[i] = true;
-        self.draw_plots(&wanted, Drawn { scale, dark })?;
+        self.draw_one(i, Drawn { scale, dark })?;
         Ok(true)
     }
 
