@@ -174,9 +174,14 @@ test('the language menu lists every language by its own name and switches page a
   const options = await page.$$eval('#lang-select option', (os) => os.map((o) => [o.value, o.textContent]));
   assert.deepEqual(options.map(([v]) => v), real(), 'real languages only, pseudo-locales hidden');
   for (const [v, name] of options) assert.equal(name, langs.find((l) => l.tag === v).name);
+  // A text every frame writes with the same arguments (the page keeps the texts it has
+  // formatted): it must not stay English after the switch.
+  const clock = () => page.getAttribute('.anim-bar input[type=range]', 'aria-valuetext');
+  assert.match(await clock(), /^time [\d.]+ seconds$/);
   await page.selectOption('#lang-select', 'fr');
   await page.waitForFunction(() => document.documentElement.lang === 'fr');
   await page.waitForFunction(() => document.querySelector('#share-button').textContent === 'Partager / Intégrer');
+  await page.waitForFunction(() => /^temps [\d,]+ secondes$/.test(document.querySelector('.anim-bar input[type=range]').getAttribute('aria-valuetext')));
   assert.equal(await page.inputValue('input[type=number][data-key="zeta"]'), '0.25');
   assert.equal(await page.inputValue('input[type=number][data-key="x0"]'), '0.05');
   assert.equal(new URL(page.url()).searchParams.get('lang'), 'fr');

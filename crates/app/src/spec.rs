@@ -213,7 +213,7 @@ pub struct Table {
 
 /// Live cells: a table cell whose whole text is `{readout:<key>}` (write it with
 /// [`live_cell!`](crate::live_cell)) shows the current text of readout `key` of the same
-/// demo, refreshed on every update by the page (`web/live-table.js`). Everything else about
+/// demo, refreshed on every update by the page (`fillLiveCells` in `web/ui.js`). Everything else about
 /// the table stays static text; a table without such cells is unchanged.
 ///
 /// ```
