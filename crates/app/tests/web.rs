@@ -121,6 +121,86 @@ fn a_canvas_remembers_its_drawing_state_only_while_the_context_keeps_it() {
     assert!(!dashed(), "a dash left by another drawing");
 }
 
+/// Counts the pixels of row `y` close to `rgb` (as [`count_colour`]).
+fn count_in_row(c: &HtmlCanvasElement, y: u32, rgb: (u8, u8, u8)) -> usize {
+    let ctx: CanvasRenderingContext2d = c.get_context("2d").unwrap().unwrap().dyn_into().unwrap();
+    let data = ctx
+        .get_image_data(0.0, f64::from(y), f64::from(c.width()), 1.0)
+        .unwrap()
+        .data();
+    data.chunks(4)
+        .filter(|p| (0..3).all(|i| (p[i] as i32 - [rgb.0, rgb.1, rgb.2][i] as i32).abs() < 40))
+        .count()
+}
+
+/// Lines in one stroke, and dots in one colour, are traced into one path and painted once
+/// (`canvas::html::Batch`): the run must be painted before anything else changes what
+/// painting it would do (a dash set through the canvas's direct handle, a shape drawn
+/// over it) and when the drawing ends, or lines come out dashed, dots over what was drawn
+/// after them, or nothing at all.
+#[wasm_bindgen_test]
+fn a_run_of_lines_or_dots_is_painted_before_whatever_follows_it() {
+    use plotters::prelude::*;
+    use plotters_backend::DrawingBackend;
+    use zeta_app::render::Direct;
+    let c = canvas(200, 100);
+    {
+        let mut b = zeta_app::canvas::HtmlCanvas::new(&c).unwrap();
+        let direct = b.direct();
+        let red = RGBColor(230, 0, 0).stroke_width(3);
+        // A run of two solid red lines, then a dash for a blue line, then solid again.
+        b.draw_line((0, 20), (199, 20), &red).unwrap();
+        b.draw_line((0, 40), (199, 40), &red).unwrap();
+        direct.dash(&[6.0, 6.0]);
+        b.draw_line((0, 60), (199, 60), &RGBColor(0, 0, 230).stroke_width(3))
+            .unwrap();
+        direct.dash(&[]);
+        // A run of green dots, the second covered by a black square drawn after it.
+        let green = RGBColor(0, 160, 0).filled();
+        b.draw_circle((20, 85), 6, &green, true).unwrap();
+        b.draw_circle((100, 85), 6, &green, true).unwrap();
+        b.draw_rect((90, 75), (111, 96), &BLACK.filled(), true)
+            .unwrap();
+        b.draw_circle((180, 85), 6, &green, true).unwrap();
+        // Dropped here with its last dot unpainted.
+    }
+    let (red, blue) = ((230, 0, 0), (0, 0, 230));
+    assert!(
+        count_in_row(&c, 20, red) >= 198,
+        "the first line was dashed"
+    );
+    assert!(
+        count_in_row(&c, 40, red) >= 198,
+        "the second line was dashed"
+    );
+    let dashed = count_in_row(&c, 60, blue);
+    assert!(
+        (80..130).contains(&dashed),
+        "the dashed line: {dashed} of 200 px"
+    );
+    let green = (0, 160, 0);
+    assert!(count_in_row(&c, 85, green) > 10, "the first dot");
+    let row_green = |from: usize, to: usize| {
+        let ctx: CanvasRenderingContext2d =
+            c.get_context("2d").unwrap().unwrap().dyn_into().unwrap();
+        let data = ctx.get_image_data(0.0, 85.0, 200.0, 1.0).unwrap().data();
+        data.chunks(4)
+            .skip(from)
+            .take(to - from)
+            .filter(|p| p[1] > 120 && p[0] < 60 && p[2] < 60)
+            .count()
+    };
+    assert_eq!(
+        row_green(92, 110),
+        0,
+        "a dot painted over the square drawn after it"
+    );
+    assert!(
+        row_green(170, 190) > 5,
+        "the last dot, painted when the drawing ended"
+    );
+}
+
 #[wasm_bindgen_test]
 fn regimes_draws_its_curve_and_poles_onto_canvases() {
     let response = canvas(760, 400);

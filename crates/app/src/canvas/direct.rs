@@ -14,6 +14,15 @@ pub struct CanvasDirect {
     pub(super) canvas: HtmlCanvasElement,
     pub(super) context: CanvasRenderingContext2d,
     pub(super) muted: Rc<Cell<bool>>,
+    /// The backend's unpainted run, painted before this draws anything or sets a dash.
+    pub(super) batch: Rc<Cell<super::html::Batch>>,
+}
+
+impl CanvasDirect {
+    /// Paints the backend's pending run (see `html::Batch`).
+    fn flush(&self) {
+        super::html::paint_batch(&self.context, &self.batch);
+    }
 }
 
 /// A canvas's static layer: the key of the layer last begun on it, in how many frames in
@@ -155,14 +164,17 @@ pub fn keeps_layer(canvas: &HtmlCanvasElement) -> bool {
 
 impl Direct for CanvasDirect {
     fn dash(&self, pattern: &[f64]) {
+        self.flush();
         set_line_dash(&self.context, pattern);
     }
 
     fn mute(&self, on: bool) {
+        self.flush();
         self.muted.set(on);
     }
 
     fn begin_layer(&self, key: u64) -> Option<LayerNote> {
+        self.flush();
         if KEEPS_NO_LAYER {
             return None;
         }
@@ -206,6 +218,7 @@ impl Direct for CanvasDirect {
     }
 
     fn end_layer(&self, key: u64, note: LayerNote) {
+        self.flush();
         if self.muted.replace(false) || KEEPS_NO_LAYER {
             return;
         }
@@ -234,6 +247,7 @@ impl Direct for CanvasDirect {
     }
 
     fn stretch(&self, image: &Stretched<'_>) {
+        self.flush();
         let (w, h) = image.size;
         let n = (w as usize) * (h as usize);
         if image.rgb.len() < n * 3 || n == 0 {

@@ -14,6 +14,13 @@
 //! the context's state (resizing its canvas, even to the same size; a lost and restored
 //! context; another backend's drawing on it) must empty the memory; the context's
 //! `shadowOffsetX` carries the memory's stamp to tell (see [`Memory::claim`]).
+//!
+//! A run of lines in one stroke (a plot's grid lines, its ticks, the two strokes of each
+//! `×` marker) or of filled dots in one colour is traced into one path and painted once
+//! ([`Batch`]), where each was a path and a paint of its own: a plot's frame made ~140
+//! strokes (integrators' response plot: 51 grid lines, 12 ticks, 24 crosses) and as
+//! many calls from wasm into the context each. The pixels are the same but where two
+//! strokes of a run cross or two dots overlap (painted once, not twice over).
 
 use super::direct::{set_line_dash, CanvasDirect};
 use crate::render::corners;
@@ -23,6 +30,7 @@ use plotters_backend::{
     FontTransform,
 };
 use std::cell::Cell;
+use std::f64::consts::TAU;
 use std::rc::Rc;
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
@@ -50,7 +58,7 @@ fn failed(e: JsValue) -> DrawingErrorKind<CanvasError> {
 
 /// A colour as the context holds it: RGB and the alpha's bits (exact comparison).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-struct Ink(u8, u8, u8, u64);
+pub(super) struct Ink(u8, u8, u8, u64);
 
 impl Ink {
     fn of(c: BackendColor) -> Self {
@@ -65,6 +73,34 @@ impl Ink {
         } else {
             format!("rgba({r},{g},{b},{})", c.alpha)
         }
+    }
+}
+
+/// What the context's current path holds that is not painted yet: a run of lines in one
+/// stroke colour and width, or of filled dots in one colour (see the module docs). Shared
+/// with the canvas's [`CanvasDirect`], which paints it before drawing anything itself.
+#[derive(Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Batch {
+    /// Nothing pending.
+    #[default]
+    Empty,
+    /// Lines, to be stroked with this colour and width (the context's stroke state).
+    Lines(Ink, u32),
+    /// Dots, to be filled with this colour (the context's fill state).
+    Dots(Ink),
+}
+
+/// Whether runs are batched (see [`Batch`]). Not in a demo's first module, which draws the
+/// first frames only and whose bytes are the first plot's wait.
+const BATCHES: bool = !cfg!(feature = "first");
+
+/// Paints what `batch` says the path of `context` holds, and empties it: called before
+/// anything else is drawn, a style changes or a dash is set, and when a drawing ends.
+pub(super) fn paint_batch(context: &CanvasRenderingContext2d, batch: &Cell<Batch>) {
+    match batch.replace(Batch::Empty) {
+        Batch::Empty => {}
+        Batch::Lines(..) => context.stroke(),
+        Batch::Dots(_) => context.fill(),
     }
 }
 
@@ -138,6 +174,8 @@ pub struct HtmlCanvas {
     memory: Rc<Memory>,
     /// Drawing nothing (see `render::Direct::mute`); shared with [`CanvasDirect`].
     muted: Rc<Cell<bool>>,
+    /// What the path holds unpainted; shared with [`CanvasDirect`].
+    batch: Rc<Cell<Batch>>,
 }
 
 impl HtmlCanvas {
@@ -162,7 +200,23 @@ impl HtmlCanvas {
             context,
             memory,
             muted: Rc::default(),
+            batch: Rc::default(),
         }
+    }
+
+    /// Paints the pending run (see [`Batch`]).
+    fn flush(&self) {
+        paint_batch(&self.context, &self.batch);
+    }
+
+    /// Whether the next line or dot continues the pending run `run` (then it is only
+    /// traced); otherwise the run is painted first.
+    fn continues(&self, run: Batch) -> bool {
+        if BATCHES && !self.muted.get() && self.batch.get() == run {
+            return true;
+        }
+        self.flush();
+        false
     }
 
     fn stroke_style(&mut self, style: &impl BackendStyle) {
@@ -250,6 +304,7 @@ impl HtmlCanvas {
             canvas: self.canvas.clone(),
             context: self.context.clone(),
             muted: self.muted.clone(),
+            batch: self.batch.clone(),
         }
     }
 
@@ -272,6 +327,14 @@ impl HtmlCanvas {
 }
 
 type Result<T> = std::result::Result<T, DrawingErrorKind<CanvasError>>;
+
+impl Drop for HtmlCanvas {
+    /// A drawing's last run is painted when its backend goes (plotters need not call
+    /// `present`).
+    fn drop(&mut self) {
+        self.flush();
+    }
+}
 
 /// A 1 px line along a pixel row or column lies between two of them and comes out as a
 /// blurred 2 px line; half a pixel over puts it on one.
@@ -303,10 +366,12 @@ impl DrawingBackend for HtmlCanvas {
     }
 
     fn present(&mut self) -> Result<()> {
+        self.flush();
         Ok(())
     }
 
     fn draw_pixel(&mut self, point: BackendCoord, color: BackendColor) -> Result<()> {
+        self.flush();
         if color.alpha == 0.0 || self.muted.get() {
             return Ok(());
         }
@@ -322,14 +387,23 @@ impl DrawingBackend for HtmlCanvas {
         to: BackendCoord,
         style: &S,
     ) -> Result<()> {
+        let (a, b) = crisp(from, to);
+        let run = Batch::Lines(Ink::of(style.color()), style.stroke_width());
+        if self.continues(run) {
+            self.context.move_to(a.0, a.1);
+            self.context.line_to(b.0, b.1);
+            return Ok(());
+        }
         if !self.paint(style, false) {
             return Ok(());
         }
-        let (a, b) = crisp(from, to);
         self.context.begin_path();
         self.context.move_to(a.0, a.1);
         self.context.line_to(b.0, b.1);
-        self.context.stroke();
+        match BATCHES {
+            true => self.batch.set(run),
+            false => self.context.stroke(),
+        }
         Ok(())
     }
 
@@ -340,6 +414,7 @@ impl DrawingBackend for HtmlCanvas {
         style: &S,
         fill: bool,
     ) -> Result<()> {
+        self.flush();
         if !self.paint(style, fill) {
             return Ok(());
         }
@@ -360,6 +435,7 @@ impl DrawingBackend for HtmlCanvas {
         path: I,
         style: &S,
     ) -> Result<()> {
+        self.flush();
         if self.paint(style, false) && self.trace(path) {
             self.context.stroke();
         }
@@ -371,6 +447,7 @@ impl DrawingBackend for HtmlCanvas {
         vert: I,
         style: &S,
     ) -> Result<()> {
+        self.flush();
         if self.paint(style, true) && self.trace(vert) {
             self.context.close_path();
             self.context.fill();
@@ -385,23 +462,23 @@ impl DrawingBackend for HtmlCanvas {
         style: &S,
         fill: bool,
     ) -> Result<()> {
+        let (x, y, r) = (f64::from(center.0), f64::from(center.1), f64::from(radius));
+        let run = Batch::Dots(Ink::of(style.color()));
+        if fill && self.continues(run) {
+            // A dot of its own within the path: an arc would join the last one's end.
+            self.context.move_to(x + r, y);
+            return self.context.arc(x, y, r, 0.0, TAU).map_err(failed);
+        }
+        self.flush();
         if !self.paint(style, fill) {
             return Ok(());
         }
         self.context.begin_path();
-        self.context
-            .arc(
-                f64::from(center.0),
-                f64::from(center.1),
-                f64::from(radius),
-                0.0,
-                std::f64::consts::TAU,
-            )
-            .map_err(failed)?;
-        if fill {
-            self.context.fill();
-        } else {
-            self.context.stroke();
+        self.context.arc(x, y, r, 0.0, TAU).map_err(failed)?;
+        match (fill, BATCHES) {
+            (true, true) => self.batch.set(run),
+            (true, false) => self.context.fill(),
+            (false, _) => self.context.stroke(),
         }
         Ok(())
     }
@@ -412,6 +489,7 @@ impl DrawingBackend for HtmlCanvas {
         style: &S,
         pos: BackendCoord,
     ) -> Result<()> {
+        self.flush();
         let color = style.color();
         // An empty text (the blank caption that keeps a plot's title band) draws nothing.
         if color.alpha == 0.0 || self.muted.get() || text.is_empty() {
