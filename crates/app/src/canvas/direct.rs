@@ -14,7 +14,8 @@ pub struct CanvasDirect {
     pub(super) canvas: HtmlCanvasElement,
     pub(super) context: CanvasRenderingContext2d,
     pub(super) muted: Rc<Cell<bool>>,
-    /// The backend's unpainted run, painted before this draws anything or sets a dash.
+    /// The backend's unstroked run of lines, painted before this draws anything or sets a
+    /// dash.
     pub(super) batch: Rc<Cell<super::html::Batch>>,
 }
 

@@ -15,12 +15,13 @@
 //! context; another backend's drawing on it) must empty the memory; the context's
 //! `shadowOffsetX` carries the memory's stamp to tell (see [`Memory::claim`]).
 //!
-//! A run of lines in one stroke (a plot's grid lines, its ticks, the two strokes of each
-//! `×` marker) or of filled dots in one colour is traced into one path and painted once
-//! ([`Batch`]), where each was a path and a paint of its own: a plot's frame made ~140
-//! strokes (integrators' response plot: 51 grid lines, 12 ticks, 24 crosses) and as
-//! many calls from wasm into the context each. The pixels are the same but where two
-//! strokes of a run cross or two dots overlap (painted once, not twice over).
+//! A run of lines in one stroke (a plot's grid lines, the two strokes of each `×` marker)
+//! is traced into one path and stroked once ([`Batch`]), where each line was a path and a
+//! stroke of its own: a plot's frame made ~140 strokes (integrators' response plot: 51
+//! grid lines, 12 ticks, 24 crosses) and four calls from wasm into the context each. The
+//! pixels are the same but where two lines of a run cross (stroked once, not twice over).
+//! First modules batch too, so the full module's take-over draws the same pixels; dots
+//! are not batched (a run of them saved little more and cost a first module 135 bytes).
 
 use super::direct::{set_line_dash, CanvasDirect};
 use crate::render::corners;
@@ -77,8 +78,8 @@ impl Ink {
 }
 
 /// What the context's current path holds that is not painted yet: a run of lines in one
-/// stroke colour and width, or of filled dots in one colour (see the module docs). Shared
-/// with the canvas's [`CanvasDirect`], which paints it before drawing anything itself.
+/// stroke colour and width (see the module docs). Shared with the canvas's
+/// [`CanvasDirect`], which paints it before drawing anything itself.
 #[derive(Debug, Default, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Batch {
     /// Nothing pending.
@@ -86,21 +87,14 @@ pub(super) enum Batch {
     Empty,
     /// Lines, to be stroked with this colour and width (the context's stroke state).
     Lines(Ink, u32),
-    /// Dots, to be filled with this colour (the context's fill state).
-    Dots(Ink),
 }
-
-/// Whether runs are batched (see [`Batch`]). Not in a demo's first module, which draws the
-/// first frames only and whose bytes are the first plot's wait.
-const BATCHES: bool = !cfg!(feature = "first");
 
 /// Paints what `batch` says the path of `context` holds, and empties it: called before
 /// anything else is drawn, a style changes or a dash is set, and when a drawing ends.
+#[inline(never)] // called from every drawing method: one copy, not one each (bytes)
 pub(super) fn paint_batch(context: &CanvasRenderingContext2d, batch: &Cell<Batch>) {
-    match batch.replace(Batch::Empty) {
-        Batch::Empty => {}
-        Batch::Lines(..) => context.stroke(),
-        Batch::Dots(_) => context.fill(),
+    if batch.replace(Batch::Empty) != Batch::Empty {
+        context.stroke();
     }
 }
 
@@ -209,10 +203,10 @@ impl HtmlCanvas {
         paint_batch(&self.context, &self.batch);
     }
 
-    /// Whether the next line or dot continues the pending run `run` (then it is only
-    /// traced); otherwise the run is painted first.
+    /// Whether the next line continues the pending run `run` (then it is only traced);
+    /// otherwise the run is painted first.
     fn continues(&self, run: Batch) -> bool {
-        if BATCHES && !self.muted.get() && self.batch.get() == run {
+        if !self.muted.get() && self.batch.get() == run {
             return true;
         }
         self.flush();
@@ -400,10 +394,7 @@ impl DrawingBackend for HtmlCanvas {
         self.context.begin_path();
         self.context.move_to(a.0, a.1);
         self.context.line_to(b.0, b.1);
-        match BATCHES {
-            true => self.batch.set(run),
-            false => self.context.stroke(),
-        }
+        self.batch.set(run);
         Ok(())
     }
 
@@ -462,23 +453,16 @@ impl DrawingBackend for HtmlCanvas {
         style: &S,
         fill: bool,
     ) -> Result<()> {
-        let (x, y, r) = (f64::from(center.0), f64::from(center.1), f64::from(radius));
-        let run = Batch::Dots(Ink::of(style.color()));
-        if fill && self.continues(run) {
-            // A dot of its own within the path: an arc would join the last one's end.
-            self.context.move_to(x + r, y);
-            return self.context.arc(x, y, r, 0.0, TAU).map_err(failed);
-        }
         self.flush();
         if !self.paint(style, fill) {
             return Ok(());
         }
+        let (x, y, r) = (f64::from(center.0), f64::from(center.1), f64::from(radius));
         self.context.begin_path();
         self.context.arc(x, y, r, 0.0, TAU).map_err(failed)?;
-        match (fill, BATCHES) {
-            (true, true) => self.batch.set(run),
-            (true, false) => self.context.fill(),
-            (false, _) => self.context.stroke(),
+        match fill {
+            true => self.context.fill(),
+            false => self.context.stroke(),
         }
         Ok(())
     }
