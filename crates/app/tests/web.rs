@@ -21,20 +21,25 @@ fn canvas(w: u32, h: u32) -> HtmlCanvasElement {
     c
 }
 
-/// Counts pixels close to `rgb` (within 40 per channel).
-fn count_colour(c: &HtmlCanvasElement, rgb: (u8, u8, u8)) -> usize {
+/// Whether pixel `p` (RGBA) is close to `rgb`: within 40 per channel.
+fn near(p: &[u8], rgb: (u8, u8, u8)) -> bool {
+    let close = |a: u8, b: u8| (i32::from(a) - i32::from(b)).abs() < 40;
+    close(p[0], rgb.0) && close(p[1], rgb.1) && close(p[2], rgb.2)
+}
+
+/// Counts the pixels of `c` close to `rgb` in the rectangle at `(x, y)` of `w` × `h`.
+fn count_in(c: &HtmlCanvasElement, (x, y, w, h): (u32, u32, u32, u32), rgb: (u8, u8, u8)) -> usize {
     let ctx: CanvasRenderingContext2d = c.get_context("2d").unwrap().unwrap().dyn_into().unwrap();
     let data = ctx
-        .get_image_data(0.0, 0.0, c.width() as f64, c.height() as f64)
+        .get_image_data(f64::from(x), f64::from(y), f64::from(w), f64::from(h))
         .unwrap()
         .data();
-    data.chunks(4)
-        .filter(|p| {
-            (p[0] as i32 - rgb.0 as i32).abs() < 40
-                && (p[1] as i32 - rgb.1 as i32).abs() < 40
-                && (p[2] as i32 - rgb.2 as i32).abs() < 40
-        })
-        .count()
+    data.chunks(4).filter(|p| near(p, rgb)).count()
+}
+
+/// Counts pixels close to `rgb` (within 40 per channel).
+fn count_colour(c: &HtmlCanvasElement, rgb: (u8, u8, u8)) -> usize {
+    count_in(c, (0, 0, c.width(), c.height()), rgb)
 }
 
 /// Text is measured in the font asked for, however often: the canvas backend remembers
@@ -123,14 +128,7 @@ fn a_canvas_remembers_its_drawing_state_only_while_the_context_keeps_it() {
 
 /// Counts the pixels of row `y` close to `rgb` (as [`count_colour`]).
 fn count_in_row(c: &HtmlCanvasElement, y: u32, rgb: (u8, u8, u8)) -> usize {
-    let ctx: CanvasRenderingContext2d = c.get_context("2d").unwrap().unwrap().dyn_into().unwrap();
-    let data = ctx
-        .get_image_data(0.0, f64::from(y), f64::from(c.width()), 1.0)
-        .unwrap()
-        .data();
-    data.chunks(4)
-        .filter(|p| (0..3).all(|i| (p[i] as i32 - [rgb.0, rgb.1, rgb.2][i] as i32).abs() < 40))
-        .count()
+    count_in(c, (0, y, c.width(), 1), rgb)
 }
 
 /// Lines in one stroke are traced into one path and stroked once (`canvas::html::Batch`):

@@ -91,7 +91,7 @@ pub(super) enum Batch {
 
 /// Paints what `batch` says the path of `context` holds, and empties it: called before
 /// anything else is drawn, a style changes or a dash is set, and when a drawing ends.
-#[inline(never)] // called from every drawing method: one copy, not one each (bytes)
+#[inline(never)] // called from every drawing method
 pub(super) fn paint_batch(context: &CanvasRenderingContext2d, batch: &Cell<Batch>) {
     if batch.replace(Batch::Empty) != Batch::Empty {
         context.stroke();
