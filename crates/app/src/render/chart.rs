@@ -8,7 +8,7 @@ use super::lines::{draw_lines_and_markers, draw_series};
 use super::scale::Scale;
 use super::ticks::axis_tick_label;
 use super::{err, px, Output, RenderError};
-use crate::figure::{AxisScale, Figure};
+use crate::figure::{AxisScale, Figure, LineStyle};
 use crate::theme::Theme;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -176,6 +176,22 @@ pub(super) fn static_key(
     h.finish()
 }
 
+/// The legend rows `entries` (labels and swatches) as a hash, never 0 (0 stands for no
+/// rows in [`super::LayerNote`]).
+fn rows_key(entries: &[(&str, LineStyle)]) -> u64 {
+    let mut h = rustc_hash::FxHasher::default();
+    for (label, style) in entries {
+        (
+            label,
+            style.ink.index(),
+            style.width.to_bits(),
+            style.dash as u8,
+        )
+            .hash(&mut h);
+    }
+    h.finish().max(1)
+}
+
 /// What names `axis` in `room` px from `size` px down, and the size it fits at (see
 /// [`fit`]): its whole title if that fits, shrunk or not; else its short form
 /// ([`crate::figure::Axis::short_title`]: symbol and unit) if that fits; else the title,
@@ -325,32 +341,44 @@ pub(super) fn draw<DB: DrawingBackend>(
     let layer = out
         .direct
         .map(|d| (d, static_key(fig, backdrop, theme, scale, (w, h, band_h))));
+    // A legend in rows under the chart covers no data: it goes into the static layer, so a
+    // drag need not draw its swatches and labels every frame; over a kept layer whose rows
+    // differ (a label that names a value), the band is cleared and the rows drawn again.
+    let rows = match placement {
+        Placement::Below(_) if layer.is_some() && !cfg!(feature = "first") => rows_key(&entries),
+        _ => 0,
+    };
     // A layer the backend keeps is drawn already: its mesh and backdrop are skipped.
     let kept = layer.and_then(|(direct, key)| direct.begin_layer(key));
     if layer.is_some() && kept.is_none() {
         root.fill(&theme.background).map_err(err)?;
     }
     let mut chart = build(&area, fig, theme, scale, short)?;
-    let backdrop_clipped = match kept {
-        Some(note) => note.clipped,
+    let (backdrop_clipped, rows_drawn) = match kept {
+        Some(note) => (note.clipped, note.rows),
         None => {
             draw_mesh(&area, &mut chart, fig, theme, scale)?;
             if fig.heatmap.is_none() {
                 draw_origin_lines(&mut chart, fig, theme, scale)?;
             }
-            draw_series(
+            let clipped = draw_series(
                 &mut chart,
                 &fig.series[..backdrop],
                 fig,
                 theme,
                 scale,
                 out.direct,
-            )?
+            )?;
+            if rows != 0 {
+                legend.draw_rows(&band, &entries, theme, scale)?;
+            }
+            (clipped, rows)
         }
     };
     if let Some((direct, key)) = layer {
         let note = super::LayerNote {
             clipped: backdrop_clipped,
+            rows: rows_drawn,
         };
         direct.end_layer(key, note);
     }
@@ -393,7 +421,14 @@ pub(super) fn draw<DB: DrawingBackend>(
             let y = y.min(ah as i32 - bh - pad).max(pad);
             legend.draw_box(&plot, &entries, (x, y), theme, scale)?
         }
-        Placement::Below(_) => legend.draw_rows(&band, &entries, theme, scale)?,
+        // Rows the static layer holds already (see `rows`) are not drawn again.
+        Placement::Below(_) if rows_drawn == rows && rows != 0 => {}
+        Placement::Below(_) => {
+            if rows_drawn != 0 {
+                band.fill(&theme.background).map_err(err)?;
+            }
+            legend.draw_rows(&band, &entries, theme, scale)?
+        }
         Placement::None => {}
     }
     let (xs, ys) = chart.plotting_area().get_pixel_range();

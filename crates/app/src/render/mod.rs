@@ -149,12 +149,15 @@ pub trait Direct {
 }
 
 /// What a static layer's drawing found that the frames drawn over it still show: whether
-/// its backdrop leaves the axes (the plot then says it is clipped). Kept with the layer, so
-/// a frame over it need not go through the backdrop's points again.
+/// its backdrop leaves the axes (the plot then says it is clipped), and which legend rows
+/// under the chart it holds. Kept with the layer, so a frame over it need not go through
+/// the backdrop's points again, nor draw rows that have not changed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct LayerNote {
     /// Whether a backdrop series was clipped.
     pub clipped: bool,
+    /// The hash of the legend rows drawn in the layer (`chart::rows_key`); 0: none.
+    pub rows: u64,
 }
 
 /// An RGB image of `size` = (columns, rows) pixels, rows top to bottom, to be drawn over

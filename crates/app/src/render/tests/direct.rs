@@ -2,6 +2,7 @@
 //! the static layer named by what it shows, a heatmap and its colour bar as one image each.
 
 use super::*;
+use std::cell::Cell;
 
 /// A stretched image as drawn: size, pixels, where it goes and its clip.
 type Drawn = ((u32, u32), Vec<u8>, [i32; 4], [i32; 4]);
@@ -263,4 +264,60 @@ fn a_kept_layer_holds_the_mesh_and_the_backdrop_and_its_key_their_points() {
     });
     let (_, over_map) = layered(&mapped, true);
     assert_eq!(lines(&over_map), 3, "{over_map}");
+}
+
+/// `fig` drawn with its legend held in rows under the chart, by a backend that keeps its
+/// static layer (noted as `note`) or lacks one: the calls and the SVG drawn through plotters.
+fn below(fig: &Figure, keeps: bool, note: LayerNote) -> (LayerNote, String) {
+    let rec = Recorder(
+        Default::default(),
+        Default::default(),
+        keeps,
+        Cell::new(note),
+    );
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        let out = Output {
+            direct: Some(&rec),
+            legend: Some(Placement::Below(0)),
+        };
+        render_with(&root, fig, &Theme::LIGHT, 1.0, out).unwrap();
+    }
+    (rec.3.get(), svg)
+}
+
+#[test]
+fn legend_rows_under_the_chart_are_kept_with_the_layer_until_they_change() {
+    let mut fig = sample();
+    fig.series[0].label = "design ζ 0.30".into();
+    // Drawn whole: the rows are part of the layer, and its note says which rows.
+    let (note, whole) = below(&fig, false, LayerNote::default());
+    assert!(whole.contains("design ζ 0.30"), "{whole}");
+    assert_ne!(note.rows, 0);
+    // Over that layer: not drawn again, nor is their band cleared.
+    let (_, over) = below(&fig, true, note);
+    assert!(!over.contains("design ζ 0.30"), "{over}");
+    let rects = |svg: &str| svg.matches("<rect").count();
+    // A label that names a value moved on: the band is cleared and the new rows drawn.
+    fig.series[0].label = "design ζ 0.31".into();
+    let (_, moved) = below(&fig, true, note);
+    assert!(moved.contains("design ζ 0.31"), "{moved}");
+    assert_eq!(rects(&moved), rects(&over) + 1, "the band cleared");
+    // The same for another swatch under the same label.
+    let mut restyled = sample();
+    restyled.series[0].label = "design ζ 0.30".into();
+    restyled.series[0].style = LineStyle::dashed(Ink::Blue, 2.0);
+    assert!(below(&restyled, true, note).1.contains("design ζ 0.30"));
+    // Without a layer (vector output) the rows are drawn after the data, as always.
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        let out = Output {
+            direct: None,
+            legend: Some(Placement::Below(0)),
+        };
+        render_with(&root, &fig, &Theme::LIGHT, 1.0, out).unwrap();
+    }
+    assert!(svg.contains("design ζ 0.31"));
 }
