@@ -187,6 +187,32 @@ fn a_run_of_lines_is_stroked_before_whatever_follows_it() {
     );
 }
 
+/// A stretched image (a heatmap, a colour bar) goes through a scratch canvas of its size,
+/// which keeps the last image put on it: the same image again is drawn from it, another of
+/// the same size replaces it.
+#[wasm_bindgen_test]
+fn a_stretched_image_is_drawn_again_from_its_scratch_canvas_until_another_replaces_it() {
+    use zeta_app::render::{Direct, Stretched};
+    let stretch = |rgb: &[u8]| {
+        let c = canvas(100, 50);
+        let b = zeta_app::canvas::HtmlCanvas::new(&c).unwrap();
+        b.direct().stretch(&Stretched {
+            size: (2, 1),
+            rgb,
+            to: [0, 0, 100, 50],
+            clip: [0, 0, 100, 50],
+        });
+        let left = count_in(&c, (0, 0, 50, 50), (rgb[0], rgb[1], rgb[2]));
+        let right = count_in(&c, (50, 0, 50, 50), (rgb[3], rgb[4], rgb[5]));
+        (left, right)
+    };
+    let (red_blue, green_red) = ([230, 0, 0, 0, 0, 230], [0, 200, 0, 230, 0, 0]);
+    // First put, then drawn again from the scratch canvas, then another image, then back.
+    for rgb in [red_blue, red_blue, green_red, red_blue] {
+        assert_eq!(stretch(&rgb), (2500, 2500), "{rgb:?}");
+    }
+}
+
 #[wasm_bindgen_test]
 fn regimes_draws_its_curve_and_poles_onto_canvases() {
     let response = canvas(760, 400);

@@ -38,11 +38,26 @@ struct Layer {
     note: LayerNote,
 }
 
-/// A canvas outside the page of one size, with its context (see `SCRATCH`).
+/// A canvas outside the page of one size, with its context (see `SCRATCH`), and the hash
+/// of the image last put on it (0: none; see [`image_key`]).
 struct Scratch {
     size: (u32, u32),
     canvas: HtmlCanvasElement,
     context: CanvasRenderingContext2d,
+    holds: u64,
+}
+
+/// The pixels of `rgb` as a hash, never 0: a scratch canvas that holds them already is
+/// not given them again (a colour bar is the same image every frame, a map the same while
+/// only the design point moves). Not in a first module, which draws for seconds only.
+fn image_key(rgb: &[u8]) -> u64 {
+    use std::hash::Hasher;
+    if cfg!(feature = "first") {
+        return 0;
+    }
+    let mut h = rustc_hash::FxHasher::default();
+    h.write(rgb);
+    h.finish().max(1)
 }
 
 /// How many sizes of scratch canvas are kept.
@@ -50,10 +65,7 @@ const SCRATCHES: usize = 4;
 
 /// Runs `draw` with a scratch canvas of `size` (kept, or made now); nothing if none can be
 /// made.
-fn with_scratch(
-    size: (u32, u32),
-    draw: impl FnOnce(&HtmlCanvasElement, &CanvasRenderingContext2d),
-) {
+fn with_scratch(size: (u32, u32), draw: impl FnOnce(&mut Scratch)) {
     SCRATCH.with_borrow_mut(|kept| {
         if !kept.iter().any(|s| s.size == size) {
             let Some(canvas) = offscreen() else {
@@ -71,10 +83,11 @@ fn with_scratch(
                 size,
                 canvas,
                 context,
+                holds: 0,
             });
         }
-        if let Some(s) = kept.iter().find(|s| s.size == size) {
-            draw(&s.canvas, &s.context);
+        if let Some(s) = kept.iter_mut().find(|s| s.size == size) {
+            draw(s);
         }
     });
 }
@@ -254,22 +267,33 @@ impl Direct for CanvasDirect {
         if image.rgb.len() < n * 3 || n == 0 {
             return;
         }
-        let mut rgba = Vec::with_capacity(n * 4);
-        for px in image.rgb.chunks_exact(3).take(n) {
-            rgba.extend_from_slice(&[px[0], px[1], px[2], 255]);
-        }
-        let Ok(data) = web_sys::ImageData::new_with_u8_clamped_array_and_sh(
-            wasm_bindgen::Clamped(&rgba),
-            w,
-            h,
-        ) else {
-            return;
-        };
+        let rgb = &image.rgb[..n * 3];
+        let key = image_key(rgb);
         // Every pixel of the scratch canvas is put: nothing of an earlier image shows.
-        with_scratch((w, h), |canvas, scratch| {
-            if scratch.put_image_data(&data, 0.0, 0.0).is_err() {
-                return;
+        with_scratch((w, h), |s| {
+            // A context that was reset (lost and restored) has lost the image too, and
+            // its shadow offset, which is set when an image is put (putImageData ignores
+            // it, and nothing else is drawn on a scratch canvas).
+            if key == 0 || s.holds != key || s.context.shadow_offset_x() != 1.0 {
+                s.holds = 0;
+                let mut rgba = Vec::with_capacity(n * 4);
+                for px in rgb.chunks_exact(3) {
+                    rgba.extend_from_slice(&[px[0], px[1], px[2], 255]);
+                }
+                let Ok(data) = web_sys::ImageData::new_with_u8_clamped_array_and_sh(
+                    wasm_bindgen::Clamped(&rgba),
+                    w,
+                    h,
+                ) else {
+                    return;
+                };
+                if s.context.put_image_data(&data, 0.0, 0.0).is_err() {
+                    return;
+                }
+                s.context.set_shadow_offset_x(1.0);
+                s.holds = key;
             }
+            let canvas = &s.canvas;
             let [l, t, r, b] = image.to.map(f64::from);
             let [cl, ct, cr, cb] = image.clip.map(f64::from);
             let c = &self.context;
