@@ -424,7 +424,7 @@ pub(super) fn draw<DB: DrawingBackend>(
         // Rows the static layer holds already (see `rows`) are not drawn again.
         Placement::Below(_) if rows_drawn == rows && rows != 0 => {}
         Placement::Below(_) => {
-            if rows_drawn != 0 {
+            if rows_drawn != 0 && !cfg!(feature = "first") {
                 band.fill(&theme.background).map_err(err)?;
             }
             legend.draw_rows(&band, &entries, theme, scale)?
