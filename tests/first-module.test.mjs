@@ -260,3 +260,34 @@ test('a click on a plot that picks (design\'s map) on the first module waits for
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('a click that comes while a press\'s switch to the full module is finishing still picks', async () => {
+  // A press on the map on the first module starts the switch (its read-out waits for the
+  // full module); the click that ends the press can come after the full module's session
+  // has replaced the first one but before that session's first update: it must wait for
+  // the update and pick, not find an empty session (seen 2026-12-03: such a click was lost).
+  const { page, errors, context, release } = await openGated('?demo=design');
+  assert.equal(await moduleOf(page), 'first');
+  const map = page.locator('canvas[data-plot="map"]');
+  await map.scrollIntoViewIfNeeded();
+  await page.evaluate(() => {
+    const canvas = document.querySelector('canvas[data-plot="map"]');
+    const r = canvas.getBoundingClientRect();
+    const at = { bubbles: true, clientX: r.left + r.width * 0.35, clientY: r.top + r.height * 0.45 };
+    canvas.dispatchEvent(new PointerEvent('pointerdown', { ...at, pointerType: 'mouse' }));
+    // The click, in the first frame that runs on the full module, ahead of that frame's
+    // redraw, as the browser dispatches input: a callback asked for a frame earlier runs
+    // before the one the switch asks for.
+    const poll = () => {
+      if (window.zetaDiagnostics.module() !== 'full') return requestAnimationFrame(poll);
+      canvas.dispatchEvent(new PointerEvent('pointerup', { ...at, pointerType: 'mouse' }));
+      canvas.dispatchEvent(new MouseEvent('click', at));
+    };
+    poll();
+  });
+  release();
+  await page.waitForFunction(() => document.querySelector('[data-readout="k"]').dataset.value !== '24000', null, { timeout: 15000 });
+  assert.equal(await moduleOf(page), 'full');
+  assert.deepEqual(errors, []);
+  await context.close();
+});

@@ -1059,8 +1059,10 @@ function wireProbes() {
       const [px, py] = [(ev.clientX - rect.left) * dpr, (ev.clientY - rect.top) * dpr];
       try {
         // A first module has no pick (see exportPlot): the full one takes over first; if
-        // it cannot be loaded, the click does nothing and a later one tries again.
-        if (!app.session.pick) await useFullModule().catch(() => {});
+        // it cannot be loaded, the click does nothing and a later one tries again. Awaited
+        // on the full module too: a press's take-over (show) may still be under way, its
+        // new session not yet updated, and a pick there found nothing.
+        await useFullModule().catch(() => {});
         if (!app.session.pick) return;
         const applied = app.session.pick(key, px, py);
         if (!applied.length) return;
