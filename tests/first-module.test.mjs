@@ -291,3 +291,33 @@ test('a click that comes while a press\'s switch to the full module is finishing
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('the values under the pointer show in the first frame on the full module', async () => {
+  // A press on a plot on the first module starts the switch; a move over the plot in the
+  // first frame that runs on the full module must read values there. Before 2026-12-03's
+  // evening the full module's session was updated only in a later frame, so such a move
+  // found no figures and hid the read-out.
+  const { page, errors, context, release } = await openGated('?demo=regimes');
+  assert.equal(await moduleOf(page), 'first');
+  await page.locator('canvas[data-plot="response"]').scrollIntoViewIfNeeded();
+  await page.evaluate(() => {
+    const canvas = document.querySelector('canvas[data-plot="response"]');
+    const tip = canvas.parentElement.querySelector('.probe');
+    const r = canvas.getBoundingClientRect();
+    const at = (fx) => ({ bubbles: true, pointerType: 'mouse', clientX: r.left + r.width * fx, clientY: r.top + r.height * 0.5 });
+    canvas.dispatchEvent(new PointerEvent('pointerdown', at(0.4)));
+    const poll = () => {
+      if (window.zetaDiagnostics.module() !== 'full') return requestAnimationFrame(poll);
+      canvas.dispatchEvent(new PointerEvent('pointermove', at(0.6)));
+      window.__seen = { hidden: tip.hidden, text: tip.textContent };
+    };
+    poll();
+  });
+  release();
+  await page.waitForFunction(() => window.__seen, null, { timeout: 15000 });
+  const seen = await page.evaluate(() => window.__seen);
+  assert.equal(seen.hidden, false, 'the read-out is shown');
+  assert.match(seen.text, /\d/, `read-out: ${seen.text}`);
+  assert.deepEqual(errors, []);
+  await context.close();
+});

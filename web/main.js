@@ -791,7 +791,8 @@ function scheduleRefine() {
 function requestDraw() {
   if (app.framePending) return;
   app.framePending = true;
-  requestAnimationFrame(drawFrame);
+  // Nothing if the frame was drawn at once meanwhile (adopt).
+  requestAnimationFrame(() => app.framePending && drawFrame());
 }
 
 /**
@@ -1058,10 +1059,9 @@ function wireProbes() {
       const rect = canvas.getBoundingClientRect();
       const [px, py] = [(ev.clientX - rect.left) * dpr, (ev.clientY - rect.top) * dpr];
       try {
-        // A first module has no pick (see exportPlot): the full one takes over first; if
-        // it cannot be loaded, the click does nothing and a later one tries again. Awaited
-        // on the full module too: a press's take-over (show) may still be under way, its
-        // new session not yet updated, and a pick there found nothing.
+        // A first module has no pick (see exportPlot): the full one takes over first (and
+        // draws, see adopt); if it cannot be loaded, the click does nothing and a later one
+        // tries again.
         await useFullModule().catch(() => {});
         if (!app.session.pick) return;
         const applied = app.session.pick(key, px, py);
@@ -1168,7 +1168,7 @@ function wireMenu() {
       app.root.dataset.loading = 'full';
       loadFull()
         .then((mod) => {
-          if (app.module === 'first') adopt(mod);
+          if (app.module === 'first') adopt(mod, false); // the chosen demo draws
           openDemo(select.value, null);
           syncUrl();
         })
@@ -1348,16 +1348,18 @@ function useFullModule() {
   app.takingOver ??= (async () => {
     const mod = await loadFull();
     if (app.module === 'first') adopt(mod);
-    // The new session has figures once the update adopt asked for has run (same frame).
-    await new Promise((resolve) => requestAnimationFrame(resolve));
   })().finally(() => {
     app.takingOver = null;
   });
   return app.takingOver;
 }
 
-/** Moves the open demo from the first module's instance to the full module's. */
-function adopt({ glue, exports }) {
+/**
+ * Moves the open demo from the first module's instance to the full module's, and draws it
+ * there at once unless `draw` is false (another demo opens next): a read-out or a pick
+ * on the full module must never meet a session without figures.
+ */
+function adopt({ glue, exports }, draw = true) {
   const old = app.session;
   try {
     app.missing.push(...app.wasm.takeMissingMessages()); // reported by the diagnostics
@@ -1376,12 +1378,14 @@ function adopt({ glue, exports }) {
   for (const [k, v] of values) app.session.set(k, v);
   attachCanvases();
   app.needsRecovery = false;
-  requestDraw();
   try {
     old.free();
   } catch {
     // the first instance is dropped either way
   }
+  if (!draw) return requestDraw();
+  app.framePending = true;
+  drawFrame();
 }
 
 /** The language menu: every language by its own name; a pseudo-locale only while active. */
