@@ -12,7 +12,7 @@ import { applyConditions, buildDemo, el, fillLiveCells, fromSlider, notify, show
 import { cancelPendingWrite, currentQuery, demoFromUrl, queryFor, writeState } from './url.js';
 import { applyEmbedView, connectPage, embedOptions, loadPrediction, loadStyles } from './view.js';
 import { useFullModuleWith, useGlue } from './glue.js';
-import { activeLanguage, adoptInstance, prepareInstance, languages, num, remember, requestedLanguages, t, translatePage, useLanguage } from './i18n.js';
+import { activeLanguage, adoptInstance, languages, num, remember, requestedLanguages, t, translatePage, useLanguage } from './i18n.js';
 
 const DEFAULT_DEMO = 'regimes';
 const ANNOUNCE_DELAY_MS = 1200;
@@ -67,7 +67,7 @@ const app = {
   /** The device pixel ratio sizeCanvases last read the boxes at. */
   sizedFor: 0,
   /** Counts changes of the demo's values from any source (controls, reset, a click on a
-   * plot, the host page, a new demo): computeBehind starts again when it moves. */
+   * plot, the host page, a new demo): upgrade.js's computeBehind starts again when it moves. */
   revision: 0,
   /** A relayout is asked for the next frame (requestRelayout). */
   relayoutPending: false,
@@ -96,7 +96,7 @@ const app = {
   /** The keys of the plots on screen (or within half a screen), as observeVisibility sees. */
   onScreen: new Set(),
   /** The full module has just taken over: the catch-up, not a plot coming into view,
-   * redraws the plots until none is left (takeOver). */
+   * redraws the plots until none is left (upgrade.js's takeOver). */
   settling: false,
   /** Message ids the first instance showed in English, kept across the switch. */
   missing: [],
@@ -592,7 +592,7 @@ function drawFrame() {
     readVisibility();
     const out = app.session.update(dpr, isDark());
     app.layerRounds = 0;
-    app.settling = false; // this update drew the plots on screen (see takeOver)
+    app.settling = false; // this update drew the plots on screen (see upgrade.js, takeOver)
     app.staleLeft = true; // plots out of view were skipped; drawStale(true) says for sure
     showResults(out);
     for (const [key, value] of out.derived) {
@@ -609,7 +609,7 @@ function drawFrame() {
       // After this frame is on screen: the full module (if the first one drew), then at
       // idle what a click may need and the offline cache, so that on a slow line none of
       // them takes bandwidth from another.
-      const started = app.module === 'first' ? new Promise((done) => setTimeout(() => upgrade().finally(done), 0)) : Promise.resolve();
+      const started = app.module === 'first' ? new Promise((done) => setTimeout(() => startUpgrade().finally(done), 0)) : Promise.resolve();
       started.then(prefetchLater);
     }
     app.timeSpan = out.time_span;
@@ -798,7 +798,7 @@ function requestDraw() {
 /**
  * The demo's values changed (a control, reset, a click on a plot, the host page, a new
  * demo, a recovery): the host hears of it after the next frame, and a computation behind
- * the page for the old values starts again (computeBehind).
+ * the page for the old values starts again (upgrade.js, computeBehind).
  */
 function valuesChanged() {
   app.changed = true;
@@ -1199,145 +1199,16 @@ function loadFull() {
 }
 
 /**
- * Resolves when the controls have rested (REST_MS.upgrade), no frame is pending, no study
- * is being refined and the animation is not playing.
+ * After the first plot from the first module: the full module starts downloading at once,
+ * while upgrade.js (the switch, see there) loads beside it and then moves the demo to it
+ * between two bursts of input. Without upgrade.js the menu's switch still works.
  */
-function betweenBursts() {
-  return new Promise((resolve) => {
-    const check = () => {
-      const busy = app.framePending || app.recovering || app.needsRecovery || app.refineTimer || app.playing;
-      const wait = restLeft(REST_MS.upgrade);
-      if (busy || wait > 0) setTimeout(check, Math.max(50, wait));
-      else resolve();
-    };
-    check();
-  });
-}
-
-/**
- * After the first plot from the first module: loads the full module behind the page and
- * switches to it while the controls rest, with the same values, so nothing the user sees
- * changes (but a study the first module left provisional, now whole), and in steps that
- * each fit in a frame at a slow device's speed: the full
- * module's session computes behind the page (computeBehind), takes over (takeOver), and
- * redraws the plots one a frame. Input in between starts again at the next rest.
- */
-async function upgrade() {
-  let mod;
-  try {
-    mod = await loadFull();
-  } catch (err) {
-    console.warn('Zeta Lab: the full module could not be loaded yet:', err && err.message);
-    return; // the next demo chosen from the menu tries again
-  }
-  while (app.module === 'first') {
-    await betweenBursts();
-    if (app.module !== 'first') return;
-    const behind = await computeBehind(mod);
-    if (behind?.failed) {
-      try {
-        adopt(mod); // at once, as a menu choice does
-      } catch (err) {
-        reportFailure(err);
-      }
-      return;
-    }
-    if (behind) takeOver(mod, behind);
-  }
-}
-
-/**
- * The full module's session for the open demo with the page's values, computed behind the
- * page, each step a task of its own: its figures (no plot drawn: the first module's are on
- * screen), then any study in slices. `null` if input came, the demo or language changed,
- * (then again at the next rest); `{failed: true}` if a step failed; `{session, language}`
- * otherwise.
- */
-async function computeBehind({ glue }) {
-  const { lastInput, revision, demoId, session: shown } = app;
-  const language = activeLanguage().tag;
-  const moved = () =>
-    app.lastInput !== lastInput || app.revision !== revision || app.dragging || app.playing ||
-    app.refineTimer || app.session !== shown || app.demoId !== demoId || app.module !== 'first' ||
-    app.needsRecovery || activeLanguage().tag !== language;
-  const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
-  let session = null;
-  try {
-    prepareInstance(glue);
-    await nextTask();
-    if (moved()) return null;
-    glue.message('page-loading', {}); // builds its English catalogue (parsed on first use)
-    await nextTask();
-    if (moved()) return null;
-    session = new glue.Session(demoId);
-    session.applyQuery(currentQuery());
-    for (const [k, v] of shown.values()) session.set(k, String(v));
-    for (const key of app.view.shownPlots) {
-      session.attach(key, app.view.canvases.get(key));
-      session.setVisible(key, false);
-    }
-    if (app.view.animation) session.attach('schematic', app.view.animation.canvas);
-    await nextTask();
-    if (moved()) throw null;
-    let out = session.update(window.devicePixelRatio || 1, isDark());
-    for (;;) {
-      await nextTask();
-      if (moved()) throw null;
-      const done = session.refine(REFINE_SLICE_MS);
-      if (done === undefined) break;
-      showStudyProgress(done); // the study the first module left provisional (integrators')
-      if (done >= 1) {
-        await nextTask();
-        if (moved()) throw null;
-        out = session.update(window.devicePixelRatio || 1, isDark());
-        break;
-      }
-    }
-    return { session, language, out };
-  } catch (err) {
-    try {
-      session?.free();
-    } catch {
-      // dropped either way
-    }
-    if (err === null) return null; // moved on: again at the next rest
-    console.warn('Zeta Lab: the full module could not compute behind the page:', err && err.message);
-    return { failed: true };
-  }
-}
-
-/**
- * The full module's session (computeBehind) takes over from the first module's: the
- * plots on screen show what it would draw, so it redraws them one a frame (a first
- * drawing fills its kept layers and text fits) while the controls rest.
- */
-function takeOver({ glue, exports }, { session, language, out }) {
-  const old = app.session;
-  try {
-    app.missing.push(...app.wasm.takeMissingMessages()); // reported by the diagnostics
-  } catch {
-    // a failed first instance cannot answer
-  }
-  adoptInstance(glue, language);
-  app.wasm = glue;
-  useGlue(glue);
-  app.exports = exports;
-  app.module = 'full';
-  app.session = session;
-  // The same numbers, but a study the first module left provisional (the integrators')
-  // is whole now: its readouts and marks (the plots follow in the catch-up).
-  showResults(out);
-  for (const key of app.view.shownPlots) session.setVisible(key, app.onScreen.has(key));
-  app.staleLeft = true;
-  app.schematicStale = Boolean(app.view.animation);
-  app.settling = true; // observeVisibility leaves the drawing to the catch-up meanwhile
-  observeVisibility();
-  scheduleCatchUp(0);
-  try {
-    old.free();
-  } catch {
-    // the first instance is dropped either way
-  }
+function startUpgrade() {
+  loadFull().catch(() => {}); // upgrade() reports a failure (and tries once more)
+  return import('./upgrade.js').then(
+    (m) => m.upgrade(app, { loadFull, adopt, reportFailure, restLeft, isDark, showStudyProgress, showResults, observeVisibility, scheduleCatchUp, rest: REST_MS.upgrade, slice: REFINE_SLICE_MS }),
+    (err) => console.warn('Zeta Lab: upgrade.js could not be loaded:', err && err.message),
+  );
 }
 
 /** Resolves once the open demo runs on the full module (switching to it now if needed). */
