@@ -505,7 +505,12 @@ function layoutStage() {
     const form = view.workspace.querySelector('.controls');
     room = Math.max(room, vh - top - form.offsetHeight - 3 * margin);
   }
-  const extra = view.stage.offsetHeight - canvas.offsetHeight;
+  // What the stage holds beside the plot (its readouts) takes room from it, and gives it
+  // back only in another window size: a readout that got shorter (a provisional mark
+  // gone, the study done) leaves the plot where it is rather than move the page.
+  const size = `${innerWidth}x${vh}`;
+  const extra = Math.max(view.stage.offsetHeight - canvas.offsetHeight, view.extraFor === size ? view.extra : 0);
+  [view.extra, view.extraFor] = [extra, size];
   let cap = Math.floor(room - extra);
   // A short window beside the controls (a phone held sideways: 360 px, a third of it the
   // site's header) would leave a strip of a plot: it is sized for the stage stuck at the
@@ -590,6 +595,11 @@ function drawFrame() {
   try {
     const dpr = sizeCanvases();
     readVisibility();
+    // A view's first frame computes, fills in the readouts and captions, lays the stage out with them
+    // and only then draws: laid out before them, the staged plot was resized a frame later
+    // (drawn twice, and the page jumped under the reader).
+    const settle = app.view.staged && !app.view.settled;
+    if (settle) for (const key of app.view.shownPlots) app.session.setVisible(key, false);
     const out = app.session.update(dpr, isDark());
     app.layerRounds = 0;
     app.settling = false; // this update drew the plots on screen (see upgrade.js, takeOver)
@@ -602,6 +612,12 @@ function drawFrame() {
     if (out.derived.length) syncUrl();
     applyConditions(app.view.spec, app.root);
     showCaptions(out.descriptions);
+    if (settle) {
+      app.view.settled = app.layoutDirty = true;
+      sizeCanvases();
+      for (const key of app.view.shownPlots) app.session.setVisible(key, app.onScreen.has(key));
+      showCaptions(app.session.drawStale(dpr, isDark(), false).descriptions);
+    }
     if (out.descriptions.length) announce(out.descriptions[0].text);
     if (!app.firstDrawn) {
       app.firstDrawn = true;
