@@ -98,7 +98,11 @@ impl Ranged for Scale {
         match &self.log {
             None => self.pixels.key_points(hint),
             Some(t) if hint.weight().allow_light_points() => t.light.clone(),
-            Some(t) => t.bold.clone(),
+            // A first module labels them all: thinning costs its download a quarter of a
+            // KB it does not have, and the full module draws every plot again as it takes
+            // over, within seconds (a short log axis is a phone's, rarely its first plot).
+            Some(t) if cfg!(feature = "first") => t.bold.clone(),
+            Some(t) => super::ticks::thinned(&t.bold, hint.max_num_points()),
         }
     }
 

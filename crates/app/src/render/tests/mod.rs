@@ -224,6 +224,36 @@ fn log_axes_label_enough_ticks_to_read_a_value() {
     assert!(log_ticks(0.0, 1.0).is_empty());
 }
 
+#[test]
+fn a_short_log_axis_labels_fewer_decades_evenly() {
+    use super::ticks::thinned;
+    // 1e-14 … 1e8 every other decade: twelve labels, in 70 px of a phone's plot.
+    let ticks = log_ticks(1e-14, 1e8);
+    assert_eq!(ticks.len(), 12);
+    assert_eq!(thinned(&ticks, 12), ticks);
+    // At most five: every fourth decade is six (1e-12 … 1e8), every sixth is four.
+    assert_eq!(thinned(&ticks, 5), vec![1e-12, 1e-6, 1.0, 1e6]);
+    // At most two: every tenth decade.
+    assert_eq!(thinned(&ticks, 2), vec![1e-10, 1.0]);
+    // Not all decades: every k-th tick.
+    assert_eq!(
+        thinned(&[1.0, 2.0, 5.0, 10.0, 20.0, 50.0], 3),
+        vec![1.0, 5.0, 20.0]
+    );
+    assert_eq!(thinned(&[1.0, 10.0], 0), vec![1.0]);
+}
+
+#[test]
+fn a_short_plot_labels_fewer_values_on_its_y_axis() {
+    use super::chart::y_label_count;
+    // A desktop plot (300 px of plotting area at scale 1, or 600 at 2) keeps six.
+    assert_eq!(y_label_count(300, 1.0), 6);
+    assert_eq!(y_label_count(600, 2.0), 6);
+    // A phone's 80-px plotting area at scale 2: two, 2.5 label heights apart.
+    assert_eq!(y_label_count(160, 2.0), 2);
+    assert_eq!(y_label_count(10, 1.0), 2);
+}
+
 /// The top of the legend box in an SVG rendering, if a box was drawn.
 fn legend_box_y(svg: &str) -> Option<f64> {
     // The legend box is the only rectangle filled with the background at 88 % opacity.
