@@ -219,3 +219,23 @@ test('the page does not move as it starts: no layout shift up to the full module
   }
   assert.deepEqual(shifts, []);
 });
+
+test('the paper at 1280 × 800: the claims\' count sits beside its heading, no column left empty', async () => {
+  // Its figures are in the tour below the workspace, so its stage holds only the count;
+  // in the usual grid it took the left column under nothing, beside the heading (a blank
+  // 740 × 300 px area, seen 2026-12-03).
+  const { page, errors, context } = await open(browser, `${server.url}?demo=paper`, { viewport: { width: 1280, height: 800 } });
+  await waitForReadouts(page);
+  await page.waitForSelector('.tour');
+  const boxes = await page.evaluate(() => Object.fromEntries(['.demo-head', '.stage', '.tour'].map((s) => {
+    const r = document.querySelector(s).getBoundingClientRect();
+    return [s, { left: r.left, top: r.top, bottom: r.bottom }];
+  })));
+  const head = boxes['.demo-head'];
+  const stage = boxes['.stage'];
+  assert.ok(head.left < 40, `the heading starts at the left: ${JSON.stringify(boxes)}`);
+  assert.ok(Math.abs(stage.top - head.top) < 40 && stage.left > head.left, `the count beside it: ${JSON.stringify(boxes)}`);
+  assert.ok(boxes['.tour'].top - Math.max(head.bottom, stage.bottom) < 120, `the tour follows: ${JSON.stringify(boxes)}`);
+  assert.deepEqual(errors, []);
+  await context.close();
+});

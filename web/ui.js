@@ -296,6 +296,8 @@ function buildTable(root, table) {
 export function highlightRow(table, readouts) {
   if (!table) return;
   const r = readouts.find((x) => x.key === table.readout);
+  // The same row as the last frame's (most frames of a drag): nothing to toggle.
+  if (table.on === (table.on = r?.data_value)) return;
   for (const [key, tr] of table.rows) {
     const on = r && r.data_value === key;
     tr.classList.toggle('current', on);
