@@ -244,7 +244,7 @@ fn draw_mesh<DB: DrawingBackend>(
         .light_line_style(theme.grid_minor.stroke_width(px(1.0, scale)))
         .max_light_lines(4)
         .axis_style(fg.stroke_width(px(1.0, scale)))
-        .x_labels(6)
+        .x_labels(LABELS)
         .y_labels(y_label_count(px_h, scale))
         .x_label_formatter(&|v| axis_tick_label(*v, &fig.x))
         .y_label_formatter(&|v| axis_tick_label(*v, &fig.y))
@@ -252,12 +252,16 @@ fn draw_mesh<DB: DrawingBackend>(
         .map_err(err)
 }
 
+/// Tick labels an axis asks for (plotters' hint; a log axis gives all of its labelled
+/// ticks for this many or more, see `scale::Scale`).
+pub(super) const LABELS: usize = 6;
+
 /// Tick labels one on a y axis `height` backend pixels long may carry: six, or fewer on a
 /// short plot, at least 2.5 label heights (12 px at scale 1) apart, and never under two
 /// (a phone's 70-px convergence plot stacked eleven decades into one another).
 pub(super) fn y_label_count(height: u32, scale: f64) -> usize {
     let fits = f64::from(height) / (2.5 * 12.0 * scale);
-    (fits.floor() as usize).clamp(2, 6)
+    (fits.floor() as usize).clamp(2, LABELS)
 }
 
 /// The reference lines through the origin, if `fig` has them and they fall in its range.

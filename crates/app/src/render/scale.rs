@@ -101,7 +101,11 @@ impl Ranged for Scale {
             // A first module labels them all: thinning costs its download a quarter of a
             // KB it does not have, and the full module draws every plot again as it takes
             // over, within seconds (a short log axis is a phone's, rarely its first plot).
-            Some(t) if cfg!(feature = "first") => t.bold.clone(),
+            // Only an axis asked for fewer labels than usual is thinned (a short plot's y
+            // axis, see `chart::y_label_count`): every other keeps all of `log_ticks`.
+            Some(t) if cfg!(feature = "first") || hint.max_num_points() >= super::chart::LABELS => {
+                t.bold.clone()
+            }
             Some(t) => super::ticks::thinned(&t.bold, hint.max_num_points()),
         }
     }

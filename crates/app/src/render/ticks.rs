@@ -48,29 +48,37 @@ pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
     }
 }
 
-/// At most `max` (at least one) of a log axis's labelled ticks `ticks`: all when they fit,
-/// else as many as fit of the decades whose exponent is a multiple of a stride k (2, 3, 4,
-/// 5, 6, 8, 10, …; the smallest of equals: 10⁻¹², 10⁻⁶, 1, 10⁶ for k = 6), or of every
-/// k-th tick when they are not all decades; the first tick alone if nothing fits.
+/// At most `max` (at least one) of a log axis's labelled ticks `ticks`: all when they fit;
+/// else its decades (1 × 10ᵏ) when there are two or more, first all of them if they fit,
+/// then as many as fit of those whose exponent is a multiple of a stride k (2, 3, 4, 5,
+/// 6, 8, 10, …; the smallest of equals: 10⁻¹², 10⁻⁶, 1, 10⁶ for k = 6) or, if more, of
+/// every k-th; without two decades, every k-th tick. The first one alone if nothing fits.
 #[cfg_attr(feature = "first", allow(dead_code))]
 pub(super) fn thinned(ticks: &[f64], max: usize) -> Vec<f64> {
     if ticks.len() <= max {
         return ticks.to_vec();
     }
     let exponent = |v: f64| (v.log10() + 0.5).floor() as i32; // nearest (no libm round)
-                                                              // Decades only (log_ticks's lists over three decades and more) are ten or more apart.
-    let decades = ticks.windows(2).all(|w| w[1] > 9.99 * w[0]);
-    let mut best = ticks[..1].to_vec();
+    let decades: Vec<f64> = ticks
+        .iter()
+        .copied()
+        .filter(|&v| (v / 10f64.powi(exponent(v)) - 1.0).abs() < 1e-9)
+        .collect();
+    let pool = match decades.len() >= 2 {
+        true => decades,
+        false => ticks.to_vec(),
+    };
+    if pool.len() <= max {
+        return pool;
+    }
+    let mut best = pool[..1].to_vec();
     for k in [2, 3, 4, 5, 6, 8, 10, 12, 15, 20, 50] {
-        let mut kept = Vec::new();
-        for (i, &v) in ticks.iter().enumerate() {
-            let at = if decades { exponent(v) } else { i as i32 };
-            if at % k == 0 {
-                kept.push(v);
+        let by_exponent = pool.iter().copied().filter(|&v| exponent(v) % k == 0);
+        let by_index = pool.iter().copied().step_by(k as usize);
+        for kept in [by_exponent.collect::<Vec<_>>(), by_index.collect()] {
+            if kept.len() <= max && kept.len() > best.len() {
+                best = kept;
             }
-        }
-        if kept.len() <= max && kept.len() > best.len() {
-            best = kept;
         }
     }
     best

@@ -235,12 +235,29 @@ fn a_short_log_axis_labels_fewer_decades_evenly() {
     assert_eq!(thinned(&ticks, 5), vec![1e-12, 1e-6, 1.0, 1e6]);
     // At most two: every tenth decade.
     assert_eq!(thinned(&ticks, 2), vec![1e-10, 1.0]);
-    // Not all decades: every k-th tick.
+    // Not all decades: the decades first (resonance's r axis keeps 1, where it resonates).
+    let r = log_ticks(0.1, 10.0);
+    assert_eq!(thinned(&r, 4), vec![0.1, 1.0, 10.0]);
+    assert_eq!(thinned(&r, 2), vec![0.1, 10.0]);
+    // Under two decades: every k-th tick.
     assert_eq!(
-        thinned(&[1.0, 2.0, 5.0, 10.0, 20.0, 50.0], 3),
-        vec![1.0, 5.0, 20.0]
+        thinned(&[0.5, 0.7, 1.0, 1.5, 2.0, 3.0], 3),
+        vec![0.5, 1.0, 2.0]
     );
     assert_eq!(thinned(&[1.0, 10.0], 0), vec![1.0]);
+}
+
+#[test]
+fn a_log_axis_asked_for_the_usual_labels_keeps_every_labelled_tick() {
+    use plotters::coord::ranged1d::{BoldPoints, Ranged};
+    // An x axis (six asked for) over 0.1 … 10 has seven labelled ticks: all are kept (a
+    // review found 1 dropped from resonance's r axis when every log axis was thinned).
+    let axis = Axis::log("r", "", (0.1, 10.0));
+    let ticks = super::scale::Scale::of(&axis).key_points(BoldPoints(super::chart::LABELS));
+    assert_eq!(ticks, log_ticks(0.1, 10.0));
+    // A short y axis asked for three keeps the decades.
+    let fewer = super::scale::Scale::of(&axis).key_points(BoldPoints(3));
+    assert_eq!(fewer, vec![0.1, 1.0, 10.0]);
 }
 
 #[test]
