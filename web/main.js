@@ -1220,7 +1220,7 @@ function loadFull() {
  * between two bursts of input. Without upgrade.js the menu's switch still works.
  */
 function startUpgrade() {
-  loadFull().catch(() => {}); // upgrade() reports a failure (and tries once more)
+  loadFull().catch(() => {}); // upgrade() reports a failure (its own call tries again if this one already failed)
   return import('./upgrade.js').then(
     (m) => m.upgrade(app, { loadFull, adopt, reportFailure, restLeft, isDark, showStudyProgress, showResults, observeVisibility, scheduleCatchUp, rest: REST_MS.upgrade, slice: REFINE_SLICE_MS }),
     (err) => console.warn('Zeta Lab: upgrade.js could not be loaded:', err && err.message),
@@ -1243,8 +1243,8 @@ function useFullModule() {
 
 /**
  * Moves the open demo from the first module's instance to the full module's, and draws it
- * there at once unless `draw` is false (another demo opens next): a read-out or a pick
- * on the full module must never meet a session without figures.
+ * there at once unless `draw` is false (another demo opens next, and draws in its frame):
+ * a read-out or a pick in the switch's first frame finds the new session's figures.
  */
 function adopt({ glue, exports }, draw = true) {
   const old = app.session;

@@ -64,7 +64,8 @@ pub(super) fn thinned(ticks: &[f64], max: usize) -> Vec<f64> {
         .copied()
         .filter(|&v| (v / 10f64.powi(exponent(v)) - 1.0).abs() < 1e-9)
         .collect();
-    let pool = match decades.len() >= 2 {
+    let decades_only = decades.len() >= 2;
+    let pool = match decades_only {
         true => decades,
         false => ticks.to_vec(),
     };
@@ -73,9 +74,18 @@ pub(super) fn thinned(ticks: &[f64], max: usize) -> Vec<f64> {
     }
     let mut best = pool[..1].to_vec();
     for k in [2, 3, 4, 5, 6, 8, 10, 12, 15, 20, 50] {
-        let by_exponent = pool.iter().copied().filter(|&v| exponent(v) % k == 0);
-        let by_index = pool.iter().copied().step_by(k as usize);
-        for kept in [by_exponent.collect::<Vec<_>>(), by_index.collect()] {
+        // By exponent only among decades: ticks between them share exponents (2 and 3
+        // round to 10⁰, 5 … 30 to 10¹), and a stride there kept one cluster of them.
+        let by_exponent = match decades_only {
+            true => pool
+                .iter()
+                .copied()
+                .filter(|&v| exponent(v) % k == 0)
+                .collect(),
+            false => Vec::new(),
+        };
+        let by_index = pool.iter().copied().step_by(k as usize).collect();
+        for kept in [by_exponent, by_index] {
             if kept.len() <= max && kept.len() > best.len() {
                 best = kept;
             }

@@ -245,6 +245,8 @@ fn a_short_log_axis_labels_fewer_decades_evenly() {
         vec![0.5, 1.0, 2.0]
     );
     assert_eq!(thinned(&[1.0, 10.0], 0), vec![1.0]);
+    // One decade among them (2 … 30): spread by position, not the two that round to 10⁰.
+    assert_eq!(thinned(&log_ticks(2.0, 30.0), 2), vec![2.0, 10.0]);
 }
 
 #[test]
