@@ -464,7 +464,10 @@ function fitEquation() {
   const room = box.clientWidth;
   if (!(natural > 0 && room > 0)) return;
   const next = Math.max(EQUATION_MIN_SCALE, Math.min(1, Math.floor((room / natural) * 100) / 100));
-  if (next === scale) return;
+  // It grows back only by more than a step: text does not scale exactly with its font, and
+  // at some widths each of two sizes asked for the other (universality's equation flickered
+  // every frame on a phone).
+  if (next === scale || (next > scale && next < Math.min(1, scale + 0.02))) return;
   math.dataset.scale = String(next);
   math.style.fontSize = next === 1 ? '' : `${next * 100}%`;
 }
@@ -565,7 +568,7 @@ function announce(text) {
 
 /**
  * Writes each plot's text alternative (`[{key, text}]`) into its caption: an update gives
- * those of the plots it drew (and the first plot's), drawStale those of the plots it
+ * those of the plots it drew (and the primary plot's), drawStale those of the plots it
  * catches up.
  */
 function showCaptions(descriptions) {
@@ -618,7 +621,8 @@ function drawFrame() {
       for (const key of app.view.shownPlots) app.session.setVisible(key, app.onScreen.has(key));
       showCaptions(app.session.drawStale(dpr, isDark(), false).descriptions);
     }
-    if (out.descriptions.length) announce(out.descriptions[0].text);
+    const said = out.descriptions.find((d) => d.key === app.view.staged) || out.descriptions[0];
+    if (said) announce(said.text);
     if (!app.firstDrawn) {
       app.firstDrawn = true;
       performance.mark('zeta:first-draw');

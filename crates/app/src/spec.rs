@@ -277,11 +277,8 @@ pub struct DemoSpec {
     pub params: Vec<ParamSpec>,
     /// Readouts in display order.
     pub readouts: Vec<ReadoutSpec>,
-    /// Plots in display order.
+    /// Plots in display order. The first is the primary plot (see [`DemoSpec::primary`]).
     pub plots: Vec<PlotSpec>,
-    /// Key of the primary plot: the one that answers the sliders most directly, kept in
-    /// view beside the controls and shown first in the embed view. Empty means the first.
-    pub primary_plot: &'static str,
     /// One-click configurations.
     pub presets: Vec<Preset>,
     /// An optional reference table.
@@ -291,13 +288,12 @@ pub struct DemoSpec {
 }
 
 impl DemoSpec {
-    /// The primary plot's key: the declared one, else the first plot's.
+    /// The primary plot's key: the plot that answers the sliders most directly, kept in view
+    /// beside the controls (the page stages it) and shown first in the embed view. It is the
+    /// first plot declared, the one whose figure every update builds (its text is announced,
+    /// and the page lays the stage out with its caption before the first frame draws).
     pub fn primary(&self) -> &'static str {
-        if self.primary_plot.is_empty() {
-            self.plots.first().map_or("", |p| p.key)
-        } else {
-            self.primary_plot
-        }
+        self.plots.first().map_or("", |p| p.key)
     }
 
     /// The parameter with this key.

@@ -48,11 +48,8 @@ pub struct Declaration<P, R> {
     pub params: Vec<Param<P>>,
     /// Readouts in display order, each with its getter from `R`.
     pub readouts: Vec<ReadoutDef<R>>,
-    /// Plots in display order.
+    /// Plots in display order, the primary one first (see [`DemoSpec::primary`]).
     pub plots: Vec<PlotSpec>,
-    /// Key of the plot that answers the sliders most directly (see [`DemoSpec::primary_plot`]).
-    /// Empty means the first plot.
-    pub primary_plot: &'static str,
     /// One-click configurations.
     pub presets: Vec<Preset>,
     /// An optional reference table.
@@ -73,7 +70,6 @@ impl<P, R> Declaration<P, R> {
             params: Vec::new(),
             readouts: Vec::new(),
             plots: Vec::new(),
-            primary_plot: "",
             presets: Vec::new(),
             table: None,
             schematic: false,
@@ -97,11 +93,6 @@ impl<P, R> Declaration<P, R> {
                 .collect(),
             readouts: self.readouts.iter().map(ReadoutDef::spec).collect(),
             plots: self.plots.clone(),
-            primary_plot: if self.primary_plot.is_empty() {
-                self.plots.first().map_or("", |p| p.key)
-            } else {
-                self.primary_plot
-            },
             presets: self.presets.clone(),
             table: self.table.clone(),
             schematic: self.schematic,

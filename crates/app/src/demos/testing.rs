@@ -25,6 +25,13 @@ pub trait Tested: Model {
     fn live(query: &str) -> Live {
         live(Self::declare().id, query)
     }
+
+    /// Plot `key`'s figure in `frame` (a frame holds them in declaration order).
+    fn plot<'a>(frame: &'a Frame, key: &str) -> &'a Figure {
+        let plots = Self::declare().plots;
+        let i = plots.iter().position(|p| p.key == key);
+        &frame.figures[i.unwrap_or_else(|| panic!("no plot {key}"))]
+    }
 }
 
 impl<M: Model> Tested for M {}

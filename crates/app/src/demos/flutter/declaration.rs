@@ -24,7 +24,6 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         params,
         readouts: readouts(),
         plots: rows::drawn_plots(&PLOTS),
-        primary_plot: "response",
         presets: vec![
             preset(
                 "Tacoma 1940, 10 m/s (stable)",
@@ -136,8 +135,13 @@ fn readouts() -> Vec<ReadoutDef<Results>> {
     }
 }
 
-/// The plots, in order: key, title and width / height, and the figure each shows.
+/// The plots, in order (the primary one first): key, title and width / height, and the
+/// figure each shows.
 pub(super) const PLOTS: [Drawn<Results>; 4] = [
+    (
+        ("response", "Deck twist θ(t) over minutes", 2.2),
+        figures::response,
+    ),
     (
         (
             "derivative",
@@ -153,9 +157,5 @@ pub(super) const PLOTS: [Drawn<Results>; 4] = [
     (
         ("locus", "Root locus as the wind rises", 1.25),
         figures::locus,
-    ),
-    (
-        ("response", "Deck twist θ(t) over minutes", 2.2),
-        figures::response,
     ),
 ];

@@ -24,11 +24,13 @@ fn the_failure_day_grows_to_a_large_twist_within_the_plotted_window() {
     );
     assert!(text(&f, "limit_deg").ends_with('°'));
     assert!(
-        f.figures[3].description.contains("grows to"),
+        Flutter::plot(&f, "response")
+            .description
+            .contains("grows to"),
         "{}",
-        f.figures[3].description
+        Flutter::plot(&f, "response").description
     );
-    assert!(f.figures[3].x.title().contains("min"));
+    assert!(Flutter::plot(&f, "response").x.title().contains("min"));
 }
 
 #[test]
@@ -39,7 +41,9 @@ fn below_the_critical_speed_a_twist_dies_away() {
     assert_eq!(value(&f, "doubling_time"), "");
     assert_eq!(value(&f, "limit_deg"), "");
     assert!(number(&f, "amplitude_end_deg") < 2.0);
-    assert!(f.figures[3].description.contains("dies down to"));
+    assert!(Flutter::plot(&f, "response")
+        .description
+        .contains("dies down to"));
 }
 
 #[test]
@@ -47,13 +51,15 @@ fn a_streamlined_box_never_flutters_and_the_h_section_does() {
     let boxed = Flutter::preset("Streamlined box deck, 40 m/s");
     assert_eq!(value(&boxed, "U_crit"), "");
     assert!(number(&boxed, "A2") < 0.0);
-    assert!(boxed.figures[1].description.contains("never crosses zero"));
+    assert!(Flutter::plot(&boxed, "damping")
+        .description
+        .contains("never crosses zero"));
     let h = Flutter::run("U=25");
     assert!(number(&h, "A2") > 0.0);
     // A₃* > 0 lowers the frequency below the still-air 0.2 Hz.
     assert!(number(&h, "frequency") < 0.2);
     // The current point sits on the plotted A₂* curve.
-    let marker = &h.figures[0].markers[0];
+    let marker = &Flutter::plot(&h, "derivative").markers[0];
     assert!((marker.at.1 - number(&h, "A2")).abs() < 1e-12);
     assert!((marker.at.0 - number(&h, "reduced_velocity")).abs() < 1e-12);
 }

@@ -23,7 +23,6 @@ pub(super) fn declaration() -> Declaration<P, Results> {
                 aspect: 1.6,
             })
             .collect(),
-        primary_plot: "fig1a",
         ..Declaration::new("paper", "The paper, checked", text::SUMMARY)
     }
 }

@@ -32,7 +32,6 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             ("response", figures::RESPONSE_TITLE, 1.9),
             ("poles", figures::POLES_TITLE, 1.25),
         ]),
-        primary_plot: "response",
         // One per regime, each released from x₀ = 0.06 m at rest (ωₙ stays).
         presets: [
             ("Undamped ζ = 0", 0.0),

@@ -29,7 +29,6 @@ pub(super) fn declaration() -> Declaration<P, Results> {
         params,
         readouts,
         plots: rows::drawn_plots(&PLOTS),
-        primary_plot: "normalised",
         presets: presets(),
         table: Some(text::table()),
         schematic: true,
