@@ -156,3 +156,18 @@ test('on a phone the tour fits the width, and it prints', async () => {
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('from the paper, the demo menu opens a demo with its controls and its plot', async () => {
+  // The tour hid the stage and the controls on the page's root, and the next demo opened
+  // from the menu kept them hidden (until 2026-12-04).
+  const { page, errors, context } = await open(browser, `${server.url}?demo=paper`);
+  await checked(page);
+  await page.selectOption('#demo-select', 'regimes');
+  await page.waitForFunction(() => document.querySelector('.workspace')?.dataset.demo === 'regimes' && window.zetaDiagnostics.drawn());
+  for (const selector of ['.controls', '.stage-slot canvas[data-plot]', 'input[type=range]']) {
+    assert.ok(await page.isVisible(selector), `${selector} is shown`);
+  }
+  assert.equal(await page.$('.tour'), null);
+  assert.deepEqual(errors, []);
+  await context.close();
+});

@@ -173,6 +173,8 @@ function withModule(name, use, without) {
 /** Lays out the paper's tour (tour.js) once it is loaded, if the same demo is still open. */
 function showTour(tour) {
   const view = app.view;
+  // At once, not when tour.js has loaded: the empty stage and form are not painted first.
+  app.root.classList.add('touring');
   withModule('tour', (m) => {
     if (app.view === view) m.renderTour(app.root, tour);
   });

@@ -186,6 +186,7 @@ function buildFigure(p, exports) {
  */
 export function buildDemo(root, spec) {
   root.replaceChildren();
+  root.classList.remove('touring'); // the paper's tour hid the stage and the controls
   const workspace = el('div', { class: 'workspace', 'data-demo': spec.id, 'data-primary': spec.primary_plot || '' });
   const head = buildHead(spec);
   const stageBox = el('section', { class: 'stage', 'aria-label': t('plotInView') });
