@@ -321,3 +321,30 @@ test('the values under the pointer show in the first frame on the full module', 
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('if upgrade.js fails to load, it is asked for again and the full module takes over', async () => {
+  // Before 2026-12-04 a failed load left the page on the first module until a menu choice
+  // or a click on a plot.
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
+  const asked = [];
+  await context.route('**/web/upgrade.js*', async (route) => {
+    asked.push(new URL(route.request().url()).search);
+    if (asked.length === 1) await route.abort();
+    else await route.continue();
+  });
+  const page = await context.newPage();
+  await page.goto(`${server.url}?demo=regimes&zeta=0.2`);
+  await waitForReadouts(page);
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 20000 });
+  assert.equal(asked.length, 2, `upgrade.js asked for ${asked.join(', ')}`);
+  await nudgeZeta(page);
+  await context.close();
+});
+
+/** Moves regimes' ζ slider one step with the keyboard; its readout follows. */
+async function nudgeZeta(page) {
+  const before = await page.textContent('[data-readout="zeta"] dd');
+  await page.focus('#p-zeta');
+  await page.keyboard.press('ArrowRight');
+  await page.waitForFunction((old) => document.querySelector('[data-readout="zeta"] dd').textContent !== old, before);
+}

@@ -1223,13 +1223,19 @@ function loadFull() {
 /**
  * After the first plot from the first module: the full module starts downloading at once,
  * while upgrade.js (the switch, see there) loads beside it and then moves the demo to it
- * between two bursts of input. Without upgrade.js the menu's switch still works.
+ * between two bursts of input. Without upgrade.js (it is asked for again, three times) the
+ * menu's switch still works.
  */
-function startUpgrade() {
+function startUpgrade(tries = 0) {
   loadFull().catch(() => {}); // upgrade() reports a failure (its own call tries again if this one already failed)
-  return import('./upgrade.js').then(
+  return import(tries ? `./upgrade.js?try=${tries}` : './upgrade.js').then(
     (m) => m.upgrade(app, { loadFull, adopt, reportFailure, restLeft, isDark, showStudyProgress, showResults, observeVisibility, scheduleCatchUp, rest: REST_MS.upgrade, slice: REFINE_SLICE_MS }),
-    (err) => console.warn('Zeta Lab: upgrade.js could not be loaded:', err && err.message),
+    (err) => {
+      console.warn('Zeta Lab: upgrade.js could not be loaded:', err && err.message);
+      // Asked again (a new address: a failed import is remembered) 2, 4 and 8 s later, while
+      // the page is on the first module; a menu choice or a click switches meanwhile.
+      if (tries < 3) setTimeout(() => app.module === 'first' && startUpgrade(tries + 1), 2000 << tries);
+    },
   );
 }
 

@@ -50,9 +50,10 @@ pub(super) fn build<'a, DB: DrawingBackend>(
     short: bool,
 ) -> Result<Chart<'a, DB>, RenderError> {
     // The title's band, left blank for [`draw_title`]: as high as the title at its full
-    // size, whatever size it is drawn at, so a title that grows or shrinks with the data
-    // (a map's names its range) neither moves the plot nor changes its static layer.
-    let font = (super::SANS, TITLE_SIZE * scale)
+    // size and [`TITLE_GAP`] more, whatever size it is drawn at, so a title that grows or
+    // shrinks with the data (a map's names its range) neither moves the plot nor changes
+    // its static layer.
+    let font = (super::SANS, (TITLE_SIZE + TITLE_GAP) * scale)
         .into_font()
         .color(&theme.foreground);
     ChartBuilder::on(area)
@@ -68,6 +69,10 @@ pub(super) fn build<'a, DB: DrawingBackend>(
 
 /// A title's full size (px at scale 1); a long one is drawn smaller (see [`fit`]).
 const TITLE_SIZE: f64 = 15.0;
+
+/// Room (px at scale 1) the title's band keeps below the title: a tick label at the top
+/// of the y axis is centred on the plot's top edge, and reached into the title.
+const TITLE_GAP: f64 = 6.0;
 
 /// The chart's margin (px at scale 1): [`build`] leaves it, and [`fit_title`] and
 /// [`draw_title`] place the title inside it as [`build`]'s caption would be.
