@@ -348,3 +348,20 @@ async function nudgeZeta(page) {
   await page.keyboard.press('ArrowRight');
   await page.waitForFunction((old) => document.querySelector('[data-readout="zeta"] dd').textContent !== old, before);
 }
+
+test('if the full module fails to download, it is asked for again and takes over', async () => {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
+  let asked = 0;
+  await context.route(FULL_WASM, async (route) => {
+    asked += 1;
+    if (asked === 1) await route.abort();
+    else await route.continue();
+  });
+  const page = await context.newPage();
+  await page.goto(`${server.url}?demo=regimes&zeta=0.2`);
+  await waitForReadouts(page);
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 20000 });
+  assert.ok(asked >= 2, `the full wasm asked for ${asked} times`);
+  await nudgeZeta(page);
+  await context.close();
+});

@@ -177,7 +177,7 @@ function showTour(tour) {
   app.root.classList.add('touring');
   withModule('tour', (m) => {
     if (app.view === view) m.renderTour(app.root, tour);
-  });
+  }, () => app.view === view && app.root.classList.remove('touring'));
 }
 
 /** Reports an error from a wasm call without breaking the page; the next input recovers. */
@@ -465,11 +465,12 @@ function fitEquation() {
   const natural = Math.max(0, ...[...math.children].map((c) => c.getBoundingClientRect().width)) / scale;
   const room = box.clientWidth;
   if (!(natural > 0 && room > 0)) return;
-  const next = Math.max(EQUATION_MIN_SCALE, Math.min(1, Math.floor((room / natural) * 100) / 100));
-  // It grows back only by more than a step: text does not scale exactly with its font, and
-  // at some widths each of two sizes asked for the other (universality's equation flickered
-  // every frame on a phone).
-  if (next === scale || (next > scale && next < Math.min(1, scale + 0.02))) return;
+  const fit = room / natural;
+  const next = Math.max(EQUATION_MIN_SCALE, Math.min(1, Math.floor(fit * 100) / 100));
+  // It grows back only if it would fit more than a step larger: text does not scale exactly
+  // with its font, and at some widths each of two sizes asked for the other (universality's
+  // equation flickered every frame on a phone).
+  if (next === scale || (next > scale && fit < scale + 0.02)) return;
   math.dataset.scale = String(next);
   math.style.fontSize = next === 1 ? '' : `${next * 100}%`;
 }
@@ -617,13 +618,16 @@ function drawFrame() {
     if (out.derived.length) syncUrl();
     applyConditions(app.view.spec, app.root);
     showCaptions(out.descriptions);
+    let drawn = out.descriptions;
     if (settle) {
       app.view.settled = app.layoutDirty = true;
       sizeCanvases();
       for (const key of app.view.shownPlots) app.session.setVisible(key, app.onScreen.has(key));
-      showCaptions(app.session.drawStale(dpr, isDark(), false).descriptions);
+      drawn = app.session.drawStale(dpr, isDark(), false).descriptions;
+      showCaptions(drawn);
     }
-    const said = out.descriptions.find((d) => d.key === app.view.staged) || out.descriptions[0];
+    // The staged plot's text (an embed's `plots=` may stage another than the primary one).
+    const said = drawn.find((d) => d.key === app.view.staged);
     if (said) announce(said.text);
     if (!app.firstDrawn) {
       app.firstDrawn = true;

@@ -38,11 +38,16 @@ function betweenBursts() {
 export async function upgrade(state, helpers) {
   [app, page] = [state, helpers];
   let mod;
-  try {
-    mod = await page.loadFull();
-  } catch (err) {
-    console.warn('Zeta Lab: the full module could not be loaded yet:', err && err.message);
-    return; // the next demo chosen from the menu tries again
+  for (let tries = 0; !mod; tries++) {
+    try {
+      mod = await page.loadFull();
+    } catch (err) {
+      console.warn('Zeta Lab: the full module could not be loaded yet:', err && err.message);
+      // Asked for again 2, 4 and 8 s later (a dropped connection); a menu choice or a click
+      // on a plot tries again too.
+      if (tries === 3) return;
+      await new Promise((done) => setTimeout(done, 2000 << tries));
+    }
   }
   while (app.module === 'first') {
     await betweenBursts();
