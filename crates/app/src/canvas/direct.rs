@@ -1,9 +1,11 @@
 //! [`CanvasDirect`]: what the canvas draws itself beside plotters' calls (see
 //! `render::Direct`): line dashes, images of a pixel per cell stretched over a heatmap, a
-//! muted trial layout, and each plot's static layer (background, grid, ticks, axis names) kept
-//! as a copy once it has come twice in a row, so a held drag starts each frame from it.
+//! muted trial layout, and each plot's static layer (background, grid, ticks, axis names,
+//! backdrop) kept as a copy once it has come twice in a row, so a held drag starts each
+//! frame from it; for a plot with a backdrop also the part under it, for a drag that moves
+//! the backdrop.
 
-use crate::render::{Direct, LayerNote, Stretched};
+use crate::render::{Direct, Kept, LayerKeys, LayerNote, Stretched};
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 use wasm_bindgen::{JsCast, JsValue};
@@ -26,16 +28,75 @@ impl CanvasDirect {
     }
 }
 
-/// A canvas's static layer: the key of the layer last begun on it, in how many frames in
-/// a row, and a copy of it (`valid` once the layer has come twice in a row: a plot whose
-/// axes change every frame is never copied) with what its drawing noted.
+/// A canvas's static layer: the whole of it and, for a plot with a backdrop, the part
+/// under the backdrop, each kept as a copy once it has come twice in a row (see [`Part`]),
+/// with what the whole layer's drawing noted. The part under the backdrop serves a drag
+/// that moves the backdrop too (an exact solution under the numerical ones).
 struct Layer {
     canvas: HtmlCanvasElement,
+    whole: Part,
+    axes: Part,
+    note: LayerNote,
+}
+
+impl Layer {
+    fn new(canvas: &HtmlCanvasElement) -> Self {
+        Self {
+            canvas: canvas.clone(),
+            whole: Part::default(),
+            axes: Part::default(),
+            note: LayerNote::default(),
+        }
+    }
+}
+
+/// One part of a static layer: the key last begun, in how many frames in a row, and a
+/// copy of it, `valid` once the key has come twice in a row (a plot whose axes change
+/// every frame is never copied).
+#[derive(Default)]
+struct Part {
     key: u64,
     frames: u32,
     copy: Option<HtmlCanvasElement>,
     valid: bool,
-    note: LayerNote,
+}
+
+impl Part {
+    /// Counts a frame that begins with `key`.
+    fn count(&mut self, key: u64) {
+        if self.key == key {
+            self.frames = self.frames.saturating_add(1);
+        } else {
+            (self.key, self.frames, self.valid) = (key, 1, false);
+        }
+    }
+
+    /// The copy, if it holds this key at `size` (a resized canvas was cleared).
+    fn held(&self, size: (u32, u32)) -> Option<&HtmlCanvasElement> {
+        let copy = self.copy.as_ref()?;
+        (self.valid && (copy.width(), copy.height()) == size).then_some(copy)
+    }
+
+    /// Keeps what `canvas` shows as this part's copy if `key` has come twice in a row.
+    fn keep(&mut self, key: u64, canvas: &HtmlCanvasElement) -> bool {
+        if self.key != key || self.frames < 2 {
+            return false;
+        }
+        if self.copy.is_none() {
+            self.copy = offscreen();
+        }
+        let Some(copy) = &self.copy else {
+            return false;
+        };
+        // Resizing also clears it.
+        copy.set_width(canvas.width());
+        copy.set_height(canvas.height());
+        self.valid = super::context_of(copy).is_some_and(|c| {
+            c.draw_image_with_html_canvas_element(canvas, 0.0, 0.0)
+                .is_ok()
+        });
+        self.valid
+    }
 }
 
 /// A canvas outside the page of one size, with its context (see `SCRATCH`), and the hash
@@ -127,7 +188,7 @@ pub fn prepare(canvas: &HtmlCanvasElement) {
     }
     KEPT.with_borrow_mut(|kept| {
         if let Some(layer) = kept.iter().find(|l| l.canvas == *canvas) {
-            if layer.copy.is_some() {
+            if layer.whole.copy.is_some() {
                 return;
             }
         }
@@ -142,19 +203,14 @@ pub fn prepare(canvas: &HtmlCanvasElement) {
         // A first drawing makes the browser set the canvas's storage up now.
         context.clear_rect(0.0, 0.0, 1.0, 1.0);
         match kept.iter_mut().find(|l| l.canvas == *canvas) {
-            Some(layer) => layer.copy = Some(copy),
+            Some(layer) => layer.whole.copy = Some(copy),
             None => {
                 if kept.len() >= LAYERS {
                     kept.remove(0);
                 }
-                kept.push(Layer {
-                    canvas: canvas.clone(),
-                    key: 0,
-                    frames: 0,
-                    copy: Some(copy),
-                    valid: false,
-                    note: LayerNote::default(),
-                });
+                let mut layer = Layer::new(canvas);
+                layer.whole.copy = Some(copy);
+                kept.push(layer);
             }
         }
     });
@@ -166,13 +222,8 @@ pub fn prepare(canvas: &HtmlCanvasElement) {
 pub fn keeps_layer(canvas: &HtmlCanvasElement) -> bool {
     let size = (canvas.width(), canvas.height());
     KEPT.with_borrow(|kept| {
-        kept.iter().any(|l| {
-            l.canvas == *canvas
-                && l.valid
-                && l.copy
-                    .as_ref()
-                    .is_some_and(|c| (c.width(), c.height()) == size)
-        })
+        kept.iter()
+            .any(|l| l.canvas == *canvas && l.whole.held(size).is_some())
     })
 }
 
@@ -187,7 +238,7 @@ impl Direct for CanvasDirect {
         self.muted.set(on);
     }
 
-    fn begin_layer(&self, key: u64) -> Option<LayerNote> {
+    fn begin_layer(&self, keys: LayerKeys) -> Option<Kept> {
         self.flush();
         if KEEPS_NO_LAYER {
             return None;
@@ -195,43 +246,49 @@ impl Direct for CanvasDirect {
         KEPT.with_borrow_mut(|kept| {
             let mut layer = match kept.iter().position(|l| l.canvas == self.canvas) {
                 Some(i) => kept.remove(i),
-                None => Layer {
-                    canvas: self.canvas.clone(),
-                    key,
-                    frames: 0,
-                    copy: None,
-                    valid: false,
-                    note: LayerNote::default(),
-                },
+                None => Layer::new(&self.canvas),
             };
-            if layer.key == key {
-                layer.frames = layer.frames.saturating_add(1);
-            } else {
-                (layer.key, layer.frames, layer.valid) = (key, 1, false);
+            layer.whole.count(keys.whole);
+            if keys.has_backdrop() {
+                layer.axes.count(keys.axes);
             }
-            let (w, h) = (self.canvas.width(), self.canvas.height());
-            let held = layer
-                .copy
-                .as_ref()
-                .filter(|c| layer.valid && c.width() == w && c.height() == h);
-            // Drawn whole, it covers what was there; drawImage leaves the state the
+            let size = (self.canvas.width(), self.canvas.height());
+            // Drawn whole, a copy covers what was there; drawImage leaves the state the
             // backend caches as it was.
-            let drawn = held.is_some_and(|copy| {
+            let draw = |copy: &HtmlCanvasElement| {
                 self.context
                     .draw_image_with_html_canvas_element(copy, 0.0, 0.0)
                     .is_ok()
-            });
-            self.muted.set(drawn);
+            };
+            let drawn = if layer.whole.held(size).is_some_and(draw) {
+                Some(Kept::Whole(layer.note))
+            } else if keys.has_backdrop() && layer.axes.held(size).is_some_and(draw) {
+                Some(Kept::Axes)
+            } else {
+                None
+            };
+            self.muted.set(drawn.is_some());
             if kept.len() >= LAYERS {
                 kept.remove(0);
             }
-            let note = layer.note;
             kept.push(layer);
-            drawn.then_some(note)
+            drawn
         })
     }
 
-    fn end_layer(&self, key: u64, note: LayerNote) {
+    fn axes_done(&self, keys: LayerKeys) {
+        self.flush();
+        if self.muted.replace(false) || KEEPS_NO_LAYER || !keys.has_backdrop() {
+            return;
+        }
+        KEPT.with_borrow_mut(|kept| {
+            if let Some(layer) = kept.iter_mut().find(|l| l.canvas == self.canvas) {
+                layer.axes.keep(keys.axes, &self.canvas);
+            }
+        });
+    }
+
+    fn end_layer(&self, keys: LayerKeys, note: LayerNote) {
         self.flush();
         if self.muted.replace(false) || KEEPS_NO_LAYER {
             return;
@@ -240,23 +297,9 @@ impl Direct for CanvasDirect {
             let Some(layer) = kept.iter_mut().find(|l| l.canvas == self.canvas) else {
                 return;
             };
-            if layer.key != key || layer.frames < 2 {
-                return;
+            if layer.whole.keep(keys.whole, &self.canvas) {
+                layer.note = note;
             }
-            if layer.copy.is_none() {
-                layer.copy = offscreen();
-            }
-            let Some(copy) = &layer.copy else {
-                return;
-            };
-            // Resizing also clears it.
-            copy.set_width(self.canvas.width());
-            copy.set_height(self.canvas.height());
-            layer.valid = super::context_of(copy).is_some_and(|c| {
-                c.draw_image_with_html_canvas_element(&self.canvas, 0.0, 0.0)
-                    .is_ok()
-            });
-            layer.note = note;
         });
     }
 

@@ -7,7 +7,7 @@ use super::legend::{free_corner, legend_entries, Legend};
 use super::lines::{draw_lines_and_markers, draw_series};
 use super::scale::Scale;
 use super::ticks::axis_tick_label;
-use super::{err, px, Output, RenderError};
+use super::{err, px, Kept, LayerKeys, Output, RenderError};
 use crate::figure::{AxisScale, Figure, LineStyle};
 use crate::theme::Theme;
 use plotters::coord::Shift;
@@ -141,28 +141,21 @@ fn draw_title<DB: DrawingBackend>(
 
 /// What a plot's static layer (background, the title's band, grid, ticks, axis names and
 /// the first `backdrop` series) depends on, hashed (the title itself is drawn over it, see
-/// [`draw_title`]): the axes, whether a colour bar takes room on the right, the backdrop's
-/// points and strokes, the theme, the scale, the backend's size and the legend band's
-/// height, and the language's way of writing numbers. Hashed with `FxHasher`: a key for
-/// the layer last drawn on one canvas, not a guard against chosen collisions, and several
-/// times cheaper per point than the standard hasher (resonance's family is ~6 500 points,
-/// hashed every frame of a drag); fluent-bundle links it already.
-pub(super) fn static_key(
+/// [`draw_title`]): under the backdrop, the axes, whether a colour bar takes room on the
+/// right, the theme, the scale, the backend's size and the legend band's height, and the
+/// language's way of writing numbers; the whole layer, those and the backdrop's points and
+/// strokes. Hashed with `FxHasher`: a key for the layer last drawn on one canvas, not a
+/// guard against chosen collisions, and several times cheaper per point than the standard
+/// hasher (resonance's family is ~6 500 points, hashed every frame of a drag);
+/// fluent-bundle links it already.
+pub(super) fn static_keys(
     fig: &Figure,
     backdrop: usize,
     theme: &Theme,
     scale: f64,
     size: (u32, u32, u32),
-) -> u64 {
+) -> LayerKeys {
     let mut h = rustc_hash::FxHasher::default();
-    for s in fig.series.iter().take(backdrop) {
-        let style = s.style;
-        (style.ink.index(), style.width.to_bits(), style.dash as u8).hash(&mut h);
-        s.points.len().hash(&mut h);
-        for &(x, y) in &s.points {
-            (x.to_bits(), y.to_bits()).hash(&mut h);
-        }
-    }
     for axis in [&fig.x, &fig.y] {
         (&axis.label, axis.unit, axis.scale == AxisScale::Log).hash(&mut h);
         (axis.range.0.to_bits(), axis.range.1.to_bits()).hash(&mut h);
@@ -178,7 +171,24 @@ pub(super) fn static_key(
     }
     (scale.to_bits(), size).hash(&mut h);
     super::tick_label(1.5).hash(&mut h);
-    h.finish()
+    let axes = h.finish();
+    if backdrop == 0 {
+        return LayerKeys { axes, whole: axes };
+    }
+    for s in fig.series.iter().take(backdrop) {
+        let style = s.style;
+        (style.ink.index(), style.width.to_bits(), style.dash as u8).hash(&mut h);
+        s.points.len().hash(&mut h);
+        for &(x, y) in &s.points {
+            (x.to_bits(), y.to_bits()).hash(&mut h);
+        }
+    }
+    // Never equal to `axes`: equal keys say there is no backdrop.
+    let whole = match h.finish() {
+        w if w == axes => w ^ 1,
+        w => w,
+    };
+    LayerKeys { axes, whole }
 }
 
 /// The legend rows `entries` (labels and swatches) as a hash, never 0 (0 stands for no
@@ -357,7 +367,7 @@ pub(super) fn draw<DB: DrawingBackend>(
     };
     let layer = out
         .direct
-        .map(|d| (d, static_key(fig, backdrop, theme, scale, (w, h, band_h))));
+        .map(|d| (d, static_keys(fig, backdrop, theme, scale, (w, h, band_h))));
     // A legend in rows under the chart covers no data: it goes into the static layer, so a
     // drag need not draw its swatches and labels every frame; over a kept layer whose rows
     // differ (a label that names a value), the band is cleared and the rows drawn again.
@@ -365,18 +375,23 @@ pub(super) fn draw<DB: DrawingBackend>(
         Placement::Below(_) if layer.is_some() && !cfg!(feature = "first") => rows_key(&entries),
         _ => 0,
     };
-    // A layer the backend keeps is drawn already: its mesh and backdrop are skipped.
-    let kept = layer.and_then(|(direct, key)| direct.begin_layer(key));
+    // A layer the backend keeps is drawn already: its mesh (and backdrop) are skipped.
+    let kept = layer.and_then(|(direct, keys)| direct.begin_layer(keys));
     if layer.is_some() && kept.is_none() {
         root.fill(&theme.background).map_err(err)?;
     }
     let mut chart = build(&area, fig, theme, scale, short)?;
     let (backdrop_clipped, rows_drawn) = match kept {
-        Some(note) => (note.clipped, note.rows),
-        None => {
-            draw_mesh(&area, &mut chart, fig, theme, scale)?;
-            if fig.heatmap.is_none() {
-                draw_origin_lines(&mut chart, fig, theme, scale)?;
+        Some(Kept::Whole(note)) => (note.clipped, note.rows),
+        _ => {
+            if kept.is_none() {
+                draw_mesh(&area, &mut chart, fig, theme, scale)?;
+                if fig.heatmap.is_none() {
+                    draw_origin_lines(&mut chart, fig, theme, scale)?;
+                }
+            }
+            if let Some((direct, keys)) = layer {
+                direct.axes_done(keys);
             }
             let clipped = draw_series(
                 &mut chart,
@@ -392,12 +407,12 @@ pub(super) fn draw<DB: DrawingBackend>(
             (clipped, rows)
         }
     };
-    if let Some((direct, key)) = layer {
+    if let Some((direct, keys)) = layer {
         let note = super::LayerNote {
             clipped: backdrop_clipped,
             rows: rows_drawn,
         };
-        direct.end_layer(key, note);
+        direct.end_layer(keys, note);
     }
     draw_title(&area, fig, theme, scale)?;
 

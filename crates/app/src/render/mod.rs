@@ -137,15 +137,51 @@ pub trait Direct {
     /// layout that only gives pixels (a plot with a legend is laid out twice).
     fn mute(&self, on: bool);
     /// At the start of a plot's static layer (background, the title's band, grid, ticks,
-    /// axis names and the figure's backdrop series; the title is drawn after
-    /// [`Direct::end_layer`]), which `key` names. A backend that holds that layer draws it
-    /// at once, returns what was noted with it (the caller then skips drawing the layer)
-    /// and draws nothing until [`Direct::end_layer`]. While a control is held the axes
-    /// hold still, so most frames need only the data drawn.
-    fn begin_layer(&self, key: u64) -> Option<LayerNote>;
-    /// At the end of the static layer `key`: resumes drawing, and may keep what is drawn
-    /// so far as that layer, with `note`.
-    fn end_layer(&self, key: u64, note: LayerNote);
+    /// axis names, origin lines, then the figure's backdrop series and the legend's rows
+    /// under the chart; the title is drawn after [`Direct::end_layer`]), which `keys`
+    /// name. A backend that holds the whole layer draws it at once and returns
+    /// [`Kept::Whole`] with what was noted with it (the caller then skips drawing the
+    /// layer); one that holds only what lies under the backdrop draws that and returns
+    /// [`Kept::Axes`] (the caller draws the backdrop and the rows over it). Either way it
+    /// draws nothing more until [`Direct::axes_done`] or [`Direct::end_layer`]. While a
+    /// control is held the axes hold still, so most frames need only the data drawn, and
+    /// when the control moves the backdrop too (an exact solution under the numerical
+    /// ones), the backdrop and the data.
+    fn begin_layer(&self, keys: LayerKeys) -> Option<Kept>;
+    /// Between what lies under the backdrop and the backdrop itself (not called over a
+    /// [`Kept::Whole`] layer): resumes drawing, and may keep what is drawn so far as the
+    /// layer's part `keys.axes`.
+    fn axes_done(&self, keys: LayerKeys);
+    /// At the end of the static layer: resumes drawing, and may keep what is drawn so far
+    /// as the layer `keys.whole`, with `note`.
+    fn end_layer(&self, keys: LayerKeys, note: LayerNote);
+}
+
+/// What names a plot's static layer (see [`Direct::begin_layer`]), hashed: `axes` what
+/// lies under the backdrop (the axes, the theme, the sizes), `whole` that and the
+/// backdrop series; the two are equal for a figure without a backdrop.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LayerKeys {
+    /// What lies under the backdrop.
+    pub axes: u64,
+    /// All of the static layer.
+    pub whole: u64,
+}
+
+impl LayerKeys {
+    /// Whether the layer has a backdrop over its axes.
+    pub fn has_backdrop(self) -> bool {
+        self.axes != self.whole
+    }
+}
+
+/// What a backend drew of a plot's static layer from the copies it keeps.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kept {
+    /// All of it, with what its drawing noted.
+    Whole(LayerNote),
+    /// What lies under the backdrop; the backdrop and the rows are drawn over it.
+    Axes,
 }
 
 /// What a static layer's drawing found that the frames drawn over it still show: whether

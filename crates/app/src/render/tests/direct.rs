@@ -7,14 +7,24 @@ use std::cell::Cell;
 /// A stretched image as drawn: size, pixels, where it goes and its clip.
 type Drawn = ((u32, u32), Vec<u8>, [i32; 4], [i32; 4]);
 
-/// A backend's own drawing, recorded: the images stretched, the calls in order, whether
-/// it says it keeps every static layer (then it has drawn it), and the note it returns
-/// with a kept layer (the last one noted).
+/// What of every static layer a recording backend says it keeps (then it has drawn it).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+enum Keeps {
+    #[default]
+    Nothing,
+    Whole,
+    /// The part under the backdrop, when there is a backdrop.
+    Axes,
+}
+
+/// A backend's own drawing, recorded: the images stretched, the calls in order, what of
+/// every static layer it says it keeps, and the note it returns with a whole kept layer
+/// (the last one noted).
 #[derive(Default)]
 struct Recorder(
     std::cell::RefCell<Vec<Drawn>>,
     std::cell::RefCell<Vec<String>>,
-    bool,
+    Keeps,
     std::cell::Cell<LayerNote>,
 );
 
@@ -28,12 +38,20 @@ impl Direct for Recorder {
     fn mute(&self, on: bool) {
         self.1.borrow_mut().push(format!("mute {on}"));
     }
-    fn begin_layer(&self, key: u64) -> Option<LayerNote> {
-        self.1.borrow_mut().push(format!("begin {key}"));
-        self.2.then_some(self.3.get())
+    fn begin_layer(&self, keys: LayerKeys) -> Option<Kept> {
+        let LayerKeys { axes, whole } = keys;
+        self.1.borrow_mut().push(format!("begin {axes} {whole}"));
+        match self.2 {
+            Keeps::Whole => Some(Kept::Whole(self.3.get())),
+            Keeps::Axes if keys.has_backdrop() => Some(Kept::Axes),
+            _ => None,
+        }
     }
-    fn end_layer(&self, key: u64, note: LayerNote) {
-        self.1.borrow_mut().push(format!("end {key}"));
+    fn axes_done(&self, LayerKeys { axes, whole }: LayerKeys) {
+        self.1.borrow_mut().push(format!("axes {axes} {whole}"));
+    }
+    fn end_layer(&self, LayerKeys { axes, whole }: LayerKeys, note: LayerNote) {
+        self.1.borrow_mut().push(format!("end {axes} {whole}"));
         self.3.set(note);
     }
 }
@@ -58,14 +76,15 @@ fn drawn(fig: &Figure) -> (Vec<String>, String) {
 fn the_legend_trial_is_muted_and_the_static_layer_is_named_by_what_it_shows() {
     let fig = sample();
     let seen = calls(&fig);
-    assert_eq!(seen.len(), 4, "{seen:?}");
+    assert_eq!(seen.len(), 5, "{seen:?}");
     assert_eq!(
         seen[..2],
         ["mute true", "mute false"],
         "the trial layout draws nothing"
     );
     let key = seen[2].strip_prefix("begin ").unwrap();
-    assert_eq!(seen[3], format!("end {key}"));
+    assert_eq!(seen[3], format!("axes {key}"));
+    assert_eq!(seen[4], format!("end {key}"));
     // Other data, same axes and title: the same layer.
     let mut moved = fig.clone();
     moved.series[0].points[0].1 = 0.7;
@@ -190,9 +209,9 @@ fn a_heatmap_is_one_image_of_a_pixel_per_cell_over_its_cells_and_so_is_its_colou
     );
 }
 
-/// `fig` drawn by a backend that keeps (`true`) or lacks its static layer: the layer's key
-/// and the SVG of what was drawn through plotters.
-fn layered(fig: &Figure, keeps: bool) -> (String, String) {
+/// `fig` drawn by a backend that keeps (all or part of) its static layer or lacks it: the
+/// layer's keys and the SVG of what was drawn through plotters.
+fn layered(fig: &Figure, keeps: Keeps) -> (String, String) {
     let draw = |rec: &Recorder| {
         let mut svg = String::new();
         {
@@ -229,8 +248,8 @@ fn a_kept_layer_holds_the_mesh_and_the_backdrop_and_its_key_their_points() {
     fig.series[2].points = vec![(0.0, 0.1), (1.0, 0.2)];
     fig.series[2].label.clear(); // no legend line
     fig.backdrop = 2;
-    let (key, whole) = layered(&fig, false);
-    let (kept_key, drawn) = layered(&fig, true);
+    let (key, whole) = layered(&fig, Keeps::Nothing);
+    let (kept_key, drawn) = layered(&fig, Keeps::Whole);
     assert_eq!(kept_key, key);
     // Drawn whole: grid, tick labels, the backdrop and the data; over a kept layer only
     // the data, the title and the note that a curve leaves the axes (the backdrop's).
@@ -243,13 +262,13 @@ fn a_kept_layer_holds_the_mesh_and_the_backdrop_and_its_key_their_points() {
     // Without that curve, nothing is clipped.
     let mut inside = fig.clone();
     inside.series[1] = family(0.9);
-    assert!(!layered(&inside, true).1.contains(&note));
+    assert!(!layered(&inside, Keeps::Whole).1.contains(&note));
     // The layer is another when a backdrop point moves, not when a data point does.
     let mut moved = fig.clone();
     moved.series[2].points[0].1 = 0.5;
-    assert_eq!(layered(&moved, false).0, key);
+    assert_eq!(layered(&moved, Keeps::Nothing).0, key);
     moved.series[0].points[3].1 = 0.11;
-    assert_ne!(layered(&moved, false).0, key);
+    assert_ne!(layered(&moved, Keeps::Nothing).0, key);
     // Under a heatmap, drawn over the layer, there is no backdrop.
     let mut mapped = fig.clone();
     mapped.heatmap = Some(crate::figure::Heatmap {
@@ -262,8 +281,54 @@ fn a_kept_layer_holds_the_mesh_and_the_backdrop_and_its_key_their_points() {
         scale: (0.0, 1.0),
         label: String::new(),
     });
-    let (_, over_map) = layered(&mapped, true);
+    let (_, over_map) = layered(&mapped, Keeps::Whole);
     assert_eq!(lines(&over_map), 3, "{over_map}");
+}
+
+#[test]
+fn a_layer_kept_under_its_backdrop_serves_a_drag_that_moves_the_backdrop() {
+    // An exact solution (the backdrop) under a numerical one, as `integrators` draws it.
+    let mut fig = sample();
+    fig.markers.clear();
+    fig.origin_lines = false;
+    let exact = Series {
+        label: String::new(),
+        points: (0..=20).map(|i| (f64::from(i) / 20.0, 0.3)).collect(),
+        style: LineStyle::dotted(Ink::Black, 1.2),
+    };
+    fig.series.insert(0, exact);
+    fig.series[1].points = vec![(0.0, 0.1), (1.0, 0.2)];
+    fig.series[1].label.clear(); // no legend line
+    fig.backdrop = 1;
+    let keys = |fig: &Figure| {
+        let (keys, _) = layered(fig, Keeps::Nothing);
+        let (axes, whole) = keys.split_once(' ').unwrap();
+        (axes.to_owned(), whole.to_owned())
+    };
+    let (axes, whole) = keys(&fig);
+    assert_ne!(axes, whole, "a backdrop: two keys");
+    // The backdrop moves (a dragged ζ moves the exact solution): the same part under it.
+    let mut moved = fig.clone();
+    moved.series[0].points[4].1 = 0.35;
+    let (moved_axes, moved_whole) = keys(&moved);
+    assert_eq!(moved_axes, axes);
+    assert_ne!(moved_whole, whole);
+    // Over that part: the backdrop and the data are drawn, the grid and tick labels not.
+    let lines = |svg: &str| svg.matches("<polyline").count();
+    let (_, under) = layered(&moved, Keeps::Axes);
+    let (_, over_whole) = layered(&moved, Keeps::Whole);
+    let (_, drawn_whole) = layered(&moved, Keeps::Nothing);
+    assert_eq!(lines(&under), 2, "backdrop and data: {under}");
+    assert_eq!(lines(&over_whole), 1, "the data only: {over_whole}");
+    assert!(lines(&drawn_whole) > 3, "{drawn_whole}");
+    assert!(!under.contains("time t [s]") && drawn_whole.contains("time t [s]"));
+    // Without a backdrop the two keys are one, and a backend keeps no part of it apart.
+    let mut bare = fig.clone();
+    bare.series.remove(0);
+    bare.backdrop = 0;
+    let (bare_axes, bare_whole) = keys(&bare);
+    assert_eq!(bare_axes, bare_whole);
+    assert!(lines(&layered(&bare, Keeps::Axes).1) > 3);
 }
 
 /// `fig` drawn with its legend held in rows under the chart, by a backend that keeps its
@@ -272,7 +337,7 @@ fn below(fig: &Figure, keeps: bool, note: LayerNote) -> (LayerNote, String) {
     let rec = Recorder(
         Default::default(),
         Default::default(),
-        keeps,
+        if keeps { Keeps::Whole } else { Keeps::Nothing },
         Cell::new(note),
     );
     let mut svg = String::new();
