@@ -322,13 +322,15 @@ test('the values under the pointer show in the first frame on the full module', 
   await context.close();
 });
 
-test('if upgrade.js fails to load, it is asked for again and the full module takes over', async () => {
-  // Before 2026-12-04 a failed load left the page on the first module until a menu choice
-  // or a click on a plot.
+/**
+ * Opens regimes with the first request matching `pattern` failing: resolves to the URLs
+ * asked for once the full module has taken over, after checking its slider still works.
+ */
+async function afterOneFailure(pattern) {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
   const asked = [];
-  await context.route('**/web/upgrade.js*', async (route) => {
-    asked.push(new URL(route.request().url()).search);
+  await context.route(pattern, async (route) => {
+    asked.push(route.request().url());
     if (asked.length === 1) await route.abort();
     else await route.continue();
   });
@@ -336,32 +338,23 @@ test('if upgrade.js fails to load, it is asked for again and the full module tak
   await page.goto(`${server.url}?demo=regimes&zeta=0.2`);
   await waitForReadouts(page);
   await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 20000 });
-  assert.equal(asked.length, 2, `upgrade.js asked for ${asked.join(', ')}`);
-  await nudgeZeta(page);
-  await context.close();
-});
-
-/** Moves regimes' ζ slider one step with the keyboard; its readout follows. */
-async function nudgeZeta(page) {
+  // Its ζ slider moved one step with the keyboard: the readout follows.
   const before = await page.textContent('[data-readout="zeta"] dd');
   await page.focus('#p-zeta');
   await page.keyboard.press('ArrowRight');
   await page.waitForFunction((old) => document.querySelector('[data-readout="zeta"] dd').textContent !== old, before);
+  await context.close();
+  return asked;
 }
 
+test('if upgrade.js fails to load, it is asked for again and the full module takes over', async () => {
+  // Before 2026-12-04 a failed load left the page on the first module until a menu choice
+  // or a click on a plot.
+  const asked = await afterOneFailure('**/web/upgrade.js*');
+  assert.equal(asked.length, 2, `upgrade.js asked for ${asked.join(', ')}`);
+});
+
 test('if the full module fails to download, it is asked for again and takes over', async () => {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
-  let asked = 0;
-  await context.route(FULL_WASM, async (route) => {
-    asked += 1;
-    if (asked === 1) await route.abort();
-    else await route.continue();
-  });
-  const page = await context.newPage();
-  await page.goto(`${server.url}?demo=regimes&zeta=0.2`);
-  await waitForReadouts(page);
-  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 20000 });
-  assert.ok(asked >= 2, `the full wasm asked for ${asked} times`);
-  await nudgeZeta(page);
-  await context.close();
+  const asked = await afterOneFailure(FULL_WASM);
+  assert.ok(asked.length >= 2, `the full wasm asked for ${asked.length} times`);
 });

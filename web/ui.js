@@ -187,7 +187,7 @@ function buildFigure(p, exports) {
 export function buildDemo(root, spec) {
   root.replaceChildren();
   root.classList.remove('touring'); // the paper's tour hid the stage and the controls
-  const workspace = el('div', { class: 'workspace', 'data-demo': spec.id, 'data-primary': spec.primary_plot || '' });
+  const workspace = el('div', { class: 'workspace', 'data-demo': spec.id, 'data-primary': spec.primary_plot });
   const head = buildHead(spec);
   const stageBox = el('section', { class: 'stage', 'aria-label': t('plotInView') });
   const bar = el('div', { class: 'stage-bar' });
@@ -242,7 +242,7 @@ export function buildDemo(root, spec) {
     gallery.hidden = [...gallery.children].every((f) => f.hidden);
   };
   picker.addEventListener('change', () => view.stagePlot(picker.value));
-  view.stagePlot(spec.primary_plot || (spec.plots[0] && spec.plots[0].key));
+  view.stagePlot(spec.primary_plot);
   return view;
 }
 

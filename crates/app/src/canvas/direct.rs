@@ -179,41 +179,46 @@ thread_local! {
     static KEPT: RefCell<Vec<Layer>> = const { RefCell::new(Vec::new()) };
 }
 
-/// Makes the canvas that will hold `canvas`'s static layer now, sized and with its 2D
-/// context, unless it exists: done while the controls rest, so the first drag does not
-/// pay for a new canvas (about 10 ms at 4× CPU slowdown, the largest cost of that frame).
+/// Makes the canvases that will hold `canvas`'s static layer now (and the part under its
+/// backdrop, for a plot drawn with one), sized and with their 2D contexts, unless they
+/// exist: done while the controls rest, so the first drag does not pay for a new canvas
+/// (about 10 ms at 4× CPU slowdown, the largest cost of that frame).
 pub fn prepare(canvas: &HtmlCanvasElement) {
     if KEEPS_NO_LAYER {
         return;
     }
     KEPT.with_borrow_mut(|kept| {
-        if let Some(layer) = kept.iter().find(|l| l.canvas == *canvas) {
-            if layer.whole.copy.is_some() {
-                return;
-            }
-        }
-        let Some(copy) = offscreen() else {
-            return;
-        };
-        copy.set_width(canvas.width());
-        copy.set_height(canvas.height());
-        let Some(context) = super::context_of(&copy) else {
-            return;
-        };
-        // A first drawing makes the browser set the canvas's storage up now.
-        context.clear_rect(0.0, 0.0, 1.0, 1.0);
-        match kept.iter_mut().find(|l| l.canvas == *canvas) {
-            Some(layer) => layer.whole.copy = Some(copy),
+        let i = match kept.iter().position(|l| l.canvas == *canvas) {
+            Some(i) => i,
             None => {
                 if kept.len() >= LAYERS {
                     kept.remove(0);
                 }
-                let mut layer = Layer::new(canvas);
-                layer.whole.copy = Some(copy);
-                kept.push(layer);
+                kept.push(Layer::new(canvas));
+                kept.len() - 1
             }
+        };
+        let layer = &mut kept[i];
+        // A part under a backdrop has a key once a plot with a backdrop was drawn here.
+        let backdrop = layer.axes.key != 0;
+        for part in [Some(&mut layer.whole), backdrop.then_some(&mut layer.axes)]
+            .into_iter()
+            .flatten()
+            .filter(|part| part.copy.is_none())
+        {
+            part.copy = blank_like(canvas);
         }
     });
+}
+
+/// A new canvas outside the page of `canvas`'s size, its storage set up.
+fn blank_like(canvas: &HtmlCanvasElement) -> Option<HtmlCanvasElement> {
+    let copy = offscreen()?;
+    copy.set_width(canvas.width());
+    copy.set_height(canvas.height());
+    // A first drawing makes the browser set the canvas's storage up now.
+    super::context_of(&copy)?.clear_rect(0.0, 0.0, 1.0, 1.0);
+    Some(copy)
 }
 
 /// Whether `canvas` keeps a copy of the static layer last drawn on it, at its size (a
