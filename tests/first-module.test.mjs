@@ -358,3 +358,11 @@ test('if the full module fails to download, it is asked for again and takes over
   const asked = await afterOneFailure(FULL_WASM);
   assert.ok(asked.length >= 2, `the full wasm asked for ${asked.length} times`);
 });
+
+test('if the full module\'s JavaScript fails to load, it is asked for again at a new address and takes over', async () => {
+  // Chromium asks again even at the same address; a browser that remembers a failed import
+  // (as the HTML standard once said) would not: a new address serves both.
+  const asked = await afterOneFailure('**/zeta-app.js*');
+  assert.ok(asked.length >= 2, `the glue asked for ${asked.length} times`);
+  assert.notEqual(new URL(asked[1]).search, '', asked.join(', '));
+});

@@ -81,6 +81,8 @@ const app = {
   firstDemo: null,
   /** The full module loading while the first one is in use: a promise of {glue, exports}. */
   fullLoading: null,
+  /** How many times loading it failed (see loadFull). */
+  fullFailed: 0,
   /** When the user last touched a control (the full module takes over between bursts). */
   lastInput: 0,
   /** Which canvases are on screen (see observeVisibility); plots off screen wait. */
@@ -1211,14 +1213,18 @@ function wireMenu() {
   });
 }
 
-/** Instantiates the full module once (a promise of {glue, exports}). */
+/**
+ * Instantiates the full module once (a promise of {glue, exports}). After a failure the
+ * glue is asked for at a new address, for browsers that remember a failed import.
+ */
 function loadFull() {
   app.fullLoading ??= (async () => {
-    const glue = await import('../zeta-app.js');
+    const glue = await import(app.fullFailed ? `../zeta-app.js?try=${app.fullFailed}` : '../zeta-app.js');
     const exports = await glue.default({ module_or_path: WASM_URL });
     return { glue, exports };
   })().catch((err) => {
     app.fullLoading = null;
+    app.fullFailed += 1;
     throw err;
   });
   return app.fullLoading;
