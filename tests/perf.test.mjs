@@ -371,12 +371,32 @@ function countLayerFrames(key) {
   }, key);
 }
 
-test('once the axes rest, the plots on screen keep their static layers, so a drag starts from them', { skip }, async () => {
-  const before = countLayerFrames('magnitude');
-  const { page, errors, context } = await open(browser, `${server.url}?demo=resonance&zeta=0.2`, { colorScheme: 'light', before });
+/**
+ * Opens `query` (light theme) on the full module, counting plot `key`'s frames drawn from a
+ * kept layer (countLayerFrames), once everything is drawn; `frames()` waits two frames.
+ */
+async function openCounting(query, key) {
+  const opened = await open(browser, `${server.url}${query}`, { colorScheme: 'light', before: countLayerFrames(key) });
+  const { page } = opened;
   await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });
   await drawn(page);
   const frames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  return { ...opened, frames };
+}
+
+/** Presses the mouse on slider `id`'s thumb; resolves to a move by `df` of its track from there. */
+async function holdThumb(page, id) {
+  const box = await page.locator(`#${id}`).boundingBox();
+  const y = box.y + box.height / 2;
+  const [at, lo, hi] = await page.evaluate((id) => ['value', 'min', 'max'].map((k) => Number(document.getElementById(id)[k])), id);
+  const f = (at - lo) / (hi - lo);
+  await page.mouse.move(box.x + box.width * f, y);
+  await page.mouse.down();
+  return (df) => page.mouse.move(box.x + box.width * (f + df), y);
+}
+
+test('once the axes rest, the plots on screen keep their static layers, so a drag starts from them', { skip }, async () => {
+  const { page, errors, context, frames } = await openCounting('?demo=resonance&zeta=0.2', 'magnitude');
   // One step of the key at rest: the magnitude plot's axes refit to the new peak, a layer
   // drawn once. Then rest.
   const old = await readout(page, 'Q');
@@ -389,19 +409,38 @@ test('once the axes rest, the plots on screen keep their static layers, so a dra
   const resting = await canvasFingerprint(page, 'magnitude', { settled: false });
   const used = await page.evaluate(() => window.__fromLayer);
   // The drag's first frame starts from the kept layer.
-  const box = await page.locator('#p-zeta').boundingBox();
-  const y = box.y + box.height / 2;
-  const at = await page.evaluate(() => Number(document.querySelector('#p-zeta').value));
-  const [lo, hi] = await page.evaluate(() => ['min', 'max'].map((k) => Number(document.querySelector('#p-zeta')[k])));
-  const f = (at - lo) / (hi - lo);
-  await page.mouse.move(box.x + box.width * f, y);
-  await page.mouse.down();
+  const moveBy = await holdThumb(page, 'p-zeta');
   const q = await readout(page, 'Q');
-  await page.mouse.move(box.x + box.width * (f + 0.05), y);
+  await moveBy(0.05);
   await page.waitForFunction((o) => document.querySelector('[data-readout="Q"]').dataset.value !== o, q);
   await frames();
   assert.ok(await page.evaluate(() => window.__fromLayer) > used, 'the first held frame is drawn from the kept layer');
   assert.notDeepEqual(await canvasFingerprint(page, 'magnitude', { settled: false }), resting, 'and shows the new curve');
+  await page.mouse.up();
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a held drag that moves a backdrop (integrators\' exact solution) draws from the part of the layer under it, the same pixels as a fresh drawing', { skip }, async () => {
+  const { page, errors, context, frames } = await openCounting('?demo=integrators&zeta=0.5', 'response');
+  const moveBy = await holdThumb(page, 'p-zeta');
+  const used = await page.evaluate(() => window.__fromLayer);
+  // Towards more damping: the held axes stay, the exact solution moves every frame.
+  for (const df of [0.02, 0.05, 0.08, 0.11, 0.14]) {
+    const old = await readout(page, 'max_err_euler');
+    await moveBy(df);
+    await page.waitForFunction((o) => document.querySelector('[data-readout="max_err_euler"]').dataset.value !== o, old);
+    await frames();
+  }
+  assert.ok((await page.evaluate(() => window.__fromLayer)) >= used + 2, 'frames of the drag start from the kept part of the layer');
+  const fromCopy = await canvasFingerprint(page, 'response', { settled: false });
+  assert.ok(fromCopy[0] > 1000, 'the plot has ink');
+  // Still held: the theme goes dark and back, so the plot is drawn whole again.
+  await page.emulateMedia({ colorScheme: 'dark' });
+  await frames();
+  await page.emulateMedia({ colorScheme: 'light' });
+  await frames();
+  assert.deepEqual(await canvasFingerprint(page, 'response', { settled: false }), fromCopy, 'the same pixels drawn whole');
   await page.mouse.up();
   assert.deepEqual(errors, []);
   await context.close();

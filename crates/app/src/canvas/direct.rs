@@ -52,7 +52,10 @@ impl Layer {
 
 /// One part of a static layer: the key last begun, in how many frames in a row, and a
 /// copy of it, `valid` once the key has come twice in a row (a plot whose axes change
-/// every frame is never copied).
+/// every frame is never copied, nor is the whole layer of one whose backdrop does). A plot
+/// whose backdrop only the view moves (resonance's family) keeps the part under it too,
+/// unused: a second canvas and a second copy on the frames that keep one, the price of not
+/// telling the two kinds of backdrop apart.
 #[derive(Default)]
 struct Part {
     key: u64,
@@ -88,10 +91,18 @@ impl Part {
         let Some(copy) = &self.copy else {
             return false;
         };
-        // Resizing also clears it.
-        copy.set_width(canvas.width());
-        copy.set_height(canvas.height());
+        let (w, h) = (canvas.width(), canvas.height());
+        let resized = (copy.width(), copy.height()) != (w, h);
+        // Resizing also clears it; setting the same size again would set its storage up
+        // anew, so at the same size it is only cleared.
+        if resized {
+            copy.set_width(w);
+            copy.set_height(h);
+        }
         self.valid = super::context_of(copy).is_some_and(|c| {
+            if !resized {
+                c.clear_rect(0.0, 0.0, f64::from(w), f64::from(h));
+            }
             c.draw_image_with_html_canvas_element(canvas, 0.0, 0.0)
                 .is_ok()
         });

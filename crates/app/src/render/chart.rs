@@ -142,7 +142,7 @@ fn draw_title<DB: DrawingBackend>(
 /// What a plot's static layer (background, the title's band, grid, ticks, axis names and
 /// the first `backdrop` series) depends on, hashed (the title itself is drawn over it, see
 /// [`draw_title`]): under the backdrop, the axes, whether a colour bar takes room on the
-/// right, the theme, the scale, the backend's size and the legend band's height, and the
+/// right, whether the origin lines are drawn, the theme, the scale, the backend's size and the legend band's height, and the
 /// language's way of writing numbers; the whole layer, those and the backdrop's points and
 /// strokes. Hashed with `FxHasher`: a key for the layer last drawn on one canvas, not a
 /// guard against chosen collisions, and several times cheaper per point than the standard

@@ -149,8 +149,8 @@ pub trait Direct {
     /// ones), the backdrop and the data.
     fn begin_layer(&self, keys: LayerKeys) -> Option<Kept>;
     /// Between what lies under the backdrop and the backdrop itself (not called over a
-    /// [`Kept::Whole`] layer): resumes drawing, and may keep what is drawn so far as the
-    /// layer's part `keys.axes`.
+    /// [`Kept::Whole`] layer; called, and a no-op, for a figure without a backdrop): resumes
+    /// drawing, and may keep what is drawn so far as the layer's part `keys.axes`.
     fn axes_done(&self, keys: LayerKeys);
     /// At the end of the static layer: resumes drawing, and may keep what is drawn so far
     /// as the layer `keys.whole`, with `note`.

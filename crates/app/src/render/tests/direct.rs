@@ -322,13 +322,67 @@ fn a_layer_kept_under_its_backdrop_serves_a_drag_that_moves_the_backdrop() {
     assert_eq!(lines(&over_whole), 1, "the data only: {over_whole}");
     assert!(lines(&drawn_whole) > 3, "{drawn_whole}");
     assert!(!under.contains("time t [s]") && drawn_whole.contains("time t [s]"));
-    // Without a backdrop the two keys are one, and a backend keeps no part of it apart.
+    // Without a backdrop the two keys are one (which tells a backend there is no part
+    // under a backdrop to keep).
     let mut bare = fig.clone();
     bare.series.remove(0);
     bare.backdrop = 0;
     let (bare_axes, bare_whole) = keys(&bare);
     assert_eq!(bare_axes, bare_whole);
-    assert!(lines(&layered(&bare, Keeps::Axes).1) > 3);
+}
+
+/// `fig` drawn by a backend that keeps `keeps` of its static layer, noted with `note`,
+/// the legend held in rows under the chart (`rows`) or placed afresh: the note the whole
+/// layer's drawing gave and the SVG drawn through plotters.
+fn drawn_over(fig: &Figure, keeps: Keeps, note: LayerNote, rows: bool) -> (LayerNote, String) {
+    let rec = Recorder(
+        Default::default(),
+        Default::default(),
+        keeps,
+        Cell::new(note),
+    );
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (640, 360)).into_drawing_area();
+        let out = Output {
+            direct: Some(&rec),
+            legend: rows.then_some(Placement::Below(0)),
+        };
+        render_with(&root, fig, &Theme::LIGHT, 1.0, out).unwrap();
+    }
+    (rec.3.get(), svg)
+}
+
+#[test]
+fn over_the_part_under_a_moved_backdrop_the_rows_and_the_clipped_note_are_drawn_afresh() {
+    let mut fig = sample();
+    fig.markers.clear();
+    fig.series[0].label = "design ζ 0.30".into();
+    fig.series[0].points = vec![(0.0, 0.1), (1.0, 0.2)];
+    let backdrop = Series {
+        label: String::new(),
+        points: vec![(0.0, 0.2), (1.0, 0.3)],
+        style: LineStyle::dotted(Ink::Black, 1.2),
+    };
+    fig.series.insert(0, backdrop);
+    fig.backdrop = 1;
+    // The rows are not in the part under the backdrop: drawn once, their band not cleared
+    // (as many rectangles as over a whole layer that holds them), and noted with the layer.
+    let stale = LayerNote::default();
+    let (note, over) = drawn_over(&fig, Keeps::Axes, stale, true);
+    assert_eq!(over.matches("design ζ 0.30").count(), 1, "{over}");
+    assert_ne!(note.rows, 0, "the whole layer's note names its rows");
+    let (_, over_whole) = drawn_over(&fig, Keeps::Whole, note, true);
+    assert!(!over_whole.contains("design ζ 0.30"), "{over_whole}");
+    let rects = |svg: &str| svg.matches("<rect").count();
+    assert_eq!(rects(&over), rects(&over_whole), "the band not cleared");
+    // A backdrop that leaves the axes: the plot says so, whatever an older note said.
+    let clipped = crate::t!("plot-clipped");
+    assert!(!over.contains(&clipped), "{over}");
+    fig.series[0].points[1].1 = 3.0;
+    let (note, out) = drawn_over(&fig, Keeps::Axes, stale, false);
+    assert!(out.contains(&clipped), "{out}");
+    assert!(note.clipped);
 }
 
 /// `fig` drawn with its legend held in rows under the chart, by a backend that keeps its
