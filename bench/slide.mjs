@@ -58,8 +58,11 @@ export function quantile(sorted, q) {
 
 /**
  * Source of a function to run in the page (`page.evaluate`): moves `range` to fraction `f`
- * of its span and resolves to the event's main-thread time in ms. Installed as
- * `window.__slideOnce` by `installSlider`.
+ * of its span and resolves to the event's main-thread time in ms: the input handler and
+ * the redrawing frame's animation-frame callbacks. Installed as `window.__slideOnce` by
+ * `installSlider`. `window.__painted` is then that time and the rest of the frame's
+ * main-thread work after the callbacks: style, layout, paint (what the page's text changes
+ * cost; a frame is on time when the whole of it fits in 16.7 ms).
  */
 export async function installSlider(page) {
   await page.evaluate(() => {
@@ -73,6 +76,13 @@ export async function installSlider(page) {
         cb(ts);
       });
     const frame = () => new Promise((r) => requestAnimationFrame((ts) => r(ts)));
+    // When the current task ends: a message posted in a frame's callbacks is handled after
+    // the frame's style, layout and paint, which run in the same task after them.
+    const taskEnd = () => new Promise((r) => {
+      const channel = new MessageChannel();
+      channel.port1.onmessage = () => r(performance.now());
+      channel.port2.postMessage(0);
+    });
     window.__slideOnce = async (range, f) => {
       const min = Number(range.min);
       const max = Number(range.max);
@@ -87,7 +97,10 @@ export async function installSlider(page) {
       // input: an app that asked for the frame earlier (a study finishing, a plot scrolled
       // into view) has its callback run before any of ours.
       const ts = await frame();
-      return handled + (performance.now() - firstCallback.get(ts));
+      const start = firstCallback.get(ts);
+      const callbacks = handled + (performance.now() - start);
+      window.__painted = handled + ((await taskEnd()) - start);
+      return callbacks;
     };
   });
 }
