@@ -1,5 +1,6 @@
 // Browser benchmark: for every demo, the main-thread work of one slider event (input
-// handling plus the animation frame that redraws) as p50/p95 over ≥ 300 events, the time
+// handling plus the animation frame that redraws) as p50/p95 over ≥ 300 events, and its
+// whole frame (with the browser's style, layout and paint after the callbacks), the time
 // to the first drawn plot on a cold load, and the bytes shipped. Prints a Markdown table.
 // Usage: node bench/browser.mjs [events-per-demo] [demo,demo…]   (after scripts/build.sh)
 import { gzipSync } from 'node:zlib';
@@ -10,13 +11,17 @@ import { quantile, installSlider, fraction, benchArgs, withSite, demoIds, run } 
 
 const { events: EVENTS, only: ONLY } = benchArgs(300);
 
-/** Runs in the page: moves sliders `n` times and times each event's work. */
+/** Runs in the page: moves sliders `n` times and times each event's work and whole frame. */
 async function measureInPage([n, fractions]) {
   const ranges = [...document.querySelectorAll('.controls input[type=range]')];
   const times = [];
-  if (!ranges.length) return times; // a demo without sliders (the paper)
-  for (let i = 0; i < n; i++) times.push(await window.__slideOnce(ranges[i % ranges.length], fractions[i]));
-  return times;
+  const painted = [];
+  if (!ranges.length) return { times, painted }; // a demo without sliders (the paper)
+  for (let i = 0; i < n; i++) {
+    times.push(await window.__slideOnce(ranges[i % ranges.length], fractions[i]));
+    painted.push(window.__painted);
+  }
+  return { times, painted };
 }
 
 /**
@@ -51,12 +56,17 @@ async function main() {
       const firstDraw = await page.evaluate(() => performance.getEntriesByName('zeta:first-draw')[0].startTime);
       await installSlider(page);
       const fractions = Array.from({ length: EVENTS }, (_, i) => fraction(i));
-      const times = (await page.evaluate(measureInPage, [EVENTS, fractions])).sort((a, b) => a - b);
+      const measured = await page.evaluate(measureInPage, [EVENTS, fractions]);
+      const times = measured.times.sort((a, b) => a - b);
+      const painted = measured.painted.sort((a, b) => a - b);
       if (!times.length) {
         await context.close();
         continue;
       }
-      rows.push({ id, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), max: times[times.length - 1], firstDraw });
+      rows.push({
+        id, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), max: times[times.length - 1],
+        frameP50: quantile(painted, 0.5), frameP95: quantile(painted, 0.95), firstDraw,
+      });
       await context.close();
     }
   });
@@ -82,11 +92,11 @@ async function main() {
     const gz = gzipSync(buf, { level: 9 }).length;
     if (f.endsWith('.wasm')) { wasmRaw += buf.length; wasmGz += gz; } else { jsRaw += buf.length; jsGz += gz; }
   }
-  console.log(`\nSlider events in headless Chromium (${EVENTS} per demo; input handling + the redraw frame):\n`);
-  console.log('| demo | events | p50 (ms) | p95 (ms) | max (ms) | first plot, cold load (ms) |');
-  console.log('| --- | --- | --- | --- | --- | --- |');
+  console.log(`\nSlider events in headless Chromium (${EVENTS} per demo; input handling + the redraw frame's callbacks, then the whole frame with style, layout and paint):\n`);
+  console.log('| demo | events | p50 (ms) | p95 (ms) | max (ms) | frame p50 (ms) | frame p95 (ms) | first plot, cold load (ms) |');
+  console.log('| --- | --- | --- | --- | --- | --- | --- | --- |');
   for (const r of rows) {
-    console.log(`| ${r.id} | ${r.n} | ${r.p50.toFixed(2)} | ${r.p95.toFixed(2)} | ${r.max.toFixed(2)} | ${r.firstDraw.toFixed(0)} |`);
+    console.log(`| ${r.id} | ${r.n} | ${r.p50.toFixed(2)} | ${r.p95.toFixed(2)} | ${r.max.toFixed(2)} | ${r.frameP50.toFixed(2)} | ${r.frameP95.toFixed(2)} | ${r.firstDraw.toFixed(0)} |`);
   }
   console.log('\nHeavy computations in the browser (compute_time readouts):\n');
   console.log('| computation | p50 (ms) | p95 (ms) | target |');
