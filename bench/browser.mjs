@@ -7,21 +7,17 @@ import { gzipSync } from 'node:zlib';
 import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
 import { DIST } from '../tests/support/server.mjs';
-import { quantile, installSlider, fraction, benchArgs, withSite, demoIds, run } from './slide.mjs';
+import { quantile, spread, installSlider, fraction, benchArgs, withSite, demoIds, run } from './slide.mjs';
 
 const { events: EVENTS, only: ONLY } = benchArgs(300);
 
 /** Runs in the page: moves sliders `n` times and times each event's work and whole frame. */
 async function measureInPage([n, fractions]) {
   const ranges = [...document.querySelectorAll('.controls input[type=range]')];
-  const times = [];
-  const painted = [];
-  if (!ranges.length) return { times, painted }; // a demo without sliders (the paper)
-  for (let i = 0; i < n; i++) {
-    times.push(await window.__slideOnce(ranges[i % ranges.length], fractions[i]));
-    painted.push(window.__painted);
-  }
-  return { times, painted };
+  const events = [];
+  if (!ranges.length) return events; // a demo without sliders (the paper)
+  for (let i = 0; i < n; i++) events.push(await window.__slideOnce(ranges[i % ranges.length], fractions[i]));
+  return events;
 }
 
 /**
@@ -56,17 +52,14 @@ async function main() {
       const firstDraw = await page.evaluate(() => performance.getEntriesByName('zeta:first-draw')[0].startTime);
       await installSlider(page);
       const fractions = Array.from({ length: EVENTS }, (_, i) => fraction(i));
-      const measured = await page.evaluate(measureInPage, [EVENTS, fractions]);
-      const times = measured.times.sort((a, b) => a - b);
-      const painted = measured.painted.sort((a, b) => a - b);
-      if (!times.length) {
+      const events = await page.evaluate(measureInPage, [EVENTS, fractions]);
+      if (!events.length) {
         await context.close();
         continue;
       }
-      rows.push({
-        id, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95), max: times[times.length - 1],
-        frameP50: quantile(painted, 0.5), frameP95: quantile(painted, 0.95), firstDraw,
-      });
+      const script = spread(events.map((e) => e.script));
+      const frame = spread(events.map((e) => e.frame));
+      rows.push({ id, n: events.length, ...script, frameP50: frame.p50, frameP95: frame.p95, firstDraw });
       await context.close();
     }
   });

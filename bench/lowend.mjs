@@ -16,7 +16,7 @@
 // Usage: node bench/lowend.mjs [events-per-slider] [demo,demo…]   (after scripts/build.sh)
 import { resolve } from 'node:path';
 import { countBytes } from '../tests/support/browser.mjs';
-import { quantile, installSlider, fraction, benchArgs, withSite, demoIds, run } from './slide.mjs';
+import { quantile, spread, installSlider, fraction, benchArgs, withSite, demoIds, run } from './slide.mjs';
 
 const { events: EVENTS, only: ONLY } = benchArgs(40);
 const CPU_SLOWDOWN = 4;
@@ -40,14 +40,10 @@ async function slideInPage([n, fractions, hold]) {
   });
   obs.observe({ type: 'longtask', buffered: false });
   const ranges = [...document.querySelectorAll('input[type=range][data-key]')].filter((r) => !r.disabled);
-  const times = [];
-  const painted = [];
+  const events = [];
   for (const range of ranges) {
     if (hold) range.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
-    for (let i = 0; i < n; i++) {
-      times.push(await window.__slideOnce(range, fractions[i]));
-      painted.push(window.__painted);
-    }
+    for (let i = 0; i < n; i++) events.push(await window.__slideOnce(range, fractions[i]));
     if (hold) {
       window.dispatchEvent(new PointerEvent('pointerup'));
       // A hand lets go and reaches for the next slider: the axes refit meanwhile.
@@ -56,7 +52,7 @@ async function slideInPage([n, fractions, hold]) {
   }
   await new Promise((r) => requestAnimationFrame(r));
   obs.disconnect();
-  return { times, painted, longest: longest.ms, sliders: ranges.length };
+  return { events, longest: longest.ms, sliders: ranges.length };
 }
 
 async function lowEndPage(browser, { network }) {
@@ -85,7 +81,7 @@ async function main() {
   console.log('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |');
   for (const r of rows) {
     const range = RUNS > 1 ? ` [${r.p95Range.map((v) => v.toFixed(1)).join('–')}]` : '';
-    console.log(`| ${r.id} | ${r.sliders} | ${r.n} | ${r.p50.toFixed(1)} | ${r.p95.toFixed(1)}${range} | ${r.paintedP50.toFixed(1)} | ${r.paintedP95.toFixed(1)} | ${r.longest.toFixed(0)} | ${r.switchTask.toFixed(0)} | ${r.firstPlot.toFixed(0)} | ${(r.bytes / 1000).toFixed(1)} | ${r.secondPlot.toFixed(0)} | ${(r.secondBytes / 1000).toFixed(0)} |`);
+    console.log(`| ${r.id} | ${r.sliders} | ${r.n} | ${r.p50.toFixed(1)} | ${r.p95.toFixed(1)}${range} | ${r.frameP50.toFixed(1)} | ${r.frameP95.toFixed(1)} | ${r.longest.toFixed(0)} | ${r.switchTask.toFixed(0)} | ${r.firstPlot.toFixed(0)} | ${(r.bytes / 1000).toFixed(1)} | ${r.secondPlot.toFixed(0)} | ${(r.secondBytes / 1000).toFixed(0)} |`);
   }
 }
 
@@ -98,7 +94,7 @@ function median(values) {
 /** One row from several runs of a demo: each column's median, and the range of the p95s. */
 function medianRow(id, runs) {
   const row = { id, sliders: runs[0].sliders, n: runs[0].n };
-  for (const k of ['p50', 'p95', 'paintedP50', 'paintedP95', 'longest', 'switchTask', 'firstPlot', 'bytes', 'secondPlot', 'secondBytes']) {
+  for (const k of ['p50', 'p95', 'frameP50', 'frameP95', 'longest', 'switchTask', 'firstPlot', 'bytes', 'secondPlot', 'secondBytes']) {
     row[k] = median(runs.map((r) => r[k]));
   }
   const p95s = runs.map((r) => r.p95);
@@ -158,11 +154,10 @@ async function measure(browser, url, id) {
   const fractions = Array.from({ length: EVENTS }, (_, i) => fraction(i));
   const r = await slide.page.evaluate(slideInPage, [EVENTS, fractions, HOLD]);
   await slide.context.close();
-  const times = r.times.sort((a, b) => a - b);
-  const painted = r.painted.sort((a, b) => a - b);
+  const script = spread(r.events.map((e) => e.script));
+  const frame = spread(r.events.map((e) => e.frame));
   return {
-    sliders: r.sliders, n: times.length, p50: quantile(times, 0.5), p95: quantile(times, 0.95),
-    paintedP50: quantile(painted, 0.5), paintedP95: quantile(painted, 0.95),
+    sliders: r.sliders, n: r.events.length, p50: script.p50, p95: script.p95, frameP50: frame.p50, frameP95: frame.p95,
     longest: r.longest, switchTask, firstPlot, bytes, secondPlot, secondBytes,
   };
 }

@@ -29,7 +29,7 @@ await withSite({ brotli: true, root: process.env.ZETA_ROOT }, async (browser, ur
       const out = [];
       for (const r of [...document.querySelectorAll(sel)].filter((r) => !r.disabled)) {
         r.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
-        for (let i = 0; i < n; i++) out.push([r.dataset.key, Math.round(await window.__slideOnce(r, fr[i]))]);
+        for (let i = 0; i < n; i++) out.push([r.dataset.key, Math.round((await window.__slideOnce(r, fr[i])).script)]);
         window.dispatchEvent(new PointerEvent('pointerup'));
         await new Promise((rest) => setTimeout(rest, 500));
       }

@@ -47,6 +47,12 @@ export function run(main) {
   });
 }
 
+/** The median, 95th percentile and largest of `values` (any order; not changed). */
+export function spread(values) {
+  const sorted = [...values].sort((a, b) => a - b);
+  return { p50: quantile(sorted, 0.5), p95: quantile(sorted, 0.95), max: sorted[sorted.length - 1] };
+}
+
 /** The `q` quantile of an ascending array, linearly interpolated. */
 export function quantile(sorted, q) {
   if (!sorted.length) return NaN;
@@ -58,11 +64,11 @@ export function quantile(sorted, q) {
 
 /**
  * Source of a function to run in the page (`page.evaluate`): moves `range` to fraction `f`
- * of its span and resolves to the event's main-thread time in ms: the input handler and
- * the redrawing frame's animation-frame callbacks. Installed as `window.__slideOnce` by
- * `installSlider`. `window.__painted` is then that time and the rest of the frame's
- * main-thread work after the callbacks: style, layout, paint (what the page's text changes
- * cost; a frame is on time when the whole of it fits in 16.7 ms).
+ * of its span and resolves to the event's main-thread time in ms, `{script, frame}`:
+ * `script` the input handler and the redrawing frame's animation-frame callbacks, `frame`
+ * that and the rest of the frame's main-thread work after the callbacks (style, layout,
+ * paint, and any task the page queued before the frame ended; a frame is on time when the
+ * whole of it fits in 16.7 ms). Installed as `window.__slideOnce` by `installSlider`.
  */
 export async function installSlider(page) {
   await page.evaluate(() => {
@@ -98,9 +104,8 @@ export async function installSlider(page) {
       // into view) has its callback run before any of ours.
       const ts = await frame();
       const start = firstCallback.get(ts);
-      const callbacks = handled + (performance.now() - start);
-      window.__painted = handled + ((await taskEnd()) - start);
-      return callbacks;
+      const script = handled + (performance.now() - start);
+      return { script, frame: handled + ((await taskEnd()) - start) };
     };
   });
 }
