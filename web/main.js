@@ -1351,10 +1351,10 @@ function wireShare() {
   const button = document.getElementById('share-button');
   if (!button) return;
   button.addEventListener('click', () => {
-    loadStyles(); // the dialog's range table and presets
-    withModule('share', ({ openShareDialog }) => {
+    // Opened styled: its styles load after the first plot (lecturer.css).
+    loadStyles().then(() => withModule('share', ({ openShareDialog }) => {
       openShareDialog({ demoId: app.demoId, values: app.session.values(), spec: app.view.spec });
-    });
+    }));
   });
 }
 

@@ -38,14 +38,26 @@ export function embedOptions(search = window.location.search) {
   };
 }
 
-/** The toolkit's own styles (projector theme, prediction, fullscreen, share dialog), loaded once. */
+/**
+ * The styles of what the first plot does not need (lecturer.css: projector theme, prediction,
+ * fullscreen, share dialog, the tour's handout), loaded once; resolves when they apply (or
+ * failed to load, or 3 s passed: the page works unstyled).
+ */
 export function loadStyles() {
-  if (document.querySelector('link[data-lecturer]')) return; // web/preload.js may have added it
-  const link = document.createElement('link');
-  link.rel = 'stylesheet';
-  link.href = new URL('./lecturer.css', import.meta.url).href;
-  link.dataset.lecturer = '1';
-  document.head.append(link);
+  let link = document.querySelector('link[data-lecturer]'); // web/preload.js may have added it
+  if (!link) {
+    link = document.createElement('link');
+    link.rel = 'stylesheet';
+    link.href = new URL('./lecturer.css', import.meta.url).href;
+    link.dataset.lecturer = '1';
+    document.head.append(link);
+  }
+  return new Promise((done) => {
+    if (link.sheet) done();
+    link.addEventListener('load', done);
+    link.addEventListener('error', done);
+    setTimeout(done, 3000); // a link that failed before has no event left to send
+  });
 }
 
 const prediction = { module: null, loading: null };
