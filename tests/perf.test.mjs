@@ -349,6 +349,64 @@ test('while a slider is held only what is in the window is drawn: a plot just be
   await context.close();
 });
 
+test('while a slider is held, readouts scrolled out of the strip and a table below the window keep their text until release', async () => {
+  const phone = { viewport: { width: 360, height: 740 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true };
+  const { page, errors, context } = await open(browser, `${server.url}?demo=analogy`, phone);
+  await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: FULL_MODULE_MS });
+  await drawn(page);
+  // Every readout and live cell: its text, whether it is in view (inside the strip's box;
+  // the table: in the window), and the readout's data-value.
+  const texts = () =>
+    page.evaluate(() => {
+      const strip = document.querySelector('.readout-strip').getBoundingClientRect();
+      const readouts = [...document.querySelectorAll('.readout-strip .readout')].map((r) => {
+        const b = r.getBoundingClientRect();
+        return { key: r.dataset.readout, text: r.querySelector('dd').textContent, value: r.dataset.value, seen: b.bottom > strip.top && b.top < strip.bottom };
+      });
+      const cells = [...document.querySelectorAll('[data-live-readout]')].map((c) => c.textContent);
+      const table = document.querySelector('.table-wrap').getBoundingClientRect().top < innerHeight;
+      return { readouts, cells, table };
+    });
+  const before = await texts();
+  assert.ok(before.readouts.filter((r) => !r.seen).length >= 5, `most readouts are scrolled out of the strip: ${JSON.stringify(before.readouts.map((r) => [r.key, r.seen]))}`);
+  assert.equal(before.table, false, 'the table is below the window');
+  // Hold the mass and move it.
+  await page.evaluate(() => {
+    const r = document.querySelector('#p-m');
+    r.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
+    r.value = String(Number(r.min) + 0.7 * (Number(r.max) - Number(r.min)));
+    r.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+  await page.waitForFunction((v) => document.querySelector('[data-readout="m"]').dataset.value !== v, before.readouts.find((r) => r.key === 'm').value);
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const held = await texts();
+  const moved = (a, b) => a.value !== b.value;
+  const pairs = before.readouts.map((r, i) => [r, held.readouts[i]]);
+  const seenMoved = pairs.filter(([a, b]) => a.seen && moved(a, b));
+  const awayMoved = pairs.filter(([a, b]) => !a.seen && moved(a, b));
+  assert.ok(seenMoved.length >= 1 && awayMoved.length >= 3, `readouts moved in and out of view: ${seenMoved.length}, ${awayMoved.length}`);
+  for (const [a, b] of seenMoved) assert.notEqual(b.text, a.text, `${a.key}, in view, shows its new value while held`);
+  for (const [a, b] of awayMoved) assert.equal(b.text, a.text, `${a.key}, out of view, keeps its text while held (its data-value is current)`);
+  assert.deepEqual(held.cells, before.cells, 'the table below the window keeps its live cells while held');
+  // Released: every text is what a page opened afresh on these values shows.
+  await page.evaluate(() => window.dispatchEvent(new PointerEvent('pointerup')));
+  await drawn(page);
+  const released = await texts();
+  const fresh = await open(browser, page.url(), phone);
+  await drawn(fresh.page);
+  const want = await fresh.page.evaluate(() => ({
+    readouts: [...document.querySelectorAll('.readout-strip .readout dd')].map((d) => d.textContent),
+    cells: [...document.querySelectorAll('[data-live-readout]')].map((c) => c.textContent),
+  }));
+  assert.deepEqual(released.readouts.map((r) => r.text), want.readouts, 'on release every readout is written');
+  assert.deepEqual(released.cells, want.cells, 'and every live cell of the table');
+  assert.notDeepEqual(released.cells, before.cells);
+  assert.deepEqual(errors, []);
+  assert.deepEqual(fresh.errors, []);
+  await fresh.context.close();
+  await context.close();
+});
+
 test('a held drag draws the same pixels from the kept static layer as a fresh drawing does', { skip }, async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=resonance&zeta=0.2`, { colorScheme: 'light' });
   await page.waitForFunction(() => window.zetaDiagnostics.module() === 'full', null, { timeout: 15000 });

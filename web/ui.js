@@ -290,7 +290,7 @@ function buildTable(root, table) {
   t.append(body);
   wrap.append(t);
   root.append(wrap);
-  return { rows, live, readout: table.highlight_readout };
+  return { wrap, rows, live, readout: table.highlight_readout };
 }
 
 /** Highlights the table row whose key is the readout's current value. */
@@ -337,14 +337,16 @@ const TEXT = '\uE000';
  * Writes readouts ([{key, text, data_value}]) into their elements; those in `provisional`
  * get the provisional label ("0.012 (provisional)"), formatted once per call rather than once
  * per readout (each is a call into the module's message formatting, seven a frame while
- * integrators' sliders move).
+ * integrators' sliders move). An element in the set `away` (one out of view while a control
+ * is held, see main.js observeAway) gets its `data-value` only.
  */
-export function showReadouts(elements, readouts, provisional = new Set()) {
+export function showReadouts(elements, readouts, provisional = new Set(), away) {
   const label = provisional.size > 0 ? t('provisional', { value: TEXT }).split(TEXT) : null;
   for (const r of readouts) {
     const item = elements.get(r.key);
     if (!item) continue;
     setAttr(item, 'data-value', r.data_value);
+    if (away?.has(item)) continue;
     let dd = valueOf.get(item);
     if (!dd) valueOf.set(item, (dd = item.querySelector('dd')));
     setText(dd, label && provisional.has(r.key) ? label.join(r.text) : r.text);
@@ -426,7 +428,7 @@ export function applyConditions(spec, root = document) {
 const LIVE = /^\{readout:([A-Za-z0-9_-]+)\}$/;
 
 /**
- * Fills the live cells of `table` (the view `buildTable` returns: `{ rows, live:
+ * Fills the live cells of `table` (the view `buildTable` returns: `{ wrap, rows, live:
  * [{ cell, key }] }`, or null) with the texts of `readouts` (`[{ key, text }]`, as
  * `Session.update` returns them). Call after every update. A readout that is missing
  * shows as "—".
