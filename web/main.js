@@ -714,9 +714,11 @@ const cursorDrawn = new WeakMap();
 function drawTime(dpr = window.devicePixelRatio || 1, schematic = app.schematicVisible) {
   const anim = app.view.animation;
   if (!anim || !app.timeSpan) return;
-  // Off screen, the schematic (and its text) waits until it is in view or the page rests.
+  // Off screen, the schematic (and its text) waits until it is in view or the page rests
+  // (a moved time or a pause asks for the rest's catch-up here: no update follows them).
   app.schematicStale = !schematic;
   if (schematic) setText(anim.caption, app.session.drawSchematic(app.time, dpr, isDark()));
+  else scheduleCatchUp();
   const [t0, t1] = app.timeSpan;
   anim.scrub.value = String(Math.round(((app.time - t0) / (t1 - t0)) * 1000));
   setText(anim.time, `t = ${num(app.time, 2)} s`);
