@@ -2,7 +2,7 @@
 // mobile emulation does (DevTools Protocol): CPU slowed 4×, a 360 × 740 window at device
 // pixel ratio 2, and for loading "Slow 4G" (150 ms round trip, 1.6 Mbit/s down) with the
 // site served brotli-compressed and a cold cache.
-// For every demo: every slider moved EVENTS times (input handler + the frame that redraws)
+// For every demo: every slider scrolled into view and moved EVENTS times (input handler + the frame that redraws)
 // as p50/p95, and again with the rest of that frame's main-thread work (style, layout and
 // paint after the animation-frame callbacks: a frame keeps 60 fps only if the whole of it
 // fits in 16.7 ms), the longest main-thread task seen while sliding, the time to the first plot
@@ -22,6 +22,8 @@ const { events: EVENTS, only: ONLY } = benchArgs(40);
 const CPU_SLOWDOWN = 4;
 /** Each slider's moves as one drag (see slideInPage); ZETA_TAPS=1: as separate changes. */
 const HOLD = process.env.ZETA_TAPS !== '1';
+/** Each slider scrolled into view before it moves (see slideInPage); ZETA_SCROLL=0: not. */
+const SCROLL = process.env.ZETA_SCROLL !== '0';
 const RUNS = Math.max(1, Math.floor(Number(process.env.ZETA_RUNS)) || 1);
 /** ZETA_ROOT=dir serves another build than dist/ (an A/B run of two builds, each copied aside). */
 const ROOT = process.env.ZETA_ROOT ? resolve(process.env.ZETA_ROOT) : undefined;
@@ -33,7 +35,7 @@ const SLOW_4G = { offline: false, latency: 150, downloadThroughput: (1.6 * 1024 
  * goes down on the slider first and up after (the page holds the axes meanwhile);
  * without, they are separate changes, as a click on the track or a typed value makes them.
  */
-async function slideInPage([n, fractions, hold]) {
+async function slideInPage([n, fractions, hold, scroll]) {
   const longest = { ms: 0 };
   const obs = new PerformanceObserver((list) => {
     for (const e of list.getEntries()) longest.ms = Math.max(longest.ms, e.duration);
@@ -42,6 +44,13 @@ async function slideInPage([n, fractions, hold]) {
   const ranges = [...document.querySelectorAll('input[type=range][data-key]')].filter((r) => !r.disabled);
   const events = [];
   for (const range of ranges) {
+    // As a hand must see the slider it drags: in the middle of the window (below the stage
+    // stuck at its top), the page given time to see what is in view now. ZETA_SCROLL=0: left
+    // where the page opened, as before 2026-12-04 evening (a slider below the window moved).
+    if (scroll) {
+      range.scrollIntoView({ block: 'center' });
+      await new Promise((r) => setTimeout(r, 500));
+    }
     if (hold) range.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
     for (let i = 0; i < n; i++) events.push(await window.__slideOnce(range, fractions[i]));
     if (hold) {
@@ -76,7 +85,7 @@ async function main() {
     }
   });
   const repeated = RUNS > 1 ? `; each column the median of ${RUNS} runs, p95's range in brackets` : '';
-  console.log(`\nLow-end (4× CPU, 360 × 740 at DPR 2; loading on Slow 4G, brotli, cold cache; ${EVENTS} events per slider, ${HOLD ? "each slider one held drag" : "separate changes"}${repeated}):\n`);
+  console.log(`\nLow-end (4× CPU, 360 × 740 at DPR 2; loading on Slow 4G, brotli, cold cache; ${EVENTS} events per slider, ${HOLD ? "each slider one held drag" : "separate changes"}${SCROLL ? ", scrolled into view first" : ", the page left at its top"}${repeated}):\n`);
   console.log('| demo | sliders | events | p50 (ms) | p95 (ms) | with style, layout, paint: p50 (ms) | p95 (ms) | longest task (ms) | longest task from the first plot through the switch to the full module (ms) | first plot (ms) | KB before first plot | second visit: first plot (ms) | second visit: KB |');
   console.log('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |');
   for (const r of rows) {
@@ -152,7 +161,7 @@ async function measure(browser, url, id) {
   });
   await installSlider(slide.page);
   const fractions = Array.from({ length: EVENTS }, (_, i) => fraction(i));
-  const r = await slide.page.evaluate(slideInPage, [EVENTS, fractions, HOLD]);
+  const r = await slide.page.evaluate(slideInPage, [EVENTS, fractions, HOLD, SCROLL]);
   await slide.context.close();
   const script = spread(r.events.map((e) => e.script));
   const frame = spread(r.events.map((e) => e.frame));
