@@ -23,7 +23,8 @@ const FULL_MODULE_MS = 30000;
 /**
  * Resolves once the page's visibility observer (web/main.js observeVisibility: what is in the
  * window counts as on screen) has been told whether the element at `selector` is on screen
- * (`near`): an observer made here with the same (no) margin is told with it, in the same task. Scrolling is seen at the next rendering, and told in a task after it:
+ * (`near`): an observer made here with the same (no) margin is told with it, in the same
+ * task. Scrolling is seen at the next rendering, and told in a task after it:
  * not surely within two animation frames on a busy machine.
  */
 function observed(page, selector, near) {
@@ -40,6 +41,22 @@ function observed(page, selector, near) {
         io.observe(document.querySelector(sel));
       }),
     [selector, near],
+  );
+}
+
+/**
+ * Holds the slider at `selector` (pointer down on it, as a drag starts; it need not be in
+ * view) and moves it to fraction `f` of its span. Released by a pointerup on the window.
+ */
+function holdAndMove(page, selector, f) {
+  return page.evaluate(
+    ([sel, f]) => {
+      const r = document.querySelector(sel);
+      r.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
+      r.value = String(Number(r.min) + f * (Number(r.max) - Number(r.min)));
+      r.dispatchEvent(new Event('input', { bubbles: true }));
+    },
+    [selector, f],
   );
 }
 
@@ -330,12 +347,7 @@ test('while a slider is held only what is in the window is drawn: a plot just be
   const raw = () => canvasFingerprint(page, 'poles', { settled: false });
   const before = await raw();
   // Hold ζ (out of view: as the benchmark does, by events) and move it.
-  await page.evaluate(() => {
-    const r = document.querySelector('#p-zeta');
-    r.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
-    r.value = String(Number(r.min) + 0.6 * (Number(r.max) - Number(r.min)));
-    r.dispatchEvent(new Event('input', { bubbles: true }));
-  });
+  await holdAndMove(page, '#p-zeta', 0.6);
   await page.waitForFunction(() => document.querySelector('[data-readout="zeta"]').dataset.value !== '0.2');
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   assert.deepEqual(await raw(), before, 'the plot just below the window is not drawn while the slider is held');
@@ -371,12 +383,7 @@ test('while a slider is held, readouts scrolled out of the strip and a table bel
   assert.ok(before.readouts.filter((r) => !r.seen).length >= 5, `most readouts are scrolled out of the strip: ${JSON.stringify(before.readouts.map((r) => [r.key, r.seen]))}`);
   assert.equal(before.table, false, 'the table is below the window');
   // Hold the mass and move it.
-  await page.evaluate(() => {
-    const r = document.querySelector('#p-m');
-    r.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
-    r.value = String(Number(r.min) + 0.7 * (Number(r.max) - Number(r.min)));
-    r.dispatchEvent(new Event('input', { bubbles: true }));
-  });
+  await holdAndMove(page, '#p-m', 0.7);
   await page.waitForFunction((v) => document.querySelector('[data-readout="m"]').dataset.value !== v, before.readouts.find((r) => r.key === 'm').value);
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   const held = await texts();

@@ -52,8 +52,8 @@ export function loadStyles() {
     link.dataset.lecturer = '1';
     document.head.append(link);
   }
+  if (link.sheet) return Promise.resolve();
   return new Promise((done) => {
-    if (link.sheet) done();
     link.addEventListener('load', done);
     link.addEventListener('error', done);
     setTimeout(done, 3000); // a link that failed before has no event left to send
