@@ -85,8 +85,15 @@ fi
 # plot (docs/wasm-size.md). preload.js after it has received the demos' list (below).
 esbuild="$src/node_modules/.bin/esbuild"
 minify() {
+  local said
   for f in "$@"; do
-    "$esbuild" "$f" --minify --log-level=warning --allow-overwrite --outfile="$f"
+    # A warning fails the build: a stray brace in a stylesheet is only a warning, and it
+    # silently drops the rule after it (the print rules were lost so once).
+    said="$("$esbuild" "$f" --minify --log-level=warning --allow-overwrite --outfile="$f" 2>&1)" &&
+      [ -z "$said" ] || {
+      printf '%s\npost-build: esbuild did not minify %s cleanly\n' "$said" "$f" >&2
+      exit 1
+    }
   done
 }
 if [ "${TRUNK_PROFILE:-}" = "release" ]; then

@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
-import { open, readout, canvasFingerprint, overlayInk, waitForReadout } from './support/browser.mjs';
+import { open, readout, canvasFingerprint, overlayInk, waitForReadout, waitForReadouts } from './support/browser.mjs';
 import { typeValue } from './support/page.mjs';
 import { server, browser, useSession } from './support/session.mjs';
 
@@ -177,6 +177,19 @@ test('the text alternative changes when the response changes and is announced', 
   await page.waitForFunction(() => /^overdamped/.test(document.querySelector('#plot-announcer').textContent));
   assert.equal(await page.getAttribute('canvas[data-plot="response"]', 'aria-describedby'), 'desc-response');
   assert.match(await page.getAttribute('#p-zeta', 'aria-valuetext'), /damping ratio 1\.5, overdamped/);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('printed, the page shows every readout and the staged plot at its natural shape', async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=integrators`, { viewport: { width: 360, height: 740 } });
+  await waitForReadouts(page);
+  const strip = () => page.$eval('.readout-strip', (s) => ({ max: getComputedStyle(s).maxHeight, cut: s.scrollHeight > s.clientHeight + 1 }));
+  // On the phone's screen the strip shows a few of integrators' 21 readouts and scrolls.
+  assert.equal((await strip()).cut, true);
+  await page.emulateMedia({ media: 'print' });
+  assert.deepEqual(await strip(), { max: 'none', cut: false });
+  assert.equal(await page.$eval('.stage canvas[data-plot]', (c) => getComputedStyle(c).aspectRatio), '1.6 / 1');
   assert.deepEqual(errors, []);
   await context.close();
 });
