@@ -44,9 +44,10 @@ async function slideInPage([n, fractions, hold, scroll]) {
   const ranges = [...document.querySelectorAll('input[type=range][data-key]')].filter((r) => !r.disabled);
   const events = [];
   for (const range of ranges) {
-    // As a hand must see the slider it drags: in the middle of the window (below the stage
-    // stuck at its top), the page given time to see what is in view now. ZETA_SCROLL=0: left
-    // where the page opened, as before 2026-12-04 evening (a slider below the window moved).
+    // As a hand must see the slider it drags: in the middle of what the stage stuck at the
+    // window's top leaves (the page's scroll padding), the page given time to see what is
+    // in view now. ZETA_SCROLL=0: left where the page opened, as before 2026-12-04 evening
+    // (a slider below the window moved).
     if (scroll) {
       range.scrollIntoView({ block: 'center' });
       await new Promise((r) => setTimeout(r, 500));

@@ -134,3 +134,31 @@ test('touch: a tap on a plot shows the values under the finger; sliders move by 
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('phone: a control reached with Shift+Tab lands below the stage stuck at the top, not under it (WCAG 2.4.11)', async () => {
+  const { page, errors, context } = await open(browser, `${server.url}?demo=integrators`, { viewport: { width: 360, height: 740 } });
+  await drawn(page);
+  // The scroll padding comes with the styles loaded after the first plot.
+  await page.waitForFunction(() => getComputedStyle(document.documentElement).scrollPaddingTop !== 'auto');
+  // From the second slider's number box, with the first slider scrolled above the window,
+  // back through the second slider and the first one's number box to the first slider: each
+  // is scrolled to as it takes the focus.
+  await page.focus('input[type=number][data-key="wn"]');
+  await page.evaluate(() => window.scrollBy(0, document.querySelector('input[type=range][data-key="zeta"]').getBoundingClientRect().bottom + 40));
+  const seen = [];
+  for (let i = 0; i < 3; i++) {
+    await page.keyboard.press('Shift+Tab');
+    seen.push(await page.evaluate(() => {
+      const el = document.activeElement;
+      const r = el.getBoundingClientRect();
+      const stage = document.querySelector('.stage').getBoundingClientRect();
+      const hit = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
+      const label = document.querySelector(`label[for="${el.id}"]`);
+      const clear = r.top >= stage.bottom - 0.5 && r.bottom <= window.innerHeight + 0.5 && (hit === el || el.contains(hit) || label?.contains(hit));
+      return `${el.dataset.key}(${el.type}) ${clear ? 'clear' : `covered: top ${Math.round(r.top)}, stage ends ${Math.round(stage.bottom)}`}`;
+    }));
+  }
+  assert.deepEqual(seen, ['wn(range) clear', 'zeta(number) clear', 'zeta(range) clear']);
+  assert.deepEqual(errors, []);
+  await context.close();
+});

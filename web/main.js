@@ -557,7 +557,8 @@ function layoutStage() {
   // top once the page scrolls to the controls, as it does when one is used.
   if (wide && cap < MIN_STAGED_PLOT) cap = Math.floor(vh - 2 * margin - extra);
   canvas.style.maxHeight = `${Math.max(120, cap)}px`;
-  view.workspace.style.setProperty('--stage-h', `${view.stage.offsetHeight}px`);
+  // On the root: the page's scroll padding keeps what is scrolled to clear of the stage.
+  document.documentElement.style.setProperty('--stage-h', `${view.stage.offsetHeight}px`);
 }
 
 function sizeCanvases() {

@@ -27,11 +27,10 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             toggle "dp45", "Dormand–Prince 5(4), adaptive", true => show[4];
         },
         // The fixed-step methods by their index in the results: forward Euler, symplectic
-        // Euler, Heun, RK4.
+        // Euler, Heun, RK4. The errors lead: a phone's strip shows the first two while any
+        // slider is held. The steps come last, together: the step actually used changes only
+        // with h (its slider shows it too) and T.
         readouts: readouts! { Results, |r|;
-            number "h_used", "step used, every step but the last", "s", 4
-                => Some(r.h);
-            number "h_last", "last step, ending the run at T", "s", 4 => Some(r.h_last);
             number_or_note "max_err_euler", "max error, forward Euler", "m", 3 => max_err(r, 0);
             number_or_note "max_err_symplectic_euler", "max error, symplectic Euler", "m", 3
                 => max_err(r, 1);
@@ -59,6 +58,9 @@ pub(super) fn declaration() -> Declaration<P, Results> {
             number "growth_rk4", "growth per step |R(hλ)|, RK4", "", 4 => Some(r.growth[3]);
             number "steps_dp45", "DP45 accepted steps", "", 3
                 => r.dp45.as_ref().ok().map(|o| o.solution.stats.n_accepted as f64);
+            number "h_used", "step used, every step but the last", "s", 4
+                => Some(r.h);
+            number "h_last", "last step, ending the run at T", "s", 4 => Some(r.h_last);
         },
         // Key, title and width / height.
         plots: rows::plots(&[
