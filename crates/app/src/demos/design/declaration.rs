@@ -9,9 +9,9 @@ pub(super) fn declaration() -> Declaration<P, Results> {
     Declaration {
         equation_mathml: text::EQUATION,
         params: params(),
+        // What the design point does leads (a phone's strip shows the first two while a slider
+        // is held); the point itself follows, which its own sliders show too.
         readouts: readouts! { Results, |r|;
-            number "k", "selected spring rate k", "N/m", 4 => Some(r.k);
-            number "c", "selected damper rate c", "N·s/m", 4 => Some(r.c);
             number "zeta", "damping ratio ζ", "", 3 => r.sel.zeta;
             number "settling_time", "settling time into the ± band of x₀ (free response)", "s", 4
                 => r.sel.settling_time;
@@ -29,6 +29,8 @@ pub(super) fn declaration() -> Declaration<P, Results> {
                     let a = ride.rms_body_acceleration;
                     (a, text::with_road(a, &r.key))
                 });
+            number "k", "selected spring rate k", "N/m", 4 => Some(r.k);
+            number "c", "selected damper rate c", "N·s/m", 4 => Some(r.c);
             formatted "grid_size", "grid size (cells)", ""
                 => Some(((r.grid * r.grid) as f64, text::grid_size(r)));
             // Plain: the value is already in ms (an SI prefix would give "µms").
