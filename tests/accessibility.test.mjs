@@ -138,8 +138,6 @@ test('touch: a tap on a plot shows the values under the finger; sliders move by 
 test('phone: a control reached with Shift+Tab lands below the stage stuck at the top, not under it (WCAG 2.4.11)', async () => {
   const { page, errors, context } = await open(browser, `${server.url}?demo=integrators`, { viewport: { width: 360, height: 740 } });
   await drawn(page);
-  // The scroll padding comes with the styles loaded after the first plot.
-  await page.waitForFunction(() => getComputedStyle(document.documentElement).scrollPaddingTop !== 'auto');
   // From the second slider's number box, with the first slider scrolled above the window,
   // back through the second slider and the first one's number box to the first slider: each
   // is scrolled to as it takes the focus.

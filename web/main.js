@@ -525,12 +525,13 @@ function layoutStage() {
       c.style.aspectRatio = String(p.aspect);
     }
   }
+  const wide = getComputedStyle(view.workspace).getPropertyValue('--layout').trim() === 'wide';
   if (!canvas) {
     fitEquation();
+    markStage(view.stage, wide);
     return;
   }
   const vh = window.innerHeight;
-  const wide = getComputedStyle(view.workspace).getPropertyValue('--layout').trim() === 'wide';
   // On the stage a wide plot may grow taller than its usual shape, up to the room left.
   const aspect = view.spec.plots.find((p) => p.key === view.staged).aspect;
   canvas.style.aspectRatio = String(wide ? Math.min(aspect, 1.5) : aspect);
@@ -557,8 +558,20 @@ function layoutStage() {
   // top once the page scrolls to the controls, as it does when one is used.
   if (wide && cap < MIN_STAGED_PLOT) cap = Math.floor(vh - 2 * margin - extra);
   canvas.style.maxHeight = `${Math.max(120, cap)}px`;
-  // On the root: the page's scroll padding keeps what is scrolled to clear of the stage.
-  document.documentElement.style.setProperty('--stage-h', `${view.stage.offsetHeight}px`);
+  markStage(view.stage, wide);
+}
+
+/**
+ * The stage's height on the root: the wide layout's room below the controls reads it
+ * (style.css); narrow, where the stage sticks over the page's top, it is the page's scroll
+ * padding, so a control scrolled to or reached from the keyboard lands below the stage, not
+ * under it (WCAG 2.4.11).
+ */
+function markStage(stage, wide) {
+  const root = document.documentElement.style;
+  const h = stage.offsetHeight;
+  root.setProperty('--stage-h', `${h}px`);
+  root.scrollPaddingTop = wide ? '' : `calc(${h}px + 0.5rem)`;
 }
 
 function sizeCanvases() {
